@@ -1,0 +1,45 @@
+"""The ``guided-lfd`` command: one subcommand per module of this package."""
+
+from __future__ import annotations
+
+from typing import Annotated
+
+import typer
+
+from cli.plan import plan
+from cli.validate import validate
+from guided_lfd import __version__
+
+app = typer.Typer(
+    name="guided-lfd",
+    help="Excuse-guided learning from demonstration: find what a robot needs demonstrated, "
+    "learn it from a hand trace, and measure what guidance saved.",
+    no_args_is_help=True,
+    add_completion=False,
+    pretty_exceptions_enable=False,
+    rich_markup_mode=None,
+)
+
+
+def _version(value: bool) -> None:
+    if value:
+        typer.echo(f"guided-lfd {__version__}")
+        raise typer.Exit()
+
+
+@app.callback()
+def main(
+    version: Annotated[
+        bool, typer.Option("--version", callback=_version, is_eager=True, help="Show the version and exit.")
+    ] = False,
+) -> None:
+    """Excuse-guided learning from demonstration."""
+
+
+app.command("plan")(plan)
+app.command("validate")(validate)
+
+
+def run() -> None:
+    """Console-script entry point."""
+    app()

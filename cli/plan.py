@@ -1,0 +1,57 @@
+"""``guided-lfd plan``: an optimal plan, or a proof that there is none."""
+
+from __future__ import annotations
+
+from typing import Annotated
+
+import typer
+
+from cli.common import JsonOption, OutputOption, QuietOption, TimeLimitOption, command, ui
+from guided_lfd.errors import EXIT_UNSOLVABLE
+from guided_lfd.io import json_document, write_text
+from guided_lfd.pddl.reader import parse_task
+from guided_lfd.planning import DEFAULT_SEARCH, SEARCHES, plan_task
+from guided_lfd.validate import PlanStep, format_plan, validate_plan
+
+
+@command
+def plan(
+    domain: Annotated[str, typer.Argument(help="Domain PDDL file ('-' = stdin).")],
+    problem: Annotated[str, typer.Argument(help="Problem PDDL file ('-' = stdin).")],
+    search: Annotated[
+        str, typer.Option("--search", help=f"Pyperplan configuration: {', '.join(SEARCHES)}.")
+    ] = DEFAULT_SEARCH,
+    output: OutputOption = "-",
+    json_out: JsonOption = False,
+    time_limit: TimeLimitOption = None,
+    quiet: QuietOption = False,
+) -> None:
+    """Plan with pyperplan; print the plan in IPC format (exit 10 if unsolvable)."""
+    if search not in SEARCHES:
+        raise typer.BadParameter(f"unknown search '{search}', expected one of: {', '.join(SEARCHES)}", param_hint="--search")
+    dom, prob = parse_task(domain, problem)
+    task, result = plan_task(dom, prob, search, time_limit)
+    if result.plan is None:
+        ui.info(f"[bold red]unsolvable[/]: exhaustive {search} search found no plan ({result.time_s:.2f} s)")
+        if json_out:
+            write_text(output, json_document("plan", {
+                "domain": domain, "problem": problem, "status": "unsolvable", "plan": None,
+                "search": search, "time_s": round(result.time_s, 4),
+            }))
+        raise typer.Exit(EXIT_UNSOLVABLE)
+    steps = [PlanStep(a.schema, a.args) for a in result.plan]
+    report = validate_plan(dom, prob.init, prob.goal, steps)
+    if not report.valid:  # the planner and the validator disagree: a bug
+        raise RuntimeError("planner returned a plan that does not validate")
+    names = [a.name for a in result.plan]
+    ui.info(f"plan of length {len(names)} found by {search} in {result.time_s:.2f} s"
+            + (" (optimal)" if result.optimal else "") + ", validated")
+    if json_out:
+        text = json_document("plan", {
+            "domain": domain, "problem": problem, "status": "solved", "plan": names,
+            "cost": len(names), "optimal": result.optimal, "validated": True,
+            "search": search, "time_s": round(result.time_s, 4),
+        })
+    else:
+        text = format_plan(names)
+    write_text(output, text)

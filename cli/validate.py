@@ -1,0 +1,52 @@
+"""``guided-lfd validate``: check a plan step by step."""
+
+from __future__ import annotations
+
+from typing import Annotated
+
+import typer
+
+from cli.common import JsonOption, OutputOption, QuietOption, command
+from guided_lfd.errors import EXIT_PLAN_INVALID
+from guided_lfd.io import json_document, write_text
+from guided_lfd.pddl.reader import parse_task
+from guided_lfd.validate import parse_plan, validate_plan
+
+
+@command
+def validate(
+    domain: Annotated[str, typer.Argument(help="Domain PDDL file.")],
+    problem: Annotated[str, typer.Argument(help="Problem PDDL file.")],
+    plan_file: Annotated[str, typer.Argument(metavar="PLAN", help="Plan in IPC format ('-' = stdin).")],
+    output: OutputOption = "-",
+    json_out: JsonOption = False,
+    quiet: QuietOption = False,
+) -> None:
+    """Execute PLAN from the problem's initial state; say which precondition of which step fails."""
+    dom, prob = parse_task(domain, problem)
+    steps = parse_plan(plan_file, dom, prob)
+    report = validate_plan(dom, prob.init, prob.goal, steps)
+    failure = report.first_failure
+    if json_out:
+        text = json_document("validation", {
+            "domain": domain, "problem": problem, "plan": plan_file, "valid": report.valid,
+            "steps": [
+                {"step": s.index, "action": str(s.step), "line": s.step.line, "applicable": s.ok,
+                 "failed_preconditions": [str(l) for l in s.failed]}
+                for s in report.steps
+            ],
+            "goal_reached": failure is None and not report.unsatisfied_goal,
+            "unsatisfied_goal": [str(l) for l in report.unsatisfied_goal],
+        })
+    elif report.valid:
+        text = f"valid: {len(steps)} step(s), goal reached\n"
+    elif failure is not None:
+        where = f"{plan_file}:{failure.step.line}:{failure.step.col}: " if failure.step.line else ""
+        text = (f"{where}invalid: step {failure.index} {failure.step} is not applicable: "
+                f"precondition {', '.join(str(l) for l in failure.failed)} does not hold\n")
+    else:
+        text = (f"invalid: all {len(steps)} step(s) apply, but the goal is not reached: "
+                f"{', '.join(str(l) for l in report.unsatisfied_goal)} does not hold\n")
+    write_text(output, text)
+    if not report.valid:
+        raise typer.Exit(EXIT_PLAN_INVALID)

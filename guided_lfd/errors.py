@@ -1,0 +1,176 @@
+"""Exception hierarchy and exit codes of guided-lfd.
+
+Every error the user can cause is a :class:`GuidedLfdError` carrying an exit
+code and, where it stems from a file, a :class:`Location`.  The command-line
+layer prints ``str(error)`` as one line on stderr and exits with
+``error.exit_code``; nothing else should ever reach the user as a traceback.
+
+Exit codes are grouped by meaning, as in Fast Downward's driver:
+
+====  ==========================================================
+code  meaning
+====  ==========================================================
+0     success (plan found, plan valid, excuse found or not needed)
+1     internal error (a bug: please report it)
+2     command-line usage error
+10    task unsolvable (``plan``: proven by exhaustive search)
+11    no excuse exists: a new skill must be demonstrated
+12    plan invalid (``validate``)
+13    no excuse within ``--max-size``
+20    time limit reached
+30    input file missing, unreadable or empty
+31    PDDL syntax error
+32    PDDL semantic error (unknown object, predicate, type, arity)
+33    unsupported PDDL requirement or construct
+34    domain and problem do not belong together
+35    plan file error (unknown action, wrong arity, syntax)
+36    demonstration trace / segments error
+37    bad option value (cost specification, fixed predicate, ...)
+40    output could not be written
+====  ==========================================================
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+EXIT_OK = 0
+EXIT_INTERNAL = 1
+EXIT_USAGE = 2
+EXIT_UNSOLVABLE = 10
+EXIT_NO_EXCUSE = 11
+EXIT_PLAN_INVALID = 12
+EXIT_NO_EXCUSE_WITHIN_LIMIT = 13
+EXIT_TIME_LIMIT = 20
+EXIT_INPUT_FILE = 30
+EXIT_PDDL_SYNTAX = 31
+EXIT_PDDL_SEMANTIC = 32
+EXIT_UNSUPPORTED = 33
+EXIT_MISMATCH = 34
+EXIT_PLAN_FILE = 35
+EXIT_TRACE = 36
+EXIT_BAD_OPTION = 37
+EXIT_OUTPUT = 40
+
+#: Exit code -> short meaning; the README table and a test are generated from it.
+EXIT_CODES: dict[int, str] = {
+    EXIT_OK: "success",
+    EXIT_INTERNAL: "internal error (a bug)",
+    EXIT_USAGE: "command-line usage error",
+    EXIT_UNSOLVABLE: "task unsolvable",
+    EXIT_NO_EXCUSE: "no excuse exists: a new skill must be demonstrated",
+    EXIT_PLAN_INVALID: "plan invalid",
+    EXIT_NO_EXCUSE_WITHIN_LIMIT: "no excuse within --max-size",
+    EXIT_TIME_LIMIT: "time limit reached",
+    EXIT_INPUT_FILE: "input file missing, unreadable or empty",
+    EXIT_PDDL_SYNTAX: "PDDL syntax error",
+    EXIT_PDDL_SEMANTIC: "PDDL semantic error",
+    EXIT_UNSUPPORTED: "unsupported PDDL requirement or construct",
+    EXIT_MISMATCH: "domain and problem do not belong together",
+    EXIT_PLAN_FILE: "plan file error",
+    EXIT_TRACE: "demonstration trace or segments error",
+    EXIT_BAD_OPTION: "bad option value",
+    EXIT_OUTPUT: "output could not be written",
+}
+
+
+@dataclass(frozen=True)
+class Location:
+    """A position in an input file; ``line`` and ``col`` are 1-based."""
+
+    path: str
+    line: int | None = None
+    col: int | None = None
+
+    def __str__(self) -> str:
+        if self.line is None:
+            return self.path
+        if self.col is None:
+            return f"{self.path}:{self.line}"
+        return f"{self.path}:{self.line}:{self.col}"
+
+
+class GuidedLfdError(Exception):
+    """Base of all errors guided-lfd reports to its user."""
+
+    exit_code: int = EXIT_INTERNAL
+    kind: str = "error"
+
+    def __init__(self, message: str, location: Location | None = None) -> None:
+        super().__init__(message)
+        self.message = message
+        self.location = location
+
+    def __str__(self) -> str:
+        prefix = f"{self.location}: " if self.location is not None else ""
+        return f"{prefix}{self.kind}: {self.message}"
+
+
+class InputFileError(GuidedLfdError):
+    """A file is missing, unreadable, empty or not text."""
+
+    exit_code = EXIT_INPUT_FILE
+    kind = "input error"
+
+
+class PddlSyntaxError(GuidedLfdError):
+    """The text is not well-formed PDDL."""
+
+    exit_code = EXIT_PDDL_SYNTAX
+    kind = "syntax error"
+
+
+class PddlSemanticError(GuidedLfdError):
+    """Well-formed PDDL that names something undeclared or mistyped."""
+
+    exit_code = EXIT_PDDL_SEMANTIC
+    kind = "semantic error"
+
+
+class UnsupportedFeatureError(GuidedLfdError):
+    """A requirement or construct outside STRIPS + typing + negation + equality."""
+
+    exit_code = EXIT_UNSUPPORTED
+    kind = "unsupported"
+
+
+class MismatchError(GuidedLfdError):
+    """A problem that names another domain than the one given."""
+
+    exit_code = EXIT_MISMATCH
+    kind = "mismatch"
+
+
+class PlanFileError(GuidedLfdError):
+    """A plan file that cannot be read as a sequence of ground actions."""
+
+    exit_code = EXIT_PLAN_FILE
+    kind = "plan error"
+
+
+class TraceError(GuidedLfdError):
+    """A demonstration trace or segment file that cannot be used."""
+
+    exit_code = EXIT_TRACE
+    kind = "trace error"
+
+
+class OptionError(GuidedLfdError):
+    """An option value that does not make sense for the given task."""
+
+    exit_code = EXIT_BAD_OPTION
+    kind = "option error"
+
+
+class OutputError(GuidedLfdError):
+    """An output file that could not be written."""
+
+    exit_code = EXIT_OUTPUT
+    kind = "output error"
+
+
+class SearchTimeout(GuidedLfdError):
+    """A search ran out of its time limit."""
+
+    exit_code = EXIT_TIME_LIMIT
+    kind = "time limit"

@@ -1,0 +1,170 @@
+"""The lifted planning model guided-lfd works on.
+
+A deliberately small STRIPS model (typing, negative preconditions, equality,
+constants): enough for the robot's skill library and everything the tool
+derives from it (excuses, learned and merged domains).  All names are
+lower-case, as PDDL is case-insensitive; ``spellings`` remembers how a name
+was first written (``PinkDrawer``) for messages meant for people.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+#: The PDDL requirements guided-lfd accepts.
+SUPPORTED_REQUIREMENTS = (":strips", ":typing", ":negative-preconditions", ":equality")
+
+EQUALITY = "="
+
+
+@dataclass(frozen=True, order=True)
+class Atom:
+    """``(predicate arg ...)``; arguments are objects or ``?variables``."""
+
+    predicate: str
+    args: tuple[str, ...] = ()
+
+    def __str__(self) -> str:
+        return "(" + " ".join((self.predicate, *self.args)) + ")"
+
+    def substitute(self, binding: dict[str, str]) -> "Atom":
+        """The atom with variables replaced according to ``binding``."""
+        return Atom(self.predicate, tuple(binding.get(a, a) for a in self.args))
+
+
+@dataclass(frozen=True, order=True)
+class Literal:
+    """An atom or its negation."""
+
+    atom: Atom
+    positive: bool = True
+
+    def __str__(self) -> str:
+        return str(self.atom) if self.positive else f"(not {self.atom})"
+
+    def substitute(self, binding: dict[str, str]) -> "Literal":
+        """The literal with variables replaced according to ``binding``."""
+        return Literal(self.atom.substitute(binding), self.positive)
+
+
+@dataclass(frozen=True)
+class Predicate:
+    """A predicate declaration: name and typed parameters."""
+
+    name: str
+    params: tuple[tuple[str, str], ...] = ()
+
+    @property
+    def arity(self) -> int:
+        return len(self.params)
+
+
+@dataclass(frozen=True)
+class ActionSchema:
+    """A lifted STRIPS action (a robot skill or a demonstrated one).
+
+    ``precondition`` may contain equality literals (predicate ``=``).
+    ``origin`` says where the action came from (a merge keeps it as a comment).
+    """
+
+    name: str
+    params: tuple[tuple[str, str], ...]
+    precondition: tuple[Literal, ...]
+    add: tuple[Atom, ...]
+    delete: tuple[Atom, ...]
+    origin: str | None = None
+
+    def reversed(self) -> "ActionSchema":
+        """The action undone: pre' = pre - del + add, add' = del, del' = add - pre.
+
+        Used for invariant synthesis, so that an invariant that only holds
+        because a skill is missing (nobody can undo the effect) is not found.
+        """
+        pos_pre = {lit.atom for lit in self.precondition if lit.positive and lit.atom.predicate != EQUALITY}
+        dels = set(self.delete)
+        adds = set(self.add)
+        new_pre: list[Literal] = [l for l in self.precondition if l.atom.predicate == EQUALITY]
+        new_pre += [Literal(a) for a in sorted((pos_pre - dels) | adds)]
+        # After the action, deleted atoms (not re-added) are false.
+        neg_pre = {lit.atom for lit in self.precondition if not lit.positive and lit.atom.predicate != EQUALITY}
+        new_pre += [Literal(a, False) for a in sorted(((neg_pre - adds) | (dels - adds)) - ((pos_pre - dels) | adds))]
+        return ActionSchema(
+            name=f"{self.name}__reversed",
+            params=self.params,
+            precondition=tuple(new_pre),
+            add=tuple(sorted(dels - adds)),
+            delete=tuple(sorted(adds - pos_pre)),
+            origin=f"reverse of {self.name}",
+        )
+
+
+@dataclass
+class Domain:
+    """A PDDL domain."""
+
+    name: str
+    requirements: tuple[str, ...]
+    types: dict[str, str | None]
+    constants: dict[str, str]
+    predicates: dict[str, Predicate]
+    actions: list[ActionSchema]
+    path: str = "<domain>"
+    spellings: dict[str, str] = field(default_factory=dict)
+
+    def action(self, name: str) -> ActionSchema:
+        """The action schema called ``name`` (KeyError if there is none)."""
+        for act in self.actions:
+            if act.name == name:
+                return act
+        raise KeyError(name)
+
+    def subtypes(self) -> dict[str, set[str]]:
+        """Map each type to itself and all its (transitive) subtypes."""
+        out: dict[str, set[str]] = {t: {t} for t in self.types}
+        out.setdefault("object", {"object"})
+        for t in self.types:
+            parent = self.types[t]
+            seen = set()
+            while parent is not None and parent not in seen:
+                seen.add(parent)
+                out.setdefault(parent, {parent}).add(t)
+                parent = self.types.get(parent)
+        return out
+
+    def fluent_predicates(self) -> set[str]:
+        """Predicates some action adds or deletes."""
+        return {a.predicate for act in self.actions for a in (*act.add, *act.delete)}
+
+
+@dataclass
+class Problem:
+    """A PDDL problem: objects, initial state and a conjunctive goal."""
+
+    name: str
+    domain_name: str
+    objects: dict[str, str]
+    init: frozenset[Atom]
+    goal: tuple[Literal, ...]
+    path: str = "<problem>"
+    spellings: dict[str, str] = field(default_factory=dict)
+
+
+def objects_by_type(domain: Domain, problem: Problem) -> dict[str, list[str]]:
+    """All objects (constants included) of each type, subtypes included, sorted."""
+    every = {**domain.constants, **problem.objects}
+    subtypes = domain.subtypes()
+    out: dict[str, list[str]] = {}
+    for t, subs in subtypes.items():
+        out[t] = sorted(o for o, ot in every.items() if ot in subs)
+    out["object"] = sorted(every)
+    return out
+
+
+def pretty_atom(atom: Atom, spellings: dict[str, str]) -> str:
+    """An atom in the paper's words: ``(open pinkdrawer)`` -> ``Open PinkDrawer``."""
+    words = [spellings.get(atom.predicate, atom.predicate)]
+    words[0] = words[0][:1].upper() + words[0][1:]
+    args = [spellings.get(a, a) for a in atom.args]
+    if len(args) <= 1:
+        return " ".join(words + args)
+    return words[0] + " " + ", ".join(args)

@@ -1,0 +1,419 @@
+"""Parsing PDDL domains and problems (with tarski) into :mod:`guided_lfd.pddl.model`.
+
+Tarski does the parsing; this module checks what guided-lfd supports,
+converts tarski's first-order structures into the small STRIPS model, and
+turns every failure into a one-line error with ``file:line:col``.
+"""
+
+from __future__ import annotations
+
+import logging
+import os
+import re
+import tempfile
+from contextlib import contextmanager
+from pathlib import Path
+from typing import Iterator
+
+from guided_lfd.errors import (
+    GuidedLfdError,
+    Location,
+    MismatchError,
+    PddlSemanticError,
+    PddlSyntaxError,
+    UnsupportedFeatureError,
+)
+from guided_lfd.pddl.model import (
+    EQUALITY,
+    SUPPORTED_REQUIREMENTS,
+    ActionSchema,
+    Atom,
+    Domain,
+    Literal,
+    Predicate,
+    Problem,
+)
+from guided_lfd.pddl.source import SourceMap, Token, read_text
+
+# Keywords of PDDL features beyond STRIPS, with the requirement they belong to.
+_UNSUPPORTED_KEYWORDS = {
+    "when": ":conditional-effects",
+    "forall": ":universal-preconditions",
+    "exists": ":existential-preconditions",
+    "or": ":disjunctive-preconditions",
+    "imply": ":disjunctive-preconditions",
+    "increase": ":numeric-fluents",
+    "decrease": ":numeric-fluents",
+    "assign": ":numeric-fluents",
+    "scale-up": ":numeric-fluents",
+    "scale-down": ":numeric-fluents",
+    ":functions": ":numeric-fluents",
+    ":derived": ":derived-predicates",
+    ":durative-action": ":durative-actions",
+    ":constraints": ":constraints",
+    ":metric": ":action-costs",
+    "either": ":typing with 'either' types",
+}
+
+
+@contextmanager
+def _quiet_tarski() -> Iterator[None]:
+    """Tarski logs warnings on the root logger; keep them off the user's stderr."""
+    previous = logging.root.manager.disable
+    logging.disable(logging.CRITICAL)
+    try:
+        yield
+    finally:
+        logging.disable(previous)
+
+
+def _check_features(src: SourceMap, what: str) -> None:
+    """Reject requirements and constructs outside guided-lfd's STRIPS fragment."""
+    head = src.define().items
+    if not head or not isinstance(head[0], Token) or head[0].lower != "define":
+        first = src.define()
+        raise PddlSyntaxError(f"expected '(define ({what} NAME) ...)'", src.location(first.line, first.col))
+    reqs = src.section(":requirements")
+    if reqs is not None:
+        for tok in reqs.items[1:]:
+            if isinstance(tok, Token) and tok.lower not in SUPPORTED_REQUIREMENTS:
+                raise UnsupportedFeatureError(
+                    f"unsupported requirement {tok.lower} "
+                    f"(guided-lfd supports {' '.join(SUPPORTED_REQUIREMENTS)})",
+                    src.location(tok.line, tok.col),
+                )
+    # Keywords only count at the head of a list: an object may be called 'or'.
+    for node in _lists(src):
+        name = node.head()
+        if name in _UNSUPPORTED_KEYWORDS:
+            tok = node.items[0]
+            assert isinstance(tok, Token)
+            raise UnsupportedFeatureError(
+                f"'{tok.text}' needs {_UNSUPPORTED_KEYWORDS[name]}, which guided-lfd does not support "
+                f"(expected STRIPS with typing, negative preconditions and equality)",
+                src.location(tok.line, tok.col),
+            )
+        # '(either a b)' appears inside typed lists.
+        for i, item in enumerate(node.items):
+            if isinstance(item, Token) and item.lower == "-" and i + 1 < len(node.items):
+                nxt = node.items[i + 1]
+                if not isinstance(nxt, Token):
+                    head_tok = nxt.items[0] if nxt.items else None
+                    if isinstance(head_tok, Token) and head_tok.lower == "either":
+                        raise UnsupportedFeatureError(
+                            "'either' types are not supported (expected a single type name)",
+                            src.location(head_tok.line, head_tok.col),
+                        )
+
+
+def _lists(src: SourceMap):
+    yield src.define()
+    for item in src.define().walk():
+        if not isinstance(item, Token):
+            yield item
+
+
+_TARSKI_POS = re.compile(r"line (\d+):(\d+) (.*)")
+
+
+def _tarski_parse(reader, kind: str, src: SourceMap) -> None:
+    """Run tarski on the text of ``src`` and translate its errors."""
+    from tarski import errors as terr
+
+    # Tarski wants a file name; give it the text we already read (stdin too).
+    fd, tmp = tempfile.mkstemp(suffix=".pddl", text=True)
+    try:
+        with os.fdopen(fd, "w", encoding="utf-8") as fh:
+            fh.write(src.text)
+        with _quiet_tarski():
+            if kind == "domain":
+                reader.parse_domain(tmp)
+            else:
+                reader.parse_instance(tmp)
+    except GuidedLfdError:
+        raise
+    except terr.UndefinedSort as exc:
+        name = _element_name(exc)
+        raise PddlSemanticError(
+            f"unknown type '{name}' (expected a type declared in :types)", src.locate(name, ":types", ":objects", ":constants")
+        ) from None
+    except terr.UndefinedPredicate as exc:
+        name = _element_name(exc)
+        raise PddlSemanticError(
+            f"unknown predicate '{name}' (expected a predicate declared in the domain's :predicates)",
+            src.locate(name, ":init", ":goal"),
+        ) from None
+    except terr.UndefinedConstant as exc:
+        name = _element_name(exc)
+        raise PddlSemanticError(
+            f"unknown object '{name}' (expected an object declared in :objects or a domain constant)",
+            src.locate(name, ":init", ":goal"),
+        ) from None
+    except terr.UndefinedElement as exc:
+        name = _element_name(exc)
+        raise PddlSemanticError(f"unknown name '{name}'", src.locate(name)) from None
+    except terr.ArityMismatch as exc:
+        text = str(exc)
+        match = re.search(r"element (\S+)/(\d+)", text)
+        pred = match.group(1) if match else "?"
+        arity = match.group(2) if match else "?"
+        raise PddlSemanticError(
+            f"wrong number of arguments for '{pred}' (expected {arity})",
+            _locate_application(src, pred, int(arity) if arity.isdigit() else None),
+        ) from None
+    except terr.SortMismatch as exc:
+        raise PddlSemanticError(f"type mismatch: {exc}", src.location(src.define().line, src.define().col)) from None
+    except terr.DuplicateDefinition as exc:
+        raise PddlSemanticError(f"duplicate definition: {exc}", src.location(src.define().line, src.define().col)) from None
+    except Exception as exc:  # tarski's ParsingError and anything else it raises
+        text = str(exc).splitlines()[0] if str(exc) else type(exc).__name__
+        match = _TARSKI_POS.search(text)
+        if match:
+            line, col, rest = int(match.group(1)), int(match.group(2)) + 1, match.group(3)
+            raise PddlSyntaxError(f"{rest} (expected a well-formed PDDL {kind})", src.location(line, col)) from None
+        raise PddlSyntaxError(f"cannot parse {kind}: {text}", src.location(src.define().line, src.define().col)) from None
+    finally:
+        os.unlink(tmp)
+
+
+def _element_name(exc: Exception) -> str:
+    match = re.search(r'"([^"]*)"', str(exc))
+    return match.group(1) if match else str(exc)
+
+
+def _locate_application(src: SourceMap, pred: str, arity: int | None = None) -> Location:
+    """Where ``(pred ...)`` is applied, preferring an application with the wrong arity."""
+    first = None
+    for node in _lists(src):
+        if node.head() == pred.lower():
+            if arity is None or len(node.items) - 1 != arity:
+                return src.location(node.line, node.col)
+            first = first or src.location(node.line, node.col)
+    return first or src.locate(pred)
+
+
+def _term_name(term) -> str:
+    from tarski.syntax import Variable
+
+    if isinstance(term, Variable):
+        return term.symbol if term.symbol.startswith("?") else "?" + term.symbol
+    return str(term.name).lower()
+
+
+def _pred_name(pred) -> str:
+    from tarski.syntax import builtins
+
+    if builtins.is_builtin_predicate(pred):
+        if pred.symbol == builtins.BuiltinPredicateSymbol.EQ:
+            return EQUALITY
+        raise ValueError(str(pred.symbol))
+    return str(pred.name).lower()
+
+
+def _literals(formula, src: SourceMap, where: str) -> list[Literal]:
+    """Flatten a conjunction of literals; anything else is unsupported."""
+    from tarski.syntax import CompoundFormula, Connective, Tautology
+    from tarski.syntax import Atom as TAtom
+
+    if isinstance(formula, Tautology):
+        return []
+    if isinstance(formula, TAtom):
+        return [Literal(Atom(_pred_name(formula.predicate), tuple(_term_name(t) for t in formula.subterms)))]
+    if isinstance(formula, CompoundFormula):
+        if formula.connective == Connective.And:
+            out: list[Literal] = []
+            for sub in formula.subformulas:
+                out += _literals(sub, src, where)
+            return out
+        if formula.connective == Connective.Not and isinstance(formula.subformulas[0], TAtom):
+            (lit,) = _literals(formula.subformulas[0], src, where)
+            return [Literal(lit.atom, False)]
+    raise UnsupportedFeatureError(
+        f"{where} is not a conjunction of literals (expected STRIPS with negative preconditions)",
+        src.location(src.define().line, src.define().col),
+    )
+
+
+def _declared_types(lang) -> dict[str, str | None]:
+    builtin = {"Real", "Integer", "Natural", "number"}
+    out: dict[str, str | None] = {}
+    for sort in lang.sorts:
+        if sort.name in builtin:
+            continue
+        parent = lang.immediate_parent.get(sort)
+        out[str(sort.name).lower()] = str(parent.name).lower() if parent is not None else None
+    return out
+
+
+def _domain_from_tarski(reader, src: SourceMap, path: str) -> Domain:
+    from tarski.fstrips import AddEffect, DelEffect
+    from tarski.syntax import Tautology, builtins
+
+    lang = reader.problem.language
+    predicates: dict[str, Predicate] = {}
+    for pred in lang.predicates:
+        if builtins.is_builtin_predicate(pred):
+            continue
+        name = str(pred.name).lower()
+        predicates[name] = Predicate(name, tuple((f"?x{i}", str(s.name).lower()) for i, s in enumerate(pred.sort)))
+    actions: list[ActionSchema] = []
+    for act in reader.problem.actions.values():
+        where = f"precondition of action '{act.name}'"
+        params = tuple((_term_name(v), str(v.sort.name).lower()) for v in act.parameters)
+        pre = tuple(_literals(act.precondition, src, where))
+        add: list[Atom] = []
+        dele: list[Atom] = []
+        for eff in act.effects:
+            node = src.action(act.name)
+            loc = src.location(node.line, node.col) if node else src.location(src.define().line, src.define().col)
+            if not isinstance(eff, (AddEffect, DelEffect)):
+                raise UnsupportedFeatureError(
+                    f"effect {eff} of action '{act.name}' is not a STRIPS add or delete effect", loc
+                )
+            if not isinstance(eff.condition, Tautology):
+                raise UnsupportedFeatureError(
+                    f"conditional effect in action '{act.name}' (needs :conditional-effects, unsupported)", loc
+                )
+            atom = Atom(_pred_name(eff.atom.predicate), tuple(_term_name(t) for t in eff.atom.subterms))
+            (add if isinstance(eff, AddEffect) else dele).append(atom)
+        actions.append(ActionSchema(str(act.name).lower(), params, pre, tuple(add), tuple(dele)))
+    reqs = src.section(":requirements")
+    requirements = tuple(t.lower for t in reqs.items[1:] if isinstance(t, Token)) if reqs else ()
+    return Domain(
+        name=str(reader.problem.domain_name).lower(),
+        requirements=requirements,
+        types=_declared_types(lang),
+        constants={str(c.name).lower(): str(c.sort.name).lower() for c in lang.constants()},
+        predicates=predicates,
+        actions=actions,
+        path=path,
+        spellings=src.spellings(),
+    )
+
+
+def _new_reader():
+    from tarski.io import PDDLReader
+
+    return PDDLReader(raise_on_error=True, strict_with_requirements=False)
+
+
+def _source_map(path: str, kind: str) -> SourceMap:
+    """Read ``path`` into a :class:`SourceMap`.
+
+    For an unclosed parenthesis the source map can only point at the list
+    left open at the end of the file; tarski's grammar often pins the real
+    mistake (``((and``) earlier, so its position wins when it has one.
+    """
+    text = read_text(path)
+    try:
+        return SourceMap(path, text)
+    except PddlSyntaxError as exc:
+        if "never closed" not in exc.message:
+            raise
+        better = _tarski_syntax_error(text, kind, path)
+        if better is not None and better.location is not None and exc.location is not None:
+            if (better.location.line or 0) > (exc.location.line or 0) and "<EOF>" not in better.message:
+                raise better from None
+        raise
+
+
+def _tarski_syntax_error(text: str, kind: str, path: str) -> PddlSyntaxError | None:
+    from tarski.io import PDDLReader
+
+    fd, tmp = tempfile.mkstemp(suffix=".pddl", text=True)
+    try:
+        with os.fdopen(fd, "w", encoding="utf-8") as fh:
+            fh.write(text)
+        reader = PDDLReader(raise_on_error=True, strict_with_requirements=False)
+        with _quiet_tarski():
+            try:
+                reader.parser.parse_file(tmp, kind)
+            except Exception as exc:  # tarski's ParsingError
+                match = _TARSKI_POS.search(str(exc).splitlines()[0] if str(exc) else "")
+                if match:
+                    return PddlSyntaxError(
+                        f"{match.group(3)} (expected a well-formed PDDL {kind})",
+                        Location(path, int(match.group(1)), int(match.group(2)) + 1),
+                    )
+        return None
+    finally:
+        os.unlink(tmp)
+
+
+def parse_domain(path: str | Path) -> Domain:
+    """Parse a domain file (``-`` for stdin) into a :class:`Domain`."""
+    name = str(path)
+    src = _source_map(name, "domain")
+    _check_kind(src, "domain")
+    _check_features(src, "domain")
+    reader = _new_reader()
+    _tarski_parse(reader, "domain", src)
+    return _domain_from_tarski(reader, src, name)
+
+
+def _check_kind(src: SourceMap, kind: str) -> None:
+    root = src.define()
+    for item in root.items[1:2]:
+        if not isinstance(item, Token) and item.head() in ("domain", "problem"):
+            if item.head() != kind:
+                raise PddlSyntaxError(
+                    f"this is a {item.head()} file, expected a {kind} file",
+                    src.location(item.line, item.col),
+                )
+            return
+
+
+def parse_task(domain_path: str | Path, problem_path: str | Path) -> tuple[Domain, Problem]:
+    """Parse a domain and a problem of it; checks that they belong together."""
+    dname = str(domain_path)
+    pname = str(problem_path)
+    dsrc = _source_map(dname, "domain")
+    _check_kind(dsrc, "domain")
+    _check_features(dsrc, "domain")
+    psrc = _source_map(pname, "problem")
+    _check_kind(psrc, "problem")
+    _check_features(psrc, "problem")
+    reader = _new_reader()
+    _tarski_parse(reader, "domain", dsrc)
+    domain = _domain_from_tarski(reader, dsrc, dname)
+    domain_constants = dict(domain.constants)
+    # The problem must name the domain it was given with.
+    dom_ref = psrc.section(":domain")
+    if dom_ref is not None and len(dom_ref.items) > 1 and isinstance(dom_ref.items[1], Token):
+        ref = dom_ref.items[1]
+        if ref.lower != domain.name:
+            raise MismatchError(
+                f"problem is for domain '{ref.text}', but the domain file defines '{domain.spellings.get(domain.name, domain.name)}'",
+                psrc.location(ref.line, ref.col),
+            )
+    _tarski_parse(reader, "problem", psrc)
+    problem = _problem_from_tarski(reader, psrc, pname, domain_constants)
+    return domain, problem
+
+
+def _problem_from_tarski(reader, src: SourceMap, path: str, domain_constants: dict[str, str]) -> Problem:
+    lang = reader.problem.language
+    objects = {
+        str(c.name).lower(): str(c.sort.name).lower()
+        for c in lang.constants()
+        if str(c.name).lower() not in domain_constants
+    }
+    init: set[Atom] = set()
+    for atom in reader.problem.init.as_atoms():
+        if not hasattr(atom, "predicate"):
+            continue
+        name = _pred_name(atom.predicate)
+        init.add(Atom(name, tuple(_term_name(t) for t in atom.subterms)))
+    goal = tuple(_literals(reader.problem.goal, src, "the goal"))
+    for lit in goal:
+        if lit.atom.predicate == EQUALITY:
+            raise UnsupportedFeatureError("equality in the goal is not supported", src.locate("=", ":goal"))
+    return Problem(
+        name=str(reader.problem.name).lower(),
+        domain_name=str(reader.problem.domain_name).lower(),
+        objects=objects,
+        init=frozenset(init),
+        goal=goal,
+        path=path,
+        spellings=src.spellings(),
+    )

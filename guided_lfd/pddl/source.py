@@ -1,0 +1,197 @@
+"""Reading PDDL text and mapping names back to file positions.
+
+The PDDL itself is parsed by tarski.  Tarski reports syntax errors with a
+position but semantic errors ("undefined element z") without one, so this
+module keeps a *source map*: the text split into s-expressions that remember
+their line and column.  It answers "where is the token ``z`` inside the
+``:init`` section?" and catches unbalanced parentheses with a precise
+position before the parser sees the text.  It does not interpret PDDL.
+"""
+
+from __future__ import annotations
+
+import re
+import sys
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from guided_lfd.errors import InputFileError, Location, PddlSyntaxError
+
+_TOKEN = re.compile(r";[^\n]*|\(|\)|[^\s()]+")
+
+
+def read_text(path: str | Path) -> str:
+    """Return the text of ``path`` (``-`` reads stdin), tolerating a BOM.
+
+    Raises :class:`InputFileError` for missing, unreadable, binary or empty
+    files, so that no caller ever sees an ``OSError``.
+    """
+    name = str(path)
+    try:
+        if name == "-":
+            data = sys.stdin.buffer.read() if hasattr(sys.stdin, "buffer") else sys.stdin.read().encode()
+        else:
+            data = Path(name).read_bytes()
+    except FileNotFoundError:
+        raise InputFileError("file not found", Location(name)) from None
+    except IsADirectoryError:
+        raise InputFileError("is a directory, expected a file", Location(name)) from None
+    except OSError as exc:
+        raise InputFileError(f"cannot read file ({exc.strerror})", Location(name)) from None
+    if b"\x00" in data:
+        raise InputFileError("binary file, expected text", Location(name))
+    try:
+        text = data.decode("utf-8-sig")
+    except UnicodeDecodeError as exc:
+        line = data[: exc.start].count(b"\n") + 1
+        raise InputFileError("not UTF-8 text", Location(name, line)) from None
+    if not text.strip():
+        raise InputFileError("empty file, expected PDDL", Location(name))
+    return text
+
+
+@dataclass
+class SExpr:
+    """A parenthesised list with the position of its opening parenthesis."""
+
+    line: int
+    col: int
+    items: list["SExpr | Token"] = field(default_factory=list)
+
+    def head(self) -> str | None:
+        """The lower-cased first token, if the list starts with a token."""
+        if self.items and isinstance(self.items[0], Token):
+            return self.items[0].lower
+        return None
+
+    def walk(self):
+        """Yield every token and list below this one, depth first."""
+        for item in self.items:
+            yield item
+            if isinstance(item, SExpr):
+                yield from item.walk()
+
+
+@dataclass
+class Token:
+    """A single symbol with its 1-based position."""
+
+    text: str
+    line: int
+    col: int
+
+    @property
+    def lower(self) -> str:
+        return self.text.lower()
+
+
+class SourceMap:
+    """The s-expression structure of one PDDL file, with positions."""
+
+    def __init__(self, path: str, text: str) -> None:
+        self.path = path
+        self.text = text
+        self.roots: list[SExpr] = []
+        self._build()
+
+    def location(self, line: int | None = None, col: int | None = None) -> Location:
+        """A :class:`Location` in this file."""
+        return Location(self.path, line, col)
+
+    def _build(self) -> None:
+        line_starts = [0]
+        for match in re.finditer("\n", self.text):
+            line_starts.append(match.end())
+        import bisect
+
+        stack: list[SExpr] = []
+        for match in _TOKEN.finditer(self.text):
+            tok = match.group()
+            if tok.startswith(";"):
+                continue
+            offset = match.start()
+            line = bisect.bisect_right(line_starts, offset)
+            col = offset - line_starts[line - 1] + 1
+            if tok == "(":
+                node = SExpr(line, col)
+                if stack:
+                    stack[-1].items.append(node)
+                else:
+                    self.roots.append(node)
+                stack.append(node)
+            elif tok == ")":
+                if not stack:
+                    raise PddlSyntaxError("unexpected ')' with no matching '('", self.location(line, col))
+                stack.pop()
+            else:
+                if not stack:
+                    raise PddlSyntaxError(
+                        f"unexpected '{tok}' outside of any parenthesis, expected '('",
+                        self.location(line, col),
+                    )
+                stack[-1].items.append(Token(tok, line, col))
+        if stack:
+            node = stack[-1]
+            raise PddlSyntaxError(
+                "'(' is never closed, expected ')' before the end of the file",
+                self.location(node.line, node.col),
+            )
+        if not self.roots:
+            raise PddlSyntaxError("no PDDL definition found, expected '(define ...)'", self.location(1, 1))
+        if len(self.roots) > 1:
+            extra = self.roots[1]
+            raise PddlSyntaxError(
+                "text after the end of the definition, expected one '(define ...)'",
+                self.location(extra.line, extra.col),
+            )
+
+    # -- queries -----------------------------------------------------------
+    def define(self) -> SExpr:
+        """The top-level ``(define ...)`` list."""
+        return self.roots[0]
+
+    def section(self, keyword: str) -> SExpr | None:
+        """The top-level section starting with ``keyword`` (e.g. ``:init``)."""
+        keyword = keyword.lower()
+        for item in self.define().items:
+            if isinstance(item, SExpr) and item.head() == keyword:
+                return item
+        return None
+
+    def action(self, name: str) -> SExpr | None:
+        """The ``(:action name ...)`` list."""
+        for item in self.define().items:
+            if isinstance(item, SExpr) and item.head() == ":action":
+                if len(item.items) > 1 and isinstance(item.items[1], Token) and item.items[1].lower == name.lower():
+                    return item
+        return None
+
+    def find_token(self, name: str, within: SExpr | None = None) -> Token | None:
+        """The first token spelled ``name`` (case-insensitive) inside ``within``."""
+        scope = within if within is not None else self.define()
+        name = name.lower()
+        for item in scope.walk():
+            if isinstance(item, Token) and item.lower == name:
+                return item
+        return None
+
+    def locate(self, name: str, *sections: str) -> Location:
+        """Best position of ``name``: searched in ``sections`` first, then anywhere."""
+        for keyword in sections:
+            scope = self.section(keyword)
+            if scope is not None:
+                tok = self.find_token(name, scope)
+                if tok is not None:
+                    return self.location(tok.line, tok.col)
+        tok = self.find_token(name)
+        if tok is not None:
+            return self.location(tok.line, tok.col)
+        return self.location(self.define().line, self.define().col)
+
+    def spellings(self) -> dict[str, str]:
+        """Map lower-case names to their first spelling in the file (``PinkDrawer``)."""
+        out: dict[str, str] = {}
+        for item in self.define().walk():
+            if isinstance(item, Token):
+                out.setdefault(item.lower, item.text)
+        return out

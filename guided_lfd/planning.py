@@ -1,0 +1,130 @@
+"""Planning with pyperplan's searches on guided-lfd's ground tasks.
+
+The ground task is handed to pyperplan as a :class:`pyperplan.task.Task`;
+negative preconditions and goals, which pyperplan does not support, are
+compiled into complement atoms ``(not-<atom>)`` kept up to date by every action.
+"""
+
+from __future__ import annotations
+
+import signal
+import threading
+import time
+from contextlib import contextmanager
+from dataclasses import dataclass
+from typing import Callable, Iterator
+
+from guided_lfd.errors import SearchTimeout
+from guided_lfd.grounding import GroundAction, GroundTask, bits
+
+#: Registered pyperplan configurations: name -> (search, heuristic or None, optimal?).
+SEARCHES: dict[str, tuple[str, str | None, bool]] = {
+    "astar-lmcut": ("astar", "lmcut", True),
+    "astar-hmax": ("astar", "hmax", True),
+    "bfs": ("bfs", None, True),
+    "gbfs-hff": ("gbfs", "hff", False),
+}
+DEFAULT_SEARCH = "astar-lmcut"
+
+
+@contextmanager
+def time_limit(seconds: float | None, what: str = "search") -> Iterator[None]:
+    """Raise :class:`SearchTimeout` if the block runs longer than ``seconds``.
+
+    Uses ``SIGALRM`` (pyperplan's searches cannot be interrupted otherwise),
+    so it only applies in the main thread; elsewhere the block runs unlimited.
+    """
+    if not seconds or threading.current_thread() is not threading.main_thread() or not hasattr(signal, "SIGALRM"):
+        yield
+        return
+
+    def on_alarm(signum, frame):
+        raise SearchTimeout(f"{what} exceeded the time limit of {seconds:g} s")
+
+    previous = signal.signal(signal.SIGALRM, on_alarm)
+    signal.setitimer(signal.ITIMER_REAL, seconds)
+    try:
+        yield
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, previous)
+
+
+def to_pyperplan(task: GroundTask, init: int | None = None, actions: list[GroundAction] | None = None):
+    """Build a pyperplan ``Task`` (with complement atoms for negative conditions)."""
+    from pyperplan.task import Operator, Task
+
+    init = task.init if init is None else init
+    actions = task.actions if actions is None else actions
+    negated = task.goal_neg
+    for act in actions:
+        negated |= act.pre_neg
+    names = [str(a) for a in task.atoms]
+
+    def neg_name(i: int) -> str:
+        return f"(not-{names[i][1:]}"
+
+    operators = []
+    for act in actions:
+        pre = {names[i] for i in bits(act.pre_pos)} | {neg_name(i) for i in bits(act.pre_neg)}
+        add = {names[i] for i in bits(act.add)}
+        dele = {names[i] for i in bits(act.delete & ~act.add)}
+        add |= {neg_name(i) for i in bits(act.delete & ~act.add & negated)}
+        dele |= {neg_name(i) for i in bits(act.add & negated)}
+        operators.append(Operator(act.name, frozenset(pre), frozenset(add), frozenset(dele)))
+    state = {names[i] for i in bits(init)} | {neg_name(i) for i in bits(negated & ~init)}
+    goals = {names[i] for i in bits(task.goal_pos)} | {neg_name(i) for i in bits(task.goal_neg)}
+    facts = set(names) | {neg_name(i) for i in bits(negated)}
+    return Task(task.problem.name, facts, frozenset(state), frozenset(goals), operators)
+
+
+@dataclass
+class PlanResult:
+    """Outcome of a planner call: ``plan`` is None when the task is unsolvable."""
+
+    plan: list[GroundAction] | None
+    search: str
+    optimal: bool
+    time_s: float
+
+
+def find_plan(
+    task: GroundTask,
+    init: int | None = None,
+    search: str = DEFAULT_SEARCH,
+    time_limit_s: float | None = None,
+    actions: list[GroundAction] | None = None,
+) -> PlanResult:
+    """Plan with a registered pyperplan configuration (see :data:`SEARCHES`).
+
+    A ``None`` plan is a proof of unsolvability: all searches registered here
+    are complete and exhaust the reachable state space before giving up.
+    """
+    from pyperplan.heuristics.blind import BlindHeuristic
+    from pyperplan.heuristics.lm_cut import LmCutHeuristic
+    from pyperplan.heuristics.relaxation import hFFHeuristic, hMaxHeuristic
+    from pyperplan.search import astar_search, breadth_first_search, greedy_best_first_search
+
+    kind, heuristic, optimal = SEARCHES[search]
+    start = time.perf_counter()
+    ptask = to_pyperplan(task, init, actions)
+    heuristics: dict[str, Callable] = {"lmcut": LmCutHeuristic, "hmax": hMaxHeuristic, "hff": hFFHeuristic}
+    with time_limit(time_limit_s, "planner"):
+        if kind == "bfs":
+            ops = breadth_first_search(ptask)
+        else:
+            h = heuristics[heuristic](ptask) if heuristic else BlindHeuristic(ptask)
+            ops = astar_search(ptask, h) if kind == "astar" else greedy_best_first_search(ptask, h)
+    elapsed = time.perf_counter() - start
+    if ops is None:
+        return PlanResult(None, search, optimal, elapsed)
+    by_name = {a.name: a for a in (task.actions if actions is None else actions)}
+    return PlanResult([by_name[op.name] for op in ops], search, optimal, elapsed)
+
+
+def plan_task(domain, problem, search: str = DEFAULT_SEARCH, time_limit_s: float | None = None) -> tuple[GroundTask, PlanResult]:
+    """Ground ``problem`` for planning (static atoms pruned) and plan for it."""
+    from guided_lfd.grounding import ground
+
+    task = ground(domain, problem, fixed=domain.predicates)
+    return task, find_plan(task, search=search, time_limit_s=time_limit_s)

@@ -1,0 +1,152 @@
+"""Reading IPC plan files and validating plans step by step.
+
+The validator works on the *lifted* domain and plain atom sets, independently
+of the grounder and the searches, so it can check what they produce.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+
+from guided_lfd.errors import InputFileError, Location, PlanFileError
+from guided_lfd.pddl.model import EQUALITY, Atom, Domain, Literal, Problem, objects_by_type
+from guided_lfd.pddl.source import read_text
+
+
+@dataclass(frozen=True)
+class PlanStep:
+    """One ground action of a plan, with where it was written."""
+
+    action: str
+    args: tuple[str, ...]
+    line: int | None = None
+    col: int | None = None
+
+    def __str__(self) -> str:
+        return "(" + " ".join((self.action, *self.args)) + ")"
+
+
+@dataclass
+class StepReport:
+    """Whether one step was applicable, and which precondition literals failed."""
+
+    index: int
+    step: PlanStep
+    failed: list[Literal] = field(default_factory=list)
+
+    @property
+    def ok(self) -> bool:
+        return not self.failed
+
+
+@dataclass
+class ValidationReport:
+    """Result of validating a plan from a state."""
+
+    steps: list[StepReport]
+    unsatisfied_goal: list[Literal]
+    final_state: frozenset[Atom]
+
+    @property
+    def valid(self) -> bool:
+        return all(s.ok for s in self.steps) and not self.unsatisfied_goal
+
+    @property
+    def first_failure(self) -> StepReport | None:
+        return next((s for s in self.steps if not s.ok), None)
+
+
+_STEP = re.compile(r"\(([^()]*)\)")
+
+
+def parse_plan_text(text: str, path: str, domain: Domain, problem: Problem) -> list[PlanStep]:
+    """Parse an IPC plan (``(action arg ...)`` per line, ``;`` comments, optional ``N:``)."""
+    steps: list[PlanStep] = []
+    every = {**domain.constants, **problem.objects}
+    by_type = objects_by_type(domain, problem)
+    schemas = {a.name: a for a in domain.actions}
+    for lineno, raw in enumerate(text.splitlines(), start=1):
+        line = raw.split(";", 1)[0]
+        stripped = line.strip()
+        if not stripped:
+            continue
+        body = re.sub(r"^\s*\d+(\.\d+)?\s*:\s*", "", line)
+        offset = len(line) - len(body)
+        match = _STEP.search(body)
+        if match is None or body[: match.start()].strip() or re.sub(r"\[[^\]]*\]", "", body[match.end():]).strip():
+            col = offset + len(body) - len(body.lstrip()) + 1
+            raise PlanFileError(f"expected '(action arg ...)', got '{stripped}'", Location(path, lineno, col))
+        words = match.group(1).split()
+        col = offset + match.start() + 2
+        if not words:
+            raise PlanFileError("empty action '()', expected '(action arg ...)'", Location(path, lineno, col - 1))
+        name, args = words[0].lower(), tuple(w.lower() for w in words[1:])
+        schema = schemas.get(name)
+        if schema is None:
+            raise PlanFileError(
+                f"unknown action '{words[0]}' (expected one of: {', '.join(sorted(schemas))})",
+                Location(path, lineno, col),
+            )
+        if len(args) != len(schema.params):
+            raise PlanFileError(
+                f"action '{name}' takes {len(schema.params)} argument(s), got {len(args)}",
+                Location(path, lineno, col),
+            )
+        pos = col + len(words[0]) + 1
+        for arg, (_, typ), word in zip(args, schema.params, words[1:]):
+            argcol = body.find(word, pos - offset - 1) + offset + 1
+            if arg not in every:
+                raise PlanFileError(f"unknown object '{word}' in action '{name}'", Location(path, lineno, argcol))
+            if arg not in by_type.get(typ, []):
+                raise PlanFileError(
+                    f"object '{word}' is a {every[arg]}, but action '{name}' expects a {typ}",
+                    Location(path, lineno, argcol),
+                )
+        steps.append(PlanStep(name, args, lineno, col - 1))
+    return steps
+
+
+def parse_plan(path: str, domain: Domain, problem: Problem) -> list[PlanStep]:
+    """Read and parse a plan file (``-`` for stdin). An empty plan is allowed."""
+    try:
+        text = read_text(path)
+    except InputFileError as exc:
+        if "empty" in exc.message:
+            return []
+        raise
+    return parse_plan_text(text, path, domain, problem)
+
+
+def validate_plan(domain: Domain, state: frozenset[Atom] | set[Atom], goal: tuple[Literal, ...], steps: list[PlanStep]) -> ValidationReport:
+    """Execute ``steps`` from ``state``; stop at the first inapplicable step."""
+    current = set(state)
+    schemas = {a.name: a for a in domain.actions}
+    reports: list[StepReport] = []
+    for i, step in enumerate(steps, start=1):
+        schema = schemas[step.action]
+        binding = {v: a for (v, _), a in zip(schema.params, step.args)}
+        ground_pre = [lit.substitute(binding) for lit in schema.precondition]
+        failed = [lit for lit in ground_pre if not _holds(lit, current)]
+        reports.append(StepReport(i, step, failed))
+        if failed:
+            return ValidationReport(reports, [], frozenset(current))
+        adds = {a.substitute(binding) for a in schema.add}
+        dels = {a.substitute(binding) for a in schema.delete}
+        current = (current - dels) | adds
+    unsatisfied = [lit for lit in goal if not _holds(lit, current)]
+    return ValidationReport(reports, unsatisfied, frozenset(current))
+
+
+def _holds(lit: Literal, state: set[Atom]) -> bool:
+    if lit.atom.predicate == EQUALITY:
+        value = lit.atom.args[0] == lit.atom.args[1]
+    else:
+        value = lit.atom in state
+    return value == lit.positive
+
+
+def format_plan(steps: list[str], cost: int | None = None) -> str:
+    """A plan in the IPC format: one action per line and a cost comment."""
+    body = "".join(f"{s}\n" for s in steps)
+    return body + f"; cost = {len(steps) if cost is None else cost} (unit cost)\n"

@@ -1,0 +1,91 @@
+"""`plan` and `validate`: optimal plans that validate, and step-by-step diagnosis."""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+
+from conftest import BLOCKS, kitchen
+from guided_lfd.grounding import ground
+from guided_lfd.pddl.reader import parse_task
+from guided_lfd.planning import SEARCHES, find_plan
+from guided_lfd.validate import PlanStep, validate_plan
+
+
+@pytest.mark.parametrize("search", sorted(SEARCHES))
+def test_every_registered_search_solves_blocks_and_the_plan_validates(search):
+    domain, problem = parse_task(BLOCKS / "domain.pddl", BLOCKS / "task03.pddl")
+    task = ground(domain, problem, fixed=domain.predicates)
+    result = find_plan(task, search=search)
+    assert result.plan is not None
+    steps = [PlanStep(a.schema, a.args) for a in result.plan]
+    assert validate_plan(domain, problem.init, problem.goal, steps).valid
+    if result.optimal:
+        assert len(result.plan) == 6
+
+
+@pytest.mark.parametrize("search", sorted(SEARCHES))
+def test_every_registered_search_proves_kitchen_unsolvable_for_the_robot(search):
+    domain, problem = parse_task(*kitchen(1))
+    task = ground(domain, problem, fixed=domain.predicates)
+    assert find_plan(task, search=search).plan is None
+
+
+def test_plan_cli_prints_ipc_plan_and_validate_accepts_it(runner, app, tmp_path):
+    result = runner.invoke(app, ["plan", *kitchen(2, "human")])
+    assert result.exit_code == 0, result.stderr
+    assert result.stdout.splitlines()[-1] == "; cost = 4 (unit cost)"
+    plan_file = tmp_path / "plan.txt"
+    plan_file.write_text(result.stdout)
+    check = runner.invoke(app, ["validate", *kitchen(2, "human"), str(plan_file)])
+    assert check.exit_code == 0
+    assert check.stdout == "valid: 4 step(s), goal reached\n"
+
+
+def test_plan_cli_json_and_unsolvable_exit_code(runner, app):
+    result = runner.invoke(app, ["plan", *kitchen(1), "--json"])
+    assert result.exit_code == 10
+    doc = json.loads(result.stdout)
+    assert doc["format"] == "guided-lfd/plan" and doc["format_version"] == 1
+    assert doc["status"] == "unsolvable" and doc["plan"] is None
+
+
+def test_validate_names_failing_step_and_precondition(runner, app, tmp_path):
+    plan_file = tmp_path / "plan.txt"
+    plan_file.write_text("; robot tries without opening\n(take RedPlate Table)\n(put_inside RedPlate PinkDrawer)\n")
+    result = runner.invoke(app, ["validate", *kitchen(1, "human"), str(plan_file)])
+    assert result.exit_code == 12
+    assert result.stdout.endswith(
+        "plan.txt:3:1: invalid: step 2 (put_inside redplate pinkdrawer) is not applicable: "
+        "precondition (open pinkdrawer) does not hold\n"
+    )
+
+
+def test_validate_reports_unreached_goal(runner, app, tmp_path):
+    plan_file = tmp_path / "plan.txt"
+    plan_file.write_text("(open_drawer PinkDrawer)\n")
+    result = runner.invoke(app, ["validate", *kitchen(1, "human"), str(plan_file), "--json"])
+    assert result.exit_code == 12
+    doc = json.loads(result.stdout)
+    assert doc["valid"] is False and doc["unsatisfied_goal"] == ["(inside redplate pinkdrawer)"]
+
+
+@pytest.mark.parametrize(
+    "text,message",
+    [
+        ("(fly RedPlate)\n", "plan.txt:1:2: plan error: unknown action 'fly'"),
+        ("(take RedPlate)\n", "plan.txt:1:2: plan error: action 'take' takes 2 argument(s), got 1"),
+        ("(take RedPlate Sofa)\n", "plan.txt:1:16: plan error: unknown object 'Sofa' in action 'take'"),
+        ("(take PinkDrawer Table)\n", "plan.txt:1:7: plan error: object 'PinkDrawer' is a drawer, but action 'take' expects a item"),
+        ("take RedPlate Table\n", "plan.txt:1:1: plan error: expected '(action arg ...)'"),
+    ],
+)
+def test_bad_plan_files_give_one_line_errors(runner, app, tmp_path, text, message):
+    plan_file = tmp_path / "plan.txt"
+    plan_file.write_text(text)
+    result = runner.invoke(app, ["validate", *kitchen(1, "human"), str(plan_file)])
+    assert result.exit_code == 35
+    assert result.stderr.strip().endswith(message) or message in result.stderr
+    assert len(result.stderr.strip().splitlines()) == 1
+    assert "Traceback" not in result.stderr

@@ -1,0 +1,88 @@
+"""Parsing: supported PDDL reads correctly; bad input gives pinned one-line errors."""
+
+from __future__ import annotations
+
+import pytest
+
+from conftest import BLOCKS, DATA, kitchen
+from guided_lfd import errors
+from guided_lfd.pddl.model import Atom, Literal
+from guided_lfd.pddl.reader import parse_domain, parse_task
+from guided_lfd.pddl.writer import domain_to_pddl, problem_to_pddl
+
+BAD = DATA / "bad"
+GOOD_DOMAIN = str(BLOCKS / "domain.pddl")
+GOOD_PROBLEM = str(BLOCKS / "task03.pddl")
+
+
+def test_blocks_task_reads_objects_init_and_goal():
+    domain, problem = parse_task(GOOD_DOMAIN, GOOD_PROBLEM)
+    assert domain.name == "blocks"
+    assert [a.name for a in domain.actions] == ["pick-up", "put-down", "stack", "unstack"]
+    assert problem.objects == {"a": "block", "b": "block", "c": "block", "d": "block"}
+    assert Atom("on", ("c", "b")) in problem.init
+    assert problem.goal == (
+        Literal(Atom("on", ("a", "b"))), Literal(Atom("on", ("b", "c"))), Literal(Atom("on", ("c", "d"))),
+    )
+
+
+def test_negative_preconditions_constants_and_spellings_are_kept():
+    domain, problem = parse_task(*kitchen(2))
+    open_drawer = domain.action("open_drawer")
+    assert Literal(Atom("open", ("?d",)), positive=False) in open_drawer.precondition
+    assert problem.spellings["pinkdrawer"] == "PinkDrawer"
+
+
+@pytest.mark.parametrize("n", [1, 2])
+@pytest.mark.parametrize("who", ["robot", "human"])
+def test_writer_round_trips_through_the_parser(tmp_path, n, who):
+    domain, problem = parse_task(*kitchen(n, who))
+    (tmp_path / "d.pddl").write_text(domain_to_pddl(domain))
+    (tmp_path / "p.pddl").write_text(problem_to_pddl(problem))
+    domain2, problem2 = parse_task(tmp_path / "d.pddl", tmp_path / "p.pddl")
+    assert domain2.actions == domain.actions
+    assert domain2.types == domain.types
+    assert (problem2.init, problem2.goal, problem2.objects) == (problem.init, problem.goal, problem.objects)
+
+
+# (file, which side is bad, exception, exit code, message start incl. file:line:col)
+BAD_INPUTS = [
+    ("unknown-object.pddl", "problem", errors.PddlSemanticError, 32, "unknown-object.pddl:5:8: semantic error: unknown object 'z'"),
+    ("unknown-predicate.pddl", "problem", errors.PddlSemanticError, 32, "unknown-predicate.pddl:5:3: semantic error: unknown predicate 'onn'"),
+    ("wrong-arity.pddl", "problem", errors.PddlSemanticError, 32, "wrong-arity.pddl:5:2: semantic error: wrong number of arguments for 'on' (expected 2)"),
+    ("syntax-goal.pddl", "problem", errors.PddlSyntaxError, 31, "syntax-goal.pddl:6:9: syntax error: no viable alternative"),
+    ("unclosed.pddl", "problem", errors.PddlSyntaxError, 31, "unclosed.pddl:1:1: syntax error: '(' is never closed"),
+    ("wrong-domain.pddl", "problem", errors.MismatchError, 34, "wrong-domain.pddl:2:10: mismatch: problem is for domain 'KITCHEN'"),
+    ("requirement.pddl", "domain", errors.UnsupportedFeatureError, 33, "requirement.pddl:6:34: unsupported: unsupported requirement :conditional-effects"),
+    ("conditional-effect.pddl", "domain", errors.UnsupportedFeatureError, 33, "conditional-effect.pddl:31:7: unsupported: 'when' needs :conditional-effects"),
+    ("numeric.pddl", "domain", errors.UnsupportedFeatureError, 33, "numeric.pddl:15:4: unsupported: ':functions' needs :numeric-fluents"),
+    ("empty.pddl", "problem", errors.InputFileError, 30, "empty.pddl: input error: empty file"),
+    ("blank.pddl", "domain", errors.PddlSyntaxError, 31, "blank.pddl:1:1: syntax error: no PDDL definition found"),
+    ("missing.pddl", "problem", errors.InputFileError, 30, "missing.pddl: input error: file not found"),
+]
+
+
+@pytest.mark.parametrize("name,side,exc,code,message", BAD_INPUTS, ids=[b[0] for b in BAD_INPUTS])
+def test_bad_input_is_one_pinned_line(name, side, exc, code, message):
+    bad = str(BAD / name)
+    args = (bad, GOOD_PROBLEM) if side == "domain" else (GOOD_DOMAIN, bad)
+    with pytest.raises(exc) as info:
+        parse_task(*args)
+    text = str(info.value)
+    assert "\n" not in text
+    assert text.split("/")[-1].startswith(message)
+    assert info.value.exit_code == code
+
+
+def test_problem_given_as_domain_is_rejected():
+    with pytest.raises(errors.PddlSyntaxError, match=r"task03.pddl:1:9: syntax error: this is a problem file, expected a domain file"):
+        parse_domain(GOOD_PROBLEM)
+
+
+def test_exit_codes_are_distinct_and_documented():
+    classes = [errors.InputFileError, errors.PddlSyntaxError, errors.PddlSemanticError, errors.UnsupportedFeatureError,
+               errors.MismatchError, errors.PlanFileError, errors.TraceError, errors.OptionError, errors.OutputError,
+               errors.SearchTimeout]
+    codes = [c.exit_code for c in classes]
+    assert len(set(codes)) == len(codes)
+    assert all(code in errors.EXIT_CODES for code in codes)
