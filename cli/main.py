@@ -6,6 +6,7 @@ from typing import Annotated
 
 import typer
 
+from cli.excuse import excuse
 from cli.plan import plan
 from cli.validate import validate
 from guided_lfd import __version__
@@ -36,6 +37,7 @@ def main(
     """Excuse-guided learning from demonstration."""
 
 
+app.command("excuse")(excuse)
 app.command("plan")(plan)
 app.command("validate")(validate)
 

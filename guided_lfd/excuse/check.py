@@ -1,0 +1,81 @@
+"""Independent check of an excuse (paper, Definition 2).
+
+Works on the lifted model and plain atom sets only, with the plan validator;
+it shares no code with the grounder or the searches, so it can catch their
+mistakes.  Every excuse guided-lfd prints has passed this check.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from guided_lfd.pddl.model import Atom, Domain, Literal, Problem
+from guided_lfd.validate import PlanStep, validate_plan
+
+
+@dataclass(frozen=True)
+class Change:
+    """One atom made true (``added``) or false in the excuse state."""
+
+    atom: Atom
+    added: bool
+
+    def __str__(self) -> str:
+        return f"{'+' if self.added else '-'}{self.atom}"
+
+
+def excuse_state(init: frozenset[Atom], changes: list[Change]) -> frozenset[Atom]:
+    """I' = I Δ E."""
+    state = set(init)
+    for change in changes:
+        if change.added:
+            state.add(change.atom)
+        else:
+            state.discard(change.atom)
+    return frozenset(state)
+
+
+def _holds(lit: Literal, state: frozenset[Atom]) -> bool:
+    return (lit.atom in state) == lit.positive
+
+
+def check_excuse(
+    domain: Domain,
+    problem: Problem,
+    changes: list[Change],
+    plan: list[PlanStep],
+    groups: list[tuple[frozenset[Atom], bool]] | None = None,
+) -> list[str]:
+    """Reasons why ``changes`` with ``plan`` is *not* a valid excuse (empty = valid).
+
+    ``groups`` are (atoms, exactly_one) invariants the excuse state must keep
+    (consistent semantics), checked as stated: at most one true atom, and
+    exactly one where ``exactly_one`` is set.
+    """
+    problems: list[str] = []
+    atoms = [c.atom for c in changes]
+    if len(set(atoms)) != len(atoms):
+        problems.append("an atom is changed twice")
+    for change in changes:
+        if change.added and change.atom in problem.init:
+            problems.append(f"{change} adds an atom that is already true")
+        if not change.added and change.atom not in problem.init:
+            problems.append(f"{change} removes an atom that is already false")
+        if change.atom.predicate not in domain.predicates:
+            problems.append(f"{change} is not an atom of the domain")
+    state = excuse_state(problem.init, changes)
+    if all(_holds(lit, state) for lit in problem.goal) and changes:
+        problems.append("the excuse state already satisfies the goal")
+    report = validate_plan(domain, state, problem.goal, plan)
+    if not report.valid:
+        failure = report.first_failure
+        if failure is not None:
+            problems.append(f"plan step {failure.index} {failure.step} is not applicable in the excuse state")
+        else:
+            problems.append("the plan does not reach the goal from the excuse state")
+    for members, exactly_one in groups or []:
+        count = len(members & state)
+        if count > 1 or (exactly_one and count == 0):
+            names = " ".join(str(a) for a in sorted(members))
+            problems.append(f"the excuse state breaks the invariant over {names} ({count} true)")
+    return problems

@@ -1,0 +1,217 @@
+"""Finding minimal excuses: the library entry point behind ``guided-lfd excuse``.
+
+``find_excuses`` grounds the task, builds the change space (with invariants
+for the consistent semantics), runs a registered strategy, and turns every
+change set found into an :class:`Excuse` with a validated robot plan from
+the excuse state.  Each excuse is re-checked by :mod:`guided_lfd.excuse.check`
+before it is returned.
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass, field
+from typing import Any
+
+from guided_lfd.errors import SearchTimeout
+from guided_lfd.excuse.check import Change, check_excuse, excuse_state
+from guided_lfd.excuse.reach import ReachabilityOracle
+from guided_lfd.excuse.space import ChangeSpace, MutexGroup, Semantics, build_space
+from guided_lfd.excuse.strategies import DEFAULT_STRATEGY, STRATEGIES, Progress, SearchLimits
+from guided_lfd.grounding import GroundAction, GroundTask, bits, ground
+from guided_lfd.pddl.model import Atom, Domain, Literal, Problem, pretty_atom
+from guided_lfd.validate import PlanStep
+
+#: Outcome statuses of an excuse search, as written in the JSON document.
+STATUSES = ("already-solvable", "excuse-found", "no-excuse", "no-excuse-within-size", "timeout")
+
+
+@dataclass
+class ExcuseOptions:
+    """Everything that selects which excuses count and how to search."""
+
+    semantics: Semantics = Semantics.CONSISTENT
+    strategy: str = DEFAULT_STRATEGY
+    fixed: list[str] = field(default_factory=list)
+    costs: list[str] = field(default_factory=list)
+    all_minimal: bool = False
+    max_size: int | None = None
+    time_limit: float | None = None
+    invariants_from: Domain | None = None
+    optimal_plans: bool = True
+
+
+@dataclass
+class Excuse:
+    """A minimal excuse: the changes, the excuse state and the robot's plan from it."""
+
+    changes: list[Change]
+    cost: int
+    state: frozenset[Atom]
+    plan: list[str]
+    plan_optimal: bool
+
+    @property
+    def size(self) -> int:
+        return len(self.changes)
+
+    def describe(self, spellings: dict[str, str]) -> list[str]:
+        """The changes in the paper's words (``Open PinkDrawer``)."""
+        return [describe_change(c, spellings) for c in self.changes]
+
+
+def describe_change(change: Change, spellings: dict[str, str]) -> str:
+    """``+(open pinkdrawer)`` -> ``Open PinkDrawer``; deletions read ``Not ...``."""
+    text = pretty_atom(change.atom, spellings)
+    return text if change.added else f"Not {text[:1].lower()}{text[1:]}"
+
+
+@dataclass
+class ExcuseReport:
+    """Result of :func:`find_excuses`."""
+
+    status: str
+    excuses: list[Excuse]
+    semantics: Semantics
+    strategy: str
+    statistics: dict[str, Any]
+    unachievable_goals: list[Literal]
+    invariant_groups: list[MutexGroup]
+    robot_plan: list[str] | None = None  # when the task is already solvable
+    checked_groups: list[tuple[frozenset[Atom], bool]] = field(default_factory=list)
+
+    @property
+    def excuse(self) -> Excuse | None:
+        return self.excuses[0] if self.excuses else None
+
+
+def unachievable_goals(task: GroundTask) -> list[Literal]:
+    """Goal literals false in I that no robot action can make true."""
+    adds = deletes = 0
+    for act in task.actions:
+        adds |= act.add
+        deletes |= act.delete
+    out: list[Literal] = []
+    for i in bits(task.goal_pos & ~task.init & ~adds):
+        out.append(Literal(task.atoms[i]))
+    for i in bits(task.goal_neg & task.init & ~deletes):
+        out.append(Literal(task.atoms[i], False))
+    return sorted(out)
+
+
+def _changes_of(task: GroundTask, changes: int) -> list[Change]:
+    out = [Change(task.atoms[i], not (task.init >> i) & 1) for i in bits(changes)]
+    return sorted(out, key=lambda c: (c.atom, c.added))
+
+
+def _robot_plan(task: GroundTask, space: ChangeSpace, state: int, fallback: list[GroundAction],
+                optimal: bool, deadline: float | None) -> tuple[list[GroundAction], bool]:
+    """An optimal robot plan from ``state`` if it can be had in time, else ``fallback``."""
+    if not optimal:
+        return fallback, False
+    from guided_lfd.planning import find_plan
+
+    budget = 10.0 if deadline is None else min(10.0, deadline - time.monotonic())
+    if budget <= 0:
+        return fallback, False
+    try:
+        result = find_plan(task, init=state, search="astar-lmcut", time_limit_s=budget,
+                           actions=space.relevant_actions)
+    except SearchTimeout:
+        return fallback, False
+    if result.plan is None:  # cannot happen for a found excuse; keep the witness
+        return fallback, False
+    return result.plan, True
+
+
+def find_excuses(
+    domain: Domain,
+    problem: Problem,
+    options: ExcuseOptions | None = None,
+    progress: Progress | None = None,
+) -> ExcuseReport:
+    """Find minimal excuses for the robot's task ``(domain, problem)``."""
+    options = options or ExcuseOptions()
+    if options.strategy not in STRATEGIES:
+        from guided_lfd.errors import OptionError
+
+        raise OptionError(f"unknown strategy '{options.strategy}' (expected one of: {', '.join(STRATEGIES)})")
+    start = time.monotonic()
+    deadline = None if options.time_limit is None else start + options.time_limit
+    task = ground(domain, problem, fixed=options.fixed)
+    groups: list[MutexGroup] = []
+    if options.semantics is Semantics.CONSISTENT:
+        from guided_lfd.excuse.invariants import mutex_groups
+
+        groups = mutex_groups(options.invariants_from or domain, task)
+    space = build_space(task, options.semantics, options.fixed, options.costs, groups)
+    stats: dict[str, Any] = {
+        "ground_atoms": len(task.atoms),
+        "ground_actions": len(task.actions),
+        "changeable_atoms": space.changeable.bit_count(),
+        "relevant_atoms": space.relevant_atoms.bit_count(),
+        "relevant_actions": len(space.relevant_actions),
+        "invariant_groups": len(space.groups),
+    }
+    unachievable = unachievable_goals(task)
+
+    def finish(status: str, excuses: list[Excuse], robot_plan: list[str] | None = None, **more: Any) -> ExcuseReport:
+        stats.update(more)
+        stats["time_s"] = round(time.monotonic() - start, 4)
+        return ExcuseReport(status, excuses, options.semantics, options.strategy, stats, unachievable,
+                            space.groups, robot_plan, _group_atoms(space))
+
+    # Already solvable: no excuse needed.
+    oracle = ReachabilityOracle(space, deadline)
+    try:
+        plan0 = oracle.solve(task.init)
+    except SearchTimeout:
+        return finish("timeout", [], candidates=0, planner_calls=1)
+    if plan0 is not None:
+        plan, _ = _robot_plan(task, space, task.init, plan0, options.optimal_plans, deadline)
+        _verify(domain, problem, [], plan, space)
+        return finish("already-solvable", [], [a.name for a in plan], candidates=0, planner_calls=1)
+
+    limits = SearchLimits(all_minimal=options.all_minimal, max_size=options.max_size, deadline=deadline)
+    outcome = STRATEGIES[options.strategy].search(space, limits, progress)
+    excuses: list[Excuse] = []
+    for changes in outcome.solutions:
+        state = task.init ^ changes
+        plan, optimal = _robot_plan(task, space, state, outcome.plans[changes], options.optimal_plans, deadline)
+        change_list = _changes_of(task, changes)
+        _verify(domain, problem, change_list, plan, space)
+        excuses.append(Excuse(change_list, space.cost(changes), excuse_state(problem.init, change_list),
+                              [a.name for a in plan], optimal))
+    excuses.sort(key=lambda e: (e.cost, e.size, [str(c) for c in e.changes]))
+    status = {
+        "found": "excuse-found",
+        "none": "no-excuse",
+        "size-limit": "no-excuse-within-size",
+        "timeout": "timeout",
+    }[outcome.status]
+    if status == "timeout" and excuses:
+        status = "excuse-found"  # --all ran out of time: what was found is minimal
+        stats["incomplete"] = True
+    return finish(status, excuses, candidates=outcome.candidates, planner_calls=outcome.planner_calls + 1,
+                  nodes_expanded=outcome.expanded, **outcome.extra)
+
+
+def _group_atoms(space: ChangeSpace) -> list[tuple[frozenset[Atom], bool]]:
+    """The invariant groups as atom sets, for the independent checker."""
+    return [(frozenset(space.task.atoms[i] for i in bits(g.mask)), g.exactly_one) for g in space.groups]
+
+
+def _verify(domain: Domain, problem: Problem, changes: list[Change], plan: list[GroundAction],
+            space: ChangeSpace) -> None:
+    """Refuse to return an excuse the independent checker rejects (a bug)."""
+    steps = [PlanStep(a.schema, a.args) for a in plan]
+    groups = _group_atoms(space)
+    if not changes:
+        from guided_lfd.validate import validate_plan
+
+        if not validate_plan(domain, problem.init, problem.goal, steps).valid:
+            raise RuntimeError("internal check failed: the robot plan does not validate")
+        return
+    problems = check_excuse(domain, problem, changes, steps, groups)
+    if problems:
+        raise RuntimeError("internal check failed for excuse " + " ".join(map(str, changes)) + ": " + "; ".join(problems))

@@ -1,0 +1,135 @@
+"""State invariants for the *consistent* excuse semantics.
+
+Lifted mutex invariants are synthesised with Fast Downward's translator
+(Helmert 2009, invariant synthesis) from the robot's actions **and the
+reverse of each action**.  Without the reverses, an invariant could hold
+only because a skill is missing (the robot cannot open a second cupboard, so
+"at most one cupboard is open" looks invariant) and would wrongly forbid the
+excuse the human should be asked for.
+
+Each lifted invariant is instantiated over all objects into ground groups:
+
+* at most one atom of a group may be true in the excuse state if at most
+  one is true in I (a group with two or more true atoms in I constrains
+  nothing: the invariant does not describe this initial state);
+* exactly one must be true if exactly one is true in I *and* no action can
+  change the group's count (every add is paired with a delete of a group atom
+  the action requires) — "objects don't vanish or double up".  A group an
+  action may empty (``open ?d`` undone by ``close``) only gets "at most one".
+"""
+
+from __future__ import annotations
+
+import contextlib
+import io
+from dataclasses import replace
+
+from guided_lfd.excuse.space import MutexGroup
+from guided_lfd.grounding import GroundTask, bits, ground
+from guided_lfd.pddl.model import Domain, Problem
+from guided_lfd.pddl.writer import domain_to_pddl, problem_to_pddl
+
+
+def with_reversed_actions(domain: Domain) -> Domain:
+    """The domain with the reverse of every action added."""
+    return replace(domain, actions=[*domain.actions, *(a.reversed() for a in domain.actions)])
+
+
+def lifted_invariants(domain: Domain, problem: Problem) -> list:
+    """Fast Downward's lifted invariants of ``domain`` (with reversed actions)."""
+    from fast_downward.translate import invariant_finder, normalize, options
+    from fast_downward.translate.pddl_parser import lisp_parser, parsing_functions
+
+    augmented = with_reversed_actions(domain)
+    dom_text = domain_to_pddl(augmented)
+    prob = replace(problem, domain_name=domain.name, init=frozenset())
+    prob_text = problem_to_pddl(prob)
+    if options.options is None:
+        options.set_options(["domain.pddl", "problem.pddl"])
+    sink = io.StringIO()
+    # The translator reports progress on stdout, which carries our data.
+    with contextlib.redirect_stdout(sink):
+        task = parsing_functions.parse_task(
+            lisp_parser.parse_nested_list(dom_text.splitlines(keepends=True)),
+            lisp_parser.parse_nested_list(prob_text.splitlines(keepends=True)),
+        )
+        normalize.normalize(task)
+        found = list(invariant_finder.find_invariants(task, None))
+    return sorted(found, key=str)
+
+
+def mutex_groups(source: Domain, task: GroundTask) -> list[MutexGroup]:
+    """Ground mutex groups of ``task`` from invariants of ``source`` (usually its own domain)."""
+    invariants = lifted_invariants(source, task.problem)
+    groups: list[MutexGroup] = []
+    if source is task.domain:
+        check_task = task
+    else:
+        # Conservation is judged with the actions the invariants come from.
+        check_task = ground(source, _problem_for(source, task.problem))
+    for inv in invariants:
+        by_key: dict[tuple, int] = {}
+        for part in inv.parts:
+            for i, atom in enumerate(task.atoms):
+                if atom.predicate != part.predicate or len(atom.args) != len(part.args):
+                    continue
+                key = tuple(
+                    atom.args[pos]
+                    for arg_index in range(part.arity())
+                    for pos, arg in enumerate(part.args)
+                    if arg == arg_index
+                )
+                by_key[key] = by_key.get(key, 0) | (1 << i)
+        conserved = _conserved(check_task, task, [m for m in by_key.values()])
+        for key in sorted(by_key):
+            mask = by_key[key]
+            count = (task.init & mask).bit_count()
+            if count > 1:
+                continue
+            exactly = count == 1 and conserved
+            if mask.bit_count() < 2 and not exactly:
+                continue  # "at most one of one atom" says nothing
+            groups.append(MutexGroup(mask, exactly, describe_invariant(inv)))
+    # The same ground group can come from several invariants: keep the strongest.
+    unique: dict[int, MutexGroup] = {}
+    for g in groups:
+        if g.mask not in unique or (g.exactly_one and not unique[g.mask].exactly_one):
+            unique[g.mask] = g
+    return [unique[m] for m in sorted(unique)]
+
+
+def describe_invariant(inv) -> str:
+    """Readable form of a lifted invariant: ``{(holding *), (handempty)}``."""
+    parts = []
+    for part in sorted(inv.parts):
+        args = ["*" if a == -1 else f"?v{a}" for a in part.args]
+        parts.append("(" + " ".join([part.predicate, *args]) + ")")
+    return "{" + ", ".join(parts) + "}"
+
+
+def _problem_for(source: Domain, problem: Problem) -> Problem:
+    return replace(problem, domain_name=source.name)
+
+
+def _conserved(check_task: GroundTask, task: GroundTask, masks: list[int]) -> bool:
+    """Whether every action keeps the number of true atoms in each group constant."""
+    if check_task is not task:
+        # Map the groups into the other task's atom index by atom identity.
+        remap = []
+        for mask in masks:
+            m = 0
+            for i in bits(mask):
+                j = check_task.index.get(task.atoms[i])
+                if j is not None:
+                    m |= 1 << j
+            remap.append(m)
+        masks = remap
+    for act in check_task.actions:
+        for mask in masks:
+            added = act.add & mask & ~act.pre_pos
+            removed = act.delete & mask & ~act.add
+            if not added and not removed:
+                continue
+            if removed & ~act.pre_pos or added.bit_count() != removed.bit_count():
+                return False
+    return True

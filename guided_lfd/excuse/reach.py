@@ -1,0 +1,124 @@
+"""Can the robot reach the goal from a candidate excuse state?
+
+The check that decides whether a change set is an excuse.  Unlike a fresh
+planner call per candidate (the paper's method), one oracle serves the whole
+excuse search:
+
+* states are projected onto the relevant atoms and searched with the
+  relevant actions only (irrelevant atoms cannot influence the goal);
+* every state of an exhausted (failed) search is remembered as *dead*, and
+  every state on a found plan as *alive* with its remaining plan, so later
+  candidates stop as soon as they meet a known state;
+* the search is greedy best-first on the number of unsatisfied goal atoms,
+  which finds plans fast and is complete (duplicate detection, finite space).
+"""
+
+from __future__ import annotations
+
+import heapq
+import time
+from dataclasses import dataclass
+
+from guided_lfd.errors import SearchTimeout
+from guided_lfd.excuse.space import ChangeSpace
+from guided_lfd.grounding import GroundAction
+
+
+@dataclass
+class ReachStats:
+    """Work done by the oracle."""
+
+    calls: int = 0
+    expanded: int = 0
+    memo_hits: int = 0
+
+
+class ReachabilityOracle:
+    """Goal reachability from excuse states, with memory across calls."""
+
+    def __init__(self, space: ChangeSpace, deadline: float | None = None) -> None:
+        self.space = space
+        self.mask = space.relevant_atoms
+        self.actions = space.relevant_actions
+        task = space.task
+        self.goal_pos = task.goal_pos
+        self.goal_neg = task.goal_neg
+        self.deadline = deadline
+        self.dead: set[int] = set()
+        self.alive: dict[int, tuple[GroundAction, int] | None] = {}
+        self.stats = ReachStats()
+        # Index actions by one positive precondition so successor generation
+        # skips most inapplicable actions; actions without one are always tried.
+        self._unconditional = [a for a in self.actions if not a.pre_pos]
+        self._by_first_pre: dict[int, list[GroundAction]] = {}
+        for act in self.actions:
+            if act.pre_pos:
+                low = (act.pre_pos & -act.pre_pos).bit_length() - 1
+                self._by_first_pre.setdefault(low, []).append(act)
+        self._keys = sorted(self._by_first_pre)
+
+    def _goal_distance(self, state: int) -> int:
+        return (self.goal_pos & ~state).bit_count() + (self.goal_neg & state).bit_count()
+
+    def _successors(self, state: int):
+        for act in self._unconditional:
+            if not (state & act.pre_neg):
+                yield act, (state & ~act.delete | act.add) & self.mask
+        for key in self._keys:
+            if (state >> key) & 1:
+                for act in self._by_first_pre[key]:
+                    if (state & act.pre_pos) == act.pre_pos and not (state & act.pre_neg):
+                        yield act, (state & ~act.delete | act.add) & self.mask
+
+    def solve(self, state: int) -> list[GroundAction] | None:
+        """A plan from ``state`` to the goal, or None if the goal is unreachable."""
+        self.stats.calls += 1
+        start = state & self.mask
+        parents: dict[int, tuple[int, GroundAction] | None] = {start: None}
+        counter = 0
+        heap = [(self._goal_distance(start), counter, start)]
+        expanded = 0
+        found: int | None = None
+        while heap:
+            _, _, s = heapq.heappop(heap)
+            if s in self.alive:
+                found = s
+                self.stats.memo_hits += 1
+                break
+            if not self._goal_distance(s):
+                self.alive[s] = None
+                found = s
+                break
+            expanded += 1
+            if self.deadline is not None and not expanded & 1023 and time.monotonic() > self.deadline:
+                self.stats.expanded += expanded
+                raise SearchTimeout("excuse search exceeded its time limit")
+            for act, t in self._successors(s):
+                if t in parents:
+                    continue
+                if t in self.dead:
+                    self.stats.memo_hits += 1
+                    continue
+                parents[t] = (s, act)
+                counter += 1
+                heapq.heappush(heap, (self._goal_distance(t), counter, t))
+        self.stats.expanded += expanded
+        if found is None:
+            self.dead.update(parents)
+            return None
+        # Path from start to the meeting state, then the remembered rest.
+        path: list[tuple[int, GroundAction]] = []
+        s = found
+        while parents[s] is not None:
+            prev, act = parents[s]  # type: ignore[misc]
+            path.append((prev, act))
+            s = prev
+        path.reverse()
+        for (prev, act), nxt in zip(path, [p for p, _ in path[1:]] + [found]):
+            self.alive[prev] = (act, nxt)
+        plan = [act for _, act in path]
+        s = found
+        while self.alive.get(s) is not None:
+            act, s = self.alive[s]  # type: ignore[misc]
+            plan.append(act)
+        return plan

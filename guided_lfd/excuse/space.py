@@ -1,0 +1,216 @@
+"""The space of excuses: which atoms may change, at what cost, under which constraints.
+
+An excuse (paper, Definition 2) is a set of atom changes E = I Δ I'.  A
+change set is a bit set over the ground task's atom index; the excuse state
+is ``I ^ E``.  This module holds everything the search strategies share:
+
+* the changeable atoms (all typed ground atoms, minus ``--fixed`` predicates);
+* backward relevance (atoms and robot actions that can matter for the goal):
+  a minimal excuse under literal semantics only changes relevant atoms;
+* change costs (``--cost``) folded with the size into one integer weight, so
+  that minimising the weight minimises total cost and breaks ties by size;
+* the state invariants of the ``consistent`` semantics (mutex groups).
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+from enum import Enum
+
+from guided_lfd.errors import OptionError
+from guided_lfd.grounding import GroundAction, GroundTask, bits
+from guided_lfd.pddl.model import Atom
+
+
+class Semantics(str, Enum):
+    """Which initial states count as excuse states."""
+
+    LITERAL = "literal"  # the paper's Definition 2, over all typed ground atoms
+    CONSISTENT = "consistent"  # ... that also keep the state invariants
+
+
+@dataclass(frozen=True)
+class MutexGroup:
+    """Ground atoms of which at most one (or exactly one) may be true."""
+
+    mask: int
+    exactly_one: bool
+    invariant: str
+
+    def need(self, state: int) -> int:
+        """How many changes inside the group ``state`` needs at least (0 = satisfied)."""
+        count = (state & self.mask).bit_count()
+        if count > 1:
+            return count - 1
+        if count == 0 and self.exactly_one:
+            return 1
+        return 0
+
+
+@dataclass
+class ChangeSpace:
+    """What an excuse may change in one ground task, and what it costs."""
+
+    task: GroundTask
+    semantics: Semantics
+    changeable: int
+    relevant_atoms: int
+    relevant_actions: list[GroundAction]
+    negation_needed: int
+    costs: dict[int, int]
+    groups: list[MutexGroup] = field(default_factory=list)
+    groups_of: dict[int, list[int]] = field(default_factory=dict)
+
+    def __post_init__(self) -> None:
+        # Weight = cost * M + 1 with M above any possible size: minimising the
+        # summed weight minimises cost first and size second.
+        self.size_factor = self.changeable.bit_count() + 1
+        self.weights = {i: self.costs.get(i, 1) * self.size_factor + 1 for i in bits(self.changeable)}
+
+    # -- measures of a change set ---------------------------------------------
+    def weight(self, changes: int) -> int:
+        """Combined cost/size weight of a change set."""
+        return sum(self.weights[i] for i in bits(changes))
+
+    def cost(self, changes: int) -> int:
+        """User-facing cost of a change set (sum of ``--cost`` values, default 1 each)."""
+        return sum(self.costs.get(i, 1) for i in bits(changes))
+
+    def state(self, changes: int) -> int:
+        """The excuse state I' = I Δ E."""
+        return self.task.init ^ changes
+
+    # -- consistency -------------------------------------------------------------
+    def violated(self, state: int) -> list[MutexGroup]:
+        """Groups the state violates (empty under literal semantics)."""
+        return [g for g in self.groups if g.need(state)]
+
+    def consistent(self, state: int) -> bool:
+        """Whether ``state`` keeps every state invariant."""
+        return not any(g.need(state) for g in self.groups)
+
+    def consistency_bound(self, state: int) -> int:
+        """A lower bound on the weight still needed to repair the violated groups."""
+        if not self.groups:
+            return 0
+        min_weight = min(self.weights.values(), default=1)
+        return max((g.need(state) for g in self.groups), default=0) * min_weight
+
+
+def relevance(task: GroundTask, actions: list[GroundAction] | None = None) -> tuple[int, list[GroundAction], int]:
+    """Backward relevance from the goal.
+
+    Returns (relevant atoms, relevant actions, atoms whose *negation* matters).
+    An action is relevant if it changes a relevant atom; its preconditions are
+    then relevant too.  Reachability of the goal only depends on the relevant
+    atoms, so changing any other atom cannot turn a non-excuse into an excuse.
+    """
+    actions = task.actions if actions is None else actions
+    by_atom: dict[int, list[int]] = {}
+    for ai, act in enumerate(actions):
+        for i in bits(act.add | act.delete):
+            by_atom.setdefault(i, []).append(ai)
+    relevant = task.goal_pos | task.goal_neg
+    chosen: set[int] = set()
+    frontier = list(bits(relevant))
+    while frontier:
+        atom = frontier.pop()
+        for ai in by_atom.get(atom, ()):
+            if ai in chosen:
+                continue
+            chosen.add(ai)
+            new = (actions[ai].pre_pos | actions[ai].pre_neg) & ~relevant
+            relevant |= new
+            frontier.extend(bits(new))
+    rel_actions = [actions[ai] for ai in sorted(chosen)]
+    negation = task.goal_neg
+    for act in rel_actions:
+        negation |= act.pre_neg
+    return relevant, rel_actions, negation
+
+
+_COST = re.compile(r"^\s*(\(.*\)|[^=\s]+)\s*=\s*(\S+)\s*$")
+
+
+def parse_costs(specs: list[str], task: GroundTask) -> dict[int, int]:
+    """Per-atom change costs from ``PRED=N`` and ``(atom args)=N`` specifications.
+
+    Atom specifications override predicate ones; everything else costs 1.
+    """
+    pred_costs: dict[str, int] = {}
+    atom_costs: dict[int, int] = {}
+    for spec in specs:
+        match = _COST.match(spec)
+        if not match:
+            raise OptionError(f"--cost '{spec}': expected PRED=N or '(pred arg ...)=N'")
+        target, value = match.group(1), match.group(2)
+        try:
+            number = int(value)
+        except ValueError:
+            raise OptionError(f"--cost '{spec}': cost '{value}' is not a whole number") from None
+        if number < 0:
+            raise OptionError(f"--cost '{spec}': cost must be 0 or more")
+        if target.startswith("("):
+            words = target.strip("()").lower().split()
+            atom = Atom(words[0], tuple(words[1:])) if words else None
+            if atom is None or atom not in task.index:
+                raise OptionError(f"--cost '{spec}': {target} is not a ground atom of this task")
+            atom_costs[task.index[atom]] = number
+        else:
+            pred = target.lower()
+            if pred not in task.domain.predicates:
+                raise OptionError(
+                    f"--cost '{spec}': unknown predicate '{target}' "
+                    f"(expected one of: {', '.join(sorted(task.domain.predicates))})"
+                )
+            pred_costs[pred] = number
+    costs: dict[int, int] = {}
+    for i, atom in enumerate(task.atoms):
+        if atom.predicate in pred_costs:
+            costs[i] = pred_costs[atom.predicate]
+    costs.update(atom_costs)
+    return {i: c for i, c in costs.items() if c != 1}
+
+
+def check_fixed(fixed: list[str], task: GroundTask) -> list[str]:
+    """Validate ``--fixed`` predicate names; returns them lower-cased."""
+    out = []
+    for pred in fixed:
+        name = pred.lower()
+        if name not in task.domain.predicates:
+            raise OptionError(
+                f"--fixed '{pred}': unknown predicate (expected one of: {', '.join(sorted(task.domain.predicates))})"
+            )
+        out.append(name)
+    return out
+
+
+def build_space(
+    task: GroundTask,
+    semantics: Semantics,
+    fixed: list[str] = (),  # type: ignore[assignment]
+    costs: list[str] = (),  # type: ignore[assignment]
+    groups: list[MutexGroup] | None = None,
+) -> ChangeSpace:
+    """Assemble the change space of a ground task."""
+    fixed_preds = set(check_fixed(list(fixed), task))
+    changeable = 0
+    for i, atom in enumerate(task.atoms):
+        if atom.predicate not in fixed_preds and atom.predicate in task.domain.predicates:
+            changeable |= 1 << i
+    relevant, rel_actions, negation = relevance(task)
+    space = ChangeSpace(
+        task=task,
+        semantics=semantics,
+        changeable=changeable,
+        relevant_atoms=relevant,
+        relevant_actions=rel_actions,
+        negation_needed=negation,
+        costs=parse_costs(list(costs), task),
+        groups=list(groups or []) if semantics is Semantics.CONSISTENT else [],
+    )
+    for gi, group in enumerate(space.groups):
+        for i in bits(group.mask):
+            space.groups_of.setdefault(i, []).append(gi)
+    return space

@@ -1,0 +1,231 @@
+"""Excuse search strategies.
+
+Every strategy finds change sets E of minimum weight (cost first, size second)
+such that I Δ E does not satisfy the goal, keeps the invariants (consistent
+semantics) and lets the robot reach the goal.  New strategies register in
+:data:`STRATEGIES`; the test suite runs every registered strategy against
+brute force, so a registration is all a new strategy needs to be checked.
+"""
+
+from __future__ import annotations
+
+import heapq
+import time
+from dataclasses import dataclass, field
+from typing import Callable, Protocol
+
+from guided_lfd.errors import SearchTimeout
+from guided_lfd.excuse.lmcut import INF, RelaxedExcuseTask
+from guided_lfd.excuse.reach import ReachabilityOracle
+from guided_lfd.excuse.space import ChangeSpace
+from guided_lfd.grounding import GroundAction, bits
+
+#: Progress callback: (message, candidates tried so far, current bound).
+Progress = Callable[[str, int, float], None]
+
+
+@dataclass
+class SearchLimits:
+    """What a search may spend and must return."""
+
+    all_minimal: bool = False
+    max_size: int | None = None
+    deadline: float | None = None  # time.monotonic() value
+    max_solutions: int = 1000
+
+
+@dataclass
+class SearchOutcome:
+    """Change sets found (all of minimum weight) and how the search ended.
+
+    ``status`` is ``found``, ``none`` (proved: no excuse exists), ``size-limit``
+    (none within ``max_size``) or ``timeout``.
+    """
+
+    solutions: list[int]
+    plans: dict[int, list[GroundAction]]
+    status: str
+    candidates: int = 0
+    planner_calls: int = 0
+    expanded: int = 0
+    extra: dict[str, int] = field(default_factory=dict)
+
+
+class Strategy(Protocol):
+    """A minimal-excuse search."""
+
+    name: str
+    description: str
+
+    def search(self, space: ChangeSpace, limits: SearchLimits, progress: Progress | None = None) -> SearchOutcome:
+        ...
+
+
+def _timed_out(limits: SearchLimits) -> bool:
+    return limits.deadline is not None and time.monotonic() > limits.deadline
+
+
+class LandmarkSearch:
+    """Best-first search over change sets, guided and pruned by LM-cut.
+
+    Nodes are change sets, ordered by weight + LM-cut bound (A*, admissible, so
+    the first excuse found has minimum weight).  A node branches on a set of
+    changes every excuse extending it must hit: a violated invariant group,
+    else the smallest LM-cut landmark, else (goal already true) the goal
+    atoms, else — the relaxation is satisfied but the real search failed —
+    every relevant change.  Children are scored lazily (parent bound minus
+    the change's weight) and evaluated when popped.  One reachability oracle
+    with dead/alive memory answers all candidates.
+    """
+
+    name = "landmark"
+    description = "A* over change sets with LM-cut bounds and landmark branching (default)"
+
+    def search(self, space: ChangeSpace, limits: SearchLimits, progress: Progress | None = None) -> SearchOutcome:
+        relaxed = RelaxedExcuseTask(space)
+        oracle = ReachabilityOracle(space, limits.deadline)
+        task = space.task
+        weights = space.weights
+        relevant_changes = space.relevant_atoms & space.changeable
+        goal_atoms = (task.goal_pos | task.goal_neg) & space.changeable
+        counter = 0
+        heap: list[tuple[float, int, int, int, bool, float]] = [(0, 0, counter, 0, False, 0)]
+        seen = {0}
+        best: float | None = None
+        solutions: list[int] = []
+        plans: dict[int, list[GroundAction]] = {}
+        candidates = expanded = evaluations = 0
+        size_pruned = False
+        try:
+            while heap:
+                f, neg_g, _, changes, exact, h = heapq.heappop(heap)
+                if best is not None and f > best:
+                    break
+                if _timed_out(limits):
+                    raise SearchTimeout("excuse search exceeded its time limit")
+                g = -neg_g
+                state = task.init ^ changes
+                if not exact:
+                    evaluations += 1
+                    bound = relaxed.bound(state, changes)
+                    h = max(bound.h, space.consistency_bound(state))
+                    if h == INF:
+                        continue
+                    if g + h > f:
+                        counter += 1
+                        heapq.heappush(heap, (g + h, neg_g, counter, changes, True, h))
+                        continue
+                    landmarks = bound.landmarks
+                else:
+                    landmarks = relaxed.bound(state, changes).landmarks
+                expanded += 1
+                if progress and not expanded % 50:
+                    progress("searching", candidates, f)
+                violated = space.violated(state)
+                if violated:
+                    group = min(violated, key=lambda gr: gr.mask.bit_count())
+                    if (state & group.mask).bit_count() > 1:
+                        branch = group.mask & state & ~changes & space.changeable
+                    else:
+                        branch = group.mask & ~state & ~changes & space.changeable
+                elif landmarks:
+                    branch = 0
+                    for i in min(landmarks, key=len):
+                        branch |= 1 << i
+                elif task.satisfies_goal(state):
+                    branch = goal_atoms & ~changes
+                else:
+                    candidates += 1
+                    plan = oracle.solve(state)
+                    if plan is not None:
+                        best = g
+                        solutions.append(changes)
+                        plans[changes] = plan
+                        if not limits.all_minimal or len(solutions) >= limits.max_solutions:
+                            break
+                        continue
+                    branch = relevant_changes & ~changes
+                size = changes.bit_count()
+                if limits.max_size is not None and size + 1 > limits.max_size:
+                    size_pruned = size_pruned or bool(branch)
+                    continue
+                for i in bits(branch):
+                    child = changes | (1 << i)
+                    if child in seen:
+                        continue
+                    seen.add(child)
+                    cg = g + weights[i]
+                    counter += 1
+                    heapq.heappush(heap, (max(f, cg + max(0.0, h - weights[i])), -cg, counter, child, False, 0))
+        except SearchTimeout:
+            return SearchOutcome(solutions, plans, "timeout", candidates, oracle.stats.calls, expanded,
+                                 {"evaluations": evaluations, "oracle_expanded": oracle.stats.expanded})
+        status = "found" if solutions else ("size-limit" if size_pruned else "none")
+        return SearchOutcome(sorted(solutions), plans, status, candidates, oracle.stats.calls, expanded,
+                             {"evaluations": evaluations, "oracle_expanded": oracle.stats.expanded,
+                              "oracle_memo_hits": oracle.stats.memo_hits})
+
+
+class BaselineSearch:
+    """The paper's method: breadth-first over change sets, a planner call each.
+
+    Change sets are enumerated by increasing weight (breadth-first by size for
+    unit costs) over every changeable atom, each generated once (changes added
+    in increasing atom order).  Every candidate whose state does not satisfy
+    the goal (and, for consistent semantics, keeps the invariants) is checked
+    with a fresh pyperplan search (greedy best-first with h_FF) on the full
+    robot task, as the paper's model-space search calls a planner per node.
+    """
+
+    name = "baseline"
+    description = "breadth-first over change sets, one pyperplan call per candidate (the paper's method)"
+
+    def search(self, space: ChangeSpace, limits: SearchLimits, progress: Progress | None = None) -> SearchOutcome:
+        from guided_lfd.planning import find_plan
+
+        task = space.task
+        atoms = list(bits(space.changeable))
+        weights = space.weights
+        heap: list[tuple[int, int, int]] = [(0, 0, -1)]  # (weight, changes, index of last atom)
+        best: int | None = None
+        solutions: list[int] = []
+        plans: dict[int, list[GroundAction]] = {}
+        candidates = calls = 0
+        size_pruned = False
+        try:
+            while heap:
+                w, changes, last = heapq.heappop(heap)
+                if best is not None and w > best:
+                    break
+                if _timed_out(limits):
+                    raise SearchTimeout("excuse search exceeded its time limit")
+                state = task.init ^ changes
+                candidates += 1
+                if progress and not candidates % 200:
+                    progress("baseline", candidates, w)
+                if not task.satisfies_goal(state) and space.consistent(state):
+                    calls += 1
+                    remaining = None if limits.deadline is None else max(0.01, limits.deadline - time.monotonic())
+                    result = find_plan(task, init=state, search="gbfs-hff", time_limit_s=remaining)
+                    if result.plan is not None:
+                        best = w
+                        solutions.append(changes)
+                        plans[changes] = result.plan
+                        if not limits.all_minimal or len(solutions) >= limits.max_solutions:
+                            break
+                        continue
+                if limits.max_size is not None and changes.bit_count() >= limits.max_size:
+                    size_pruned = True
+                    continue
+                for k in range(last + 1, len(atoms)):
+                    i = atoms[k]
+                    heapq.heappush(heap, (w + weights[i], changes | (1 << i), k))
+        except SearchTimeout:
+            return SearchOutcome(solutions, plans, "timeout", candidates, calls, candidates)
+        status = "found" if solutions else ("size-limit" if size_pruned else "none")
+        return SearchOutcome(sorted(solutions), plans, status, candidates, calls, candidates)
+
+
+#: Registered strategies by name; the first is the default.
+STRATEGIES: dict[str, Strategy] = {s.name: s for s in (LandmarkSearch(), BaselineSearch())}
+DEFAULT_STRATEGY = "landmark"

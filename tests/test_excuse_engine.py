@@ -1,0 +1,250 @@
+"""The excuse engine: the paper's examples, the IPC acceptance case, and every
+registered strategy against brute force on random small STRIPS tasks."""
+
+from __future__ import annotations
+
+import itertools
+from collections import deque
+
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from conftest import BLOCKS, kitchen
+from guided_lfd.excuse.check import Change, check_excuse
+from guided_lfd.excuse.engine import ExcuseOptions, find_excuses
+from guided_lfd.excuse.space import Semantics
+from guided_lfd.excuse.strategies import STRATEGIES
+from guided_lfd.pddl.model import Atom, Literal
+from guided_lfd.pddl.reader import parse_domain, parse_task
+from guided_lfd.validate import PlanStep
+
+ALL_STRATEGIES = sorted(STRATEGIES)
+
+
+def changes_of(report):
+    return [[str(c) for c in e.changes] for e in report.excuses]
+
+
+def assert_checked(domain, problem, report):
+    """Re-check every excuse with the independent checker."""
+    groups = report.checked_groups
+    for e in report.excuses:
+        steps = [PlanStep(s[1:-1].split()[0], tuple(s[1:-1].split()[1:])) for s in e.plan]
+        assert check_excuse(domain, problem, e.changes, steps, groups) == []
+
+
+@pytest.mark.parametrize("strategy", ALL_STRATEGIES)
+@pytest.mark.parametrize("semantics", list(Semantics))
+def test_kitchen_1_excuse_is_open_pinkdrawer(strategy, semantics):
+    domain, problem = parse_task(*kitchen(1))
+    report = find_excuses(domain, problem, ExcuseOptions(semantics=semantics, strategy=strategy))
+    assert report.status == "excuse-found"
+    assert changes_of(report) == [["+(open pinkdrawer)"]]
+    assert report.excuse.plan == ["(take redplate table)", "(put_inside redplate pinkdrawer)"]
+    assert_checked(domain, problem, report)
+
+
+@pytest.mark.parametrize("strategy", ALL_STRATEGIES)
+@pytest.mark.parametrize("semantics", list(Semantics))
+def test_kitchen_2_excuse_is_clear_pinkdrawer(strategy, semantics):
+    domain, problem = parse_task(*kitchen(2))
+    report = find_excuses(domain, problem, ExcuseOptions(semantics=semantics, strategy=strategy))
+    assert changes_of(report) == [["+(clear pinkdrawer)"]]
+    assert report.excuse.plan[0] == "(open_drawer pinkdrawer)"
+
+
+def test_kitchen_2_with_human_invariants_moves_the_chair_consistently():
+    domain, problem = parse_task(*kitchen(2))
+    human = parse_domain(kitchen(2, "human")[0])
+    report = find_excuses(domain, problem, ExcuseOptions(invariants_from=human, all_minimal=True))
+    assert report.excuse.size == 4
+    for e in report.excuses:
+        changed = {str(c) for c in e.changes}
+        assert {"+(clear pinkdrawer)", "-(blocking chair pinkdrawer)"} <= changed
+
+
+@pytest.mark.parametrize("strategy", ALL_STRATEGIES)
+def test_blocks_without_unstack_literal_has_six_excuses_of_size_two(strategy):
+    domain, problem = parse_task(BLOCKS / "domain-no-unstack.pddl", BLOCKS / "task03.pddl")
+    report = find_excuses(domain, problem, ExcuseOptions(semantics=Semantics.LITERAL, strategy=strategy, all_minimal=True))
+    assert {e.size for e in report.excuses} == {2}
+    assert len(report.excuses) == 6
+    assert ["+(clear b)", "+(ontable c)"] in changes_of(report)
+
+
+@pytest.mark.parametrize("strategy", ALL_STRATEGIES)
+def test_blocks_without_unstack_consistent_is_exactly_move_c_to_table(strategy):
+    domain, problem = parse_task(BLOCKS / "domain-no-unstack.pddl", BLOCKS / "task03.pddl")
+    report = find_excuses(domain, problem, ExcuseOptions(strategy=strategy, all_minimal=True))
+    assert changes_of(report) == [["+(clear b)", "-(on c b)", "+(ontable c)"]]
+
+
+def test_already_solvable_gives_empty_excuse_and_plan():
+    domain, problem = parse_task(BLOCKS / "domain.pddl", BLOCKS / "task03.pddl")
+    report = find_excuses(domain, problem)
+    assert report.status == "already-solvable" and report.excuses == []
+    assert len(report.robot_plan) == 6
+
+
+def test_no_excuse_names_the_goal_no_skill_achieves(tmp_path):
+    domain, problem = parse_task(*kitchen(1))
+    # Without put_inside nothing makes the plate be inside a drawer.
+    from dataclasses import replace
+
+    crippled = replace(domain, actions=[a for a in domain.actions if a.name != "put_inside"])
+    report = find_excuses(crippled, problem)
+    assert report.status == "no-excuse"
+    assert report.unachievable_goals == [Literal(Atom("inside", ("redplate", "pinkdrawer")))]
+
+
+def test_costs_prefer_cheap_changes_and_fixed_excludes_predicates():
+    domain, problem = parse_task(BLOCKS / "domain-no-unstack.pddl", BLOCKS / "task03.pddl")
+    literal = dict(semantics=Semantics.LITERAL, all_minimal=True)
+    cheap = find_excuses(domain, problem, ExcuseOptions(costs=["clear=5", "holding=0"], **literal))
+    # holding is free, clear is dear: holding b and holding c (cost 0) win.
+    assert changes_of(cheap) == [["+(holding b)", "+(holding c)"]]
+    assert cheap.excuse.cost == 0
+    fixed = find_excuses(domain, problem, ExcuseOptions(fixed=["holding", "clear"], **literal))
+    for e in fixed.excuses:
+        assert not {c.atom.predicate for c in e.changes} & {"holding", "clear"}
+
+
+def test_max_size_too_small_reports_limit():
+    domain, problem = parse_task(BLOCKS / "domain-no-unstack.pddl", BLOCKS / "task03.pddl")
+    report = find_excuses(domain, problem, ExcuseOptions(max_size=2))
+    assert report.status == "no-excuse-within-size"
+
+
+# --- property tests: every strategy == brute force on random small tasks ------------
+
+OBJECTS = ("o1", "o2")
+
+
+@st.composite
+def small_tasks(draw):
+    """A random typed STRIPS task as PDDL text: 0/1-ary predicates, 2 domain constants."""
+    n_props = draw(st.integers(1, 2))
+    n_unary = draw(st.integers(1, 2))
+    props = [f"p{i}" for i in range(n_props)]
+    unary = [f"u{i}" for i in range(n_unary)]
+
+    def lits(param: str | None):
+        atoms = [f"({p})" for p in props]
+        atoms += [f"({u} {o})" for u in unary for o in OBJECTS]
+        if param:
+            atoms += [f"({u} {param})" for u in unary]
+        return atoms
+
+    actions = []
+    for k in range(draw(st.integers(1, 4))):
+        param = draw(st.sampled_from([None, "?x"]))
+        pool = lits(param)
+        pre = draw(st.lists(st.sampled_from(pool), max_size=2, unique=True))
+        neg = draw(st.lists(st.sampled_from([a for a in pool if a not in pre] or pool), max_size=1, unique=True))
+        neg = [a for a in neg if a not in pre]
+        if len(pool) > 1 and draw(st.booleans()):
+            # A "move": consume one atom, produce another (induces mutex invariants).
+            src, dst = draw(st.lists(st.sampled_from(pool), min_size=2, max_size=2, unique=True))
+            pre = sorted(set(pre) | {src})
+            neg = [a for a in neg if a not in (src, dst)]
+            add, dele = [dst], [src]
+        else:
+            add = draw(st.lists(st.sampled_from(pool), min_size=1, max_size=2, unique=True))
+            dele = draw(st.lists(st.sampled_from([a for a in pool if a not in add] or pool), max_size=2, unique=True))
+            dele = [a for a in dele if a not in add]
+        params = f"(?x - obj)" if param else "()"
+        precondition = " ".join(pre + [f"(not {a})" for a in neg])
+        effect = " ".join(add + [f"(not {a})" for a in dele])
+        actions.append(f"(:action a{k} :parameters {params} :precondition (and {precondition}) :effect (and {effect}))")
+    all_atoms = lits(None)
+    init = draw(st.lists(st.sampled_from(all_atoms), max_size=4, unique=True))
+    goal = draw(st.lists(st.sampled_from(all_atoms), min_size=1, max_size=3, unique=True))
+    preds = " ".join([f"({p})" for p in props] + [f"({u} ?x - obj)" for u in unary])
+    domain = (f"(define (domain rnd) (:requirements :strips :typing :negative-preconditions) (:types obj) "
+              f"(:constants {' '.join(OBJECTS)} - obj) (:predicates {preds}) {' '.join(actions)})")
+    problem = (f"(define (problem r) (:domain rnd) "
+               f"(:init {' '.join(init)}) (:goal (and {' '.join(goal)})))")
+    return domain, problem
+
+
+def brute_force(domain, problem, groups, max_size=3):
+    """All minimal excuses by enumeration, with an independent BFS for reachability."""
+    from guided_lfd.grounding import ground_atoms
+
+    atoms = ground_atoms(domain, problem)
+    ground_actions = []
+    for act in domain.actions:
+        choices = [OBJECTS] * len(act.params)
+        for args in itertools.product(*choices):
+            b = {v: a for (v, _), a in zip(act.params, args)}
+            ground_actions.append((
+                {l.atom.substitute(b) for l in act.precondition if l.positive},
+                {l.atom.substitute(b) for l in act.precondition if not l.positive},
+                {a.substitute(b) for a in act.add},
+                {a.substitute(b) for a in act.delete},
+            ))
+
+    def goal_holds(s):
+        return all((l.atom in s) == l.positive for l in problem.goal)
+
+    def reachable(s0):
+        seen = {s0}
+        queue = deque([s0])
+        while queue:
+            s = queue.popleft()
+            if goal_holds(s):
+                return True
+            for pre, neg, add, dele in ground_actions:
+                if pre <= s and not (neg & s):
+                    t = frozenset((s - dele) | add)
+                    if t not in seen:
+                        seen.add(t)
+                        queue.append(t)
+        return False
+
+    def consistent(s):
+        for members, exactly in groups:
+            n = len(members & s)
+            if n > 1 or (exactly and n == 0):
+                return False
+        return True
+
+    init = frozenset(problem.init)
+    for size in range(0, min(max_size, len(atoms)) + 1):
+        found = []
+        for combo in itertools.combinations(atoms, size):
+            s = frozenset(init.symmetric_difference(combo))
+            if (size == 0 or not goal_holds(s)) and consistent(s) and reachable(s):
+                found.append(sorted(str(Change(a, a not in init)) for a in combo))
+        if found:
+            return size, sorted(found)
+    return None, []
+
+
+@pytest.mark.parametrize("strategy", ALL_STRATEGIES)
+@pytest.mark.parametrize("semantics", list(Semantics))
+@settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow, HealthCheck.function_scoped_fixture])
+@given(pddl=small_tasks())
+def test_strategy_matches_brute_force(tmp_path_factory, strategy, semantics, pddl):
+    folder = tmp_path_factory.mktemp("rnd")
+    (folder / "d.pddl").write_text(pddl[0])
+    (folder / "p.pddl").write_text(pddl[1])
+    domain, problem = parse_task(folder / "d.pddl", folder / "p.pddl")
+    report = find_excuses(domain, problem, ExcuseOptions(semantics=semantics, strategy=strategy,
+                                                         all_minimal=True, max_size=3))
+    groups = report.checked_groups
+    size, expected = brute_force(domain, problem, groups)
+    if size == 0:
+        assert report.status == "already-solvable"
+    elif size is None:
+        assert report.status in ("no-excuse", "no-excuse-within-size")
+        if report.status == "no-excuse":  # a proof: check it over every change set
+            assert brute_force(domain, problem, groups, max_size=10**6)[0] is None
+    else:
+        assert report.status == "excuse-found"
+        assert {e.size for e in report.excuses} == {size}
+        assert sorted(sorted(str(c) for c in e.changes) for e in report.excuses) == expected
+        for e in report.excuses:
+            steps = [PlanStep(s[1:-1].split()[0], tuple(s[1:-1].split()[1:])) for s in e.plan]
+            assert check_excuse(domain, problem, e.changes, steps, groups) == []
