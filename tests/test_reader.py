@@ -86,3 +86,11 @@ def test_exit_codes_are_distinct_and_documented():
     codes = [c.exit_code for c in classes]
     assert len(set(codes)) == len(codes)
     assert all(code in errors.EXIT_CODES for code in codes)
+
+
+def test_readme_documents_every_exit_code():
+    from conftest import ROOT
+
+    readme = (ROOT / "README.md").read_text()
+    for code in errors.EXIT_CODES:
+        assert f"\n| {code} |" in readme, f"exit code {code} missing from README"
