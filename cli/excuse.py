@@ -52,6 +52,11 @@ def excuse(
         str | None, typer.Option("--invariants-from", metavar="DOMAIN",
                                  help="Take the consistent semantics' invariants from this domain (e.g. the human's).")
     ] = None,
+    fixed_from: Annotated[
+        str | None, typer.Option("--fixed-from", metavar="DOMAIN",
+                                 help="Also fix every predicate no action of DOMAIN changes "
+                                      "(e.g. the human's domain: the world's unchangeable structure).")
+    ] = None,
     excuse_problem: Annotated[
         str | None, typer.Option("--excuse-problem", metavar="FILE",
                                  help="Also write the problem with the excuse state as its initial state.")
@@ -71,6 +76,7 @@ def excuse(
         semantics=semantics, strategy=strategy, fixed=list(fixed or []), costs=list(cost or []),
         all_minimal=all_minimal, max_size=max_size, time_limit=time_limit,
         invariants_from=parse_domain(invariants_from) if invariants_from else None,
+        fixed_from=parse_domain(fixed_from) if fixed_from else None,
     )
     report = _run(dom, prob, options)
     spellings = {**prob.spellings, **dom.spellings}  # predicates as the domain writes them

@@ -112,14 +112,16 @@ def ground(
     preconditions on them are false are pruned (as a planner's grounder does).
     ``actions`` overrides the domain's action list (e.g. with a skill removed).
     """
-    atoms = ground_atoms(domain, problem)
+    static = static_predicates(domain) & set(fixed)
+    # Atoms of fixed static predicates keep their initial value in every state
+    # considered: only the true ones need an index (a planner's grounding).
+    atoms = [a for a in ground_atoms(domain, problem) if a.predicate not in static or a in problem.init]
     known = set(atoms)
     for atom in sorted(problem.init):
         if atom not in known:
             # Type-incorrect init atoms are kept, so that nothing the user wrote is dropped.
             atoms.append(atom)
     index = {a: i for i, a in enumerate(atoms)}
-    static = static_predicates(domain) & set(fixed)
     schemas = domain.actions if actions is None else actions
     by_type = objects_by_type(domain, problem)
     ground_actions: list[GroundAction] = []
@@ -148,31 +150,7 @@ def _ground_schema(
     static: set[str],
 ) -> Iterable[GroundAction]:
     params = [v for v, _ in schema.params]
-    domains = [by_type.get(t, []) for _, t in schema.params]
-    # Check each precondition literal as soon as all its variables are bound.
-    checks: list[list[Literal]] = [[] for _ in params]
-    always: list[Literal] = []
-    position = {v: i for i, v in enumerate(params)}
-    for lit in schema.precondition:
-        if lit.atom.predicate != EQUALITY and lit.atom.predicate not in static:
-            continue
-        positions = [position[a] for a in lit.atom.args if a in position]
-        (checks[max(positions)] if positions else always).append(lit)
-    binding: dict[str, str] = {}
-    if not all(_holds(lit, binding, init) for lit in always):
-        return
-
-    def rec(i: int):
-        if i == len(params):
-            yield dict(binding)
-            return
-        for obj in domains[i]:
-            binding[params[i]] = obj
-            if all(_holds(lit, binding, init) for lit in checks[i]):
-                yield from rec(i + 1)
-        binding.pop(params[i], None)
-
-    for b in rec(0):
+    for b in _bindings(schema, by_type, init, static):
         pre_pos = pre_neg = add = delete = 0
         ok = True
         for lit in schema.precondition:
@@ -201,6 +179,70 @@ def _ground_schema(
         args = tuple(b[v] for v in params)
         name = "(" + " ".join((schema.name, *args)) + ")"
         yield GroundAction(name, schema.name, args, pre_pos, pre_neg, add, delete)
+
+
+def _bindings(
+    schema: ActionSchema, by_type: dict[str, list[str]], init: frozenset[Atom], static: set[str]
+) -> Iterable[dict[str, str]]:
+    """Parameter bindings that satisfy the static and equality preconditions.
+
+    A join: positive static preconditions are matched against the initial
+    atoms of their predicate (smallest relation first), the remaining
+    parameters range over their type, and negative static and equality
+    literals are checked as soon as their variables are bound.
+    """
+    params = [v for v, _ in schema.params]
+    type_sets = {v: set(by_type.get(t, [])) for v, t in schema.params}
+    relations: dict[str, list[tuple[str, ...]]] = {}
+    for atom in init:
+        if atom.predicate in static:
+            relations.setdefault(atom.predicate, []).append(atom.args)
+    joins = sorted(
+        (lit for lit in schema.precondition if lit.positive and lit.atom.predicate in static),
+        key=lambda lit: len(relations.get(lit.atom.predicate, ())),
+    )
+    checks = [
+        lit for lit in schema.precondition
+        if lit.atom.predicate == EQUALITY or (not lit.positive and lit.atom.predicate in static)
+    ]
+
+    def consistent(binding: dict[str, str]) -> bool:
+        for lit in checks:
+            if all(not a.startswith("?") or a in binding for a in lit.atom.args):
+                if not _holds(lit, binding, init):
+                    return False
+        return True
+
+    def join(k: int, binding: dict[str, str]):
+        if k == len(joins):
+            free = [v for v in params if v not in binding]
+            for values in product(*(sorted(type_sets[v]) for v in free)):
+                full = {**binding, **dict(zip(free, values))}
+                if consistent(full):
+                    yield full
+            return
+        lit = joins[k]
+        for args in relations.get(lit.atom.predicate, ()):
+            new = dict(binding)
+            for term, value in zip(lit.atom.args, args):
+                if term.startswith("?"):
+                    if new.get(term, value) != value or value not in type_sets.get(term, ()):
+                        break
+                    new[term] = value
+                elif term != value:
+                    break
+            else:
+                if consistent(new):
+                    yield from join(k + 1, new)
+
+    if not consistent({}):
+        return
+    seen: set[tuple[str, ...]] = set()
+    for binding in join(0, {}):
+        key = tuple(binding[v] for v in params)
+        if key not in seen:
+            seen.add(key)
+            yield binding
 
 
 def _holds(lit: Literal, binding: dict[str, str], init: frozenset[Atom]) -> bool:

@@ -136,3 +136,13 @@ def test_time_limit_is_honoured(runner, app):
                  "--time-limit", "0.001")
     assert result.exit_code == 20
     assert "time limit reached" in result.stderr
+
+
+def test_fixed_from_fixes_what_no_action_of_that_domain_changes(runner, app):
+    # graspable is static in the human's domain: the excuse may not touch it.
+    result = run(runner, app, *kitchen(1), "--fixed-from", kitchen(1, "human")[0], "--semantics", "literal", "--all", "--json")
+    doc = json.loads(result.stdout)
+    assert result.exit_code == 0
+    every = [doc["excuse"], *doc["alternatives"]]
+    assert all("graspable" not in c["atom"] for e in every for c in e["changes"])
+    assert doc["statistics"]["changeable_atoms"] < json.loads(run(runner, app, *kitchen(1), "--json").stdout)["statistics"]["changeable_atoms"]

@@ -38,7 +38,16 @@ class ExcuseOptions:
     max_size: int | None = None
     time_limit: float | None = None
     invariants_from: Domain | None = None
+    fixed_from: Domain | None = None
     optimal_plans: bool = True
+
+    def fixed_predicates(self, domain: Domain) -> list[str]:
+        """``fixed`` plus the predicates no action of ``fixed_from`` changes (that ``domain`` has)."""
+        out = list(self.fixed)
+        if self.fixed_from is not None:
+            static = set(self.fixed_from.predicates) - self.fixed_from.fluent_predicates()
+            out += sorted(p for p in static if p in domain.predicates and p not in out)
+        return out
 
 
 @dataclass
@@ -138,13 +147,14 @@ def find_excuses(
         raise OptionError(f"unknown strategy '{options.strategy}' (expected one of: {', '.join(STRATEGIES)})")
     start = time.monotonic()
     deadline = None if options.time_limit is None else start + options.time_limit
-    task = ground(domain, problem, fixed=options.fixed)
+    fixed = options.fixed_predicates(domain)
+    task = ground(domain, problem, fixed=fixed)
     groups: list[MutexGroup] = []
     if options.semantics is Semantics.CONSISTENT:
         from guided_lfd.excuse.invariants import mutex_groups
 
         groups = mutex_groups(options.invariants_from or domain, task)
-    space = build_space(task, options.semantics, options.fixed, options.costs, groups)
+    space = build_space(task, options.semantics, fixed, options.costs, groups)
     stats: dict[str, Any] = {
         "ground_atoms": len(task.atoms),
         "ground_actions": len(task.actions),

@@ -61,6 +61,13 @@ class Strategy(Protocol):
         ...
 
 
+def _mask(indices: list[int]) -> int:
+    out = 0
+    for i in indices:
+        out |= 1 << i
+    return out
+
+
 def _timed_out(limits: SearchLimits) -> bool:
     return limits.deadline is not None and time.monotonic() > limits.deadline
 
@@ -68,14 +75,18 @@ def _timed_out(limits: SearchLimits) -> bool:
 class LandmarkSearch:
     """Best-first search over change sets, guided and pruned by LM-cut.
 
-    Nodes are change sets, ordered by weight + LM-cut bound (A*, admissible, so
+    Nodes are change sets, ordered by weight + an admissible bound (A*, so
     the first excuse found has minimum weight).  A node branches on a set of
-    changes every excuse extending it must hit: a violated invariant group,
-    else the smallest LM-cut landmark, else (goal already true) the goal
-    atoms, else — the relaxation is satisfied but the real search failed —
-    every relevant change.  Children are scored lazily (parent bound minus
-    the change's weight) and evaluated when popped.  One reachability oracle
-    with dead/alive memory answers all candidates.
+    changes every excuse extending it must hit: a violated invariant group or
+    an LM-cut landmark (the smaller), else, when the relaxation is satisfied,
+    on the goal atoms (if the state already satisfies the goal), else on every
+    relevant change if the real reachability check fails.
+
+    Landmarks are inherited: a landmark of a node that the child's change does
+    not hit is still a landmark of the child, and the LM-cut cost partition
+    restricted to the inherited landmarks is still admissible.  LM-cut is only
+    recomputed when a node has no landmark left.  One reachability oracle with
+    dead/alive memory answers all candidates.
     """
 
     name = "landmark"
@@ -88,8 +99,11 @@ class LandmarkSearch:
         weights = space.weights
         relevant_changes = space.relevant_atoms & space.changeable
         goal_atoms = (task.goal_pos | task.goal_neg) & space.changeable
+        # Heap entries: (f, -g, tie, changes); per node its inherited landmarks
+        # as (mask of changes, cost share) pairs, or None = compute afresh.
         counter = 0
-        heap: list[tuple[float, int, int, int, bool, float]] = [(0, 0, counter, 0, False, 0)]
+        heap: list[tuple[float, int, int, int]] = [(0, 0, 0, 0)]
+        inherited: dict[int, list[tuple[int, int]] | None] = {0: None}
         seen = {0}
         best: float | None = None
         solutions: list[int] = []
@@ -98,29 +112,30 @@ class LandmarkSearch:
         size_pruned = False
         try:
             while heap:
-                f, neg_g, _, changes, exact, h = heapq.heappop(heap)
+                f, neg_g, _, changes = heapq.heappop(heap)
                 if best is not None and f > best:
                     break
                 if _timed_out(limits):
                     raise SearchTimeout("excuse search exceeded its time limit")
                 g = -neg_g
                 state = task.init ^ changes
-                if not exact:
+                landmarks = inherited.pop(changes)
+                if not landmarks:
                     evaluations += 1
                     bound = relaxed.bound(state, changes)
-                    h = max(bound.h, space.consistency_bound(state))
-                    if h == INF:
+                    if bound.h == INF:
                         continue
+                    landmarks = [(_mask(l), m) for l, m in zip(bound.landmarks, bound.costs)]
+                    h = max(bound.h, space.consistency_bound(state))
                     if g + h > f:
                         counter += 1
-                        heapq.heappush(heap, (g + h, neg_g, counter, changes, True, h))
+                        inherited[changes] = landmarks
+                        heapq.heappush(heap, (g + h, neg_g, counter, changes))
                         continue
-                    landmarks = bound.landmarks
-                else:
-                    landmarks = relaxed.bound(state, changes).landmarks
                 expanded += 1
                 if progress and not expanded % 50:
                     progress("searching", candidates, f)
+                branch = 0
                 violated = space.violated(state)
                 if violated:
                     group = min(violated, key=lambda gr: gr.mask.bit_count())
@@ -128,23 +143,26 @@ class LandmarkSearch:
                         branch = group.mask & state & ~changes & space.changeable
                     else:
                         branch = group.mask & ~state & ~changes & space.changeable
-                elif landmarks:
-                    branch = 0
-                    for i in min(landmarks, key=len):
-                        branch |= 1 << i
-                elif task.satisfies_goal(state):
-                    branch = goal_atoms & ~changes
-                else:
-                    candidates += 1
-                    plan = oracle.solve(state)
-                    if plan is not None:
-                        best = g
-                        solutions.append(changes)
-                        plans[changes] = plan
-                        if not limits.all_minimal or len(solutions) >= limits.max_solutions:
-                            break
-                        continue
-                    branch = relevant_changes & ~changes
+                    if not branch:
+                        continue  # the group cannot be repaired any more
+                if landmarks:
+                    smallest = min((lm for lm, _ in landmarks), key=int.bit_count)
+                    if not branch or smallest.bit_count() < branch.bit_count():
+                        branch = smallest
+                elif not violated:
+                    if task.satisfies_goal(state):
+                        branch = goal_atoms & ~changes
+                    else:
+                        candidates += 1
+                        plan = oracle.solve(state)
+                        if plan is not None:
+                            best = g
+                            solutions.append(changes)
+                            plans[changes] = plan
+                            if not limits.all_minimal or len(solutions) >= limits.max_solutions:
+                                break
+                            continue
+                        branch = relevant_changes & ~changes
                 size = changes.bit_count()
                 if limits.max_size is not None and size + 1 > limits.max_size:
                     size_pruned = size_pruned or bool(branch)
@@ -154,9 +172,12 @@ class LandmarkSearch:
                     if child in seen:
                         continue
                     seen.add(child)
+                    kept = [(lm, m) for lm, m in landmarks if not (lm >> i) & 1] if landmarks else []
                     cg = g + weights[i]
+                    h_child = max(sum(m for _, m in kept), space.consistency_bound(task.init ^ child))
                     counter += 1
-                    heapq.heappush(heap, (max(f, cg + max(0.0, h - weights[i])), -cg, counter, child, False, 0))
+                    inherited[child] = kept
+                    heapq.heappush(heap, (max(f, cg + h_child), -cg, counter, child))
         except SearchTimeout:
             return SearchOutcome(solutions, plans, "timeout", candidates, oracle.stats.calls, expanded,
                                  {"evaluations": evaluations, "oracle_expanded": oracle.stats.expanded})

@@ -124,7 +124,7 @@ def _tarski_parse(reader, kind: str, src: SourceMap) -> None:
     fd, tmp = tempfile.mkstemp(suffix=".pddl", text=True)
     try:
         with os.fdopen(fd, "w", encoding="utf-8") as fh:
-            fh.write(src.text)
+            fh.write(src.text_with_types_parents_first())
         with _quiet_tarski():
             if kind == "domain":
                 reader.parse_domain(tmp)

@@ -57,6 +57,8 @@ class SExpr:
     line: int
     col: int
     items: list["SExpr | Token"] = field(default_factory=list)
+    start: int = 0  # character offsets of '(' and of the matching ')'
+    end: int = 0
 
     def head(self) -> str | None:
         """The lower-cased first token, if the list starts with a token."""
@@ -113,7 +115,7 @@ class SourceMap:
             line = bisect.bisect_right(line_starts, offset)
             col = offset - line_starts[line - 1] + 1
             if tok == "(":
-                node = SExpr(line, col)
+                node = SExpr(line, col, start=offset)
                 if stack:
                     stack[-1].items.append(node)
                 else:
@@ -122,7 +124,7 @@ class SourceMap:
             elif tok == ")":
                 if not stack:
                     raise PddlSyntaxError("unexpected ')' with no matching '('", self.location(line, col))
-                stack.pop()
+                stack.pop().end = offset
             else:
                 if not stack:
                     raise PddlSyntaxError(
@@ -187,6 +189,54 @@ class SourceMap:
         if tok is not None:
             return self.location(tok.line, tok.col)
         return self.location(self.define().line, self.define().col)
+
+    def text_with_types_parents_first(self) -> str:
+        """The text with the ``:types`` section reordered so parents come first.
+
+        PDDL allows ``(:types truck - vehicle vehicle - object)``; tarski needs
+        ``vehicle`` declared before it is used as a parent.  Line breaks are
+        kept, so positions outside the section do not move.
+        """
+        section = self.section(":types")
+        if section is None:
+            return self.text
+        names: list[str] = []
+        parent: dict[str, str] = {}
+        pending: list[str] = []
+        items = section.items[1:]
+        i = 0
+        while i < len(items):
+            item = items[i]
+            if isinstance(item, Token) and item.text == "-" and i + 1 < len(items) and isinstance(items[i + 1], Token):
+                for name in pending:
+                    parent[name] = items[i + 1].text  # type: ignore[union-attr]
+                pending = []
+                i += 2
+                continue
+            if not isinstance(item, Token):
+                return self.text  # '(either ...)': leave it for the feature check
+            names.append(item.text)
+            pending.append(item.text)
+            i += 1
+        lower = {n.lower() for n in names}
+        ordered: list[str] = []
+        done: set[str] = set()
+        while len(ordered) < len(names):
+            progress = False
+            for name in names:
+                if name in done:
+                    continue
+                up = parent.get(name)
+                if up is None or up.lower() not in lower or up in done or up.lower() == name.lower():
+                    ordered.append(name)
+                    done.add(name)
+                    progress = True
+            if not progress:
+                return self.text  # a cycle: let the parser complain
+        decl = " ".join(f"{n} - {parent[n]}" if n in parent else n for n in ordered)
+        old = self.text[section.start : section.end + 1]
+        new = f"(:types {decl}" + "\n" * old.count("\n") + ")"
+        return self.text[: section.start] + new + self.text[section.end + 1 :]
 
     def spellings(self) -> dict[str, str]:
         """Map lower-case names to their first spelling in the file (``PinkDrawer``)."""
