@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import functools
+import math
 import os
 import sys
 from typing import Annotated, Callable, TypeVar
@@ -10,7 +11,8 @@ from typing import Annotated, Callable, TypeVar
 import typer
 from rich.console import Console
 
-from guided_lfd.errors import EXIT_INTERNAL, GuidedLfdError
+from guided_lfd.errors import EXIT_INTERNAL, GuidedLfdError, OptionError
+from guided_lfd.io import write_text
 
 F = TypeVar("F", bound=Callable)
 
@@ -41,8 +43,37 @@ QuietOption = Annotated[bool, typer.Option("--quiet", "-q", help="No diagnostics
 JsonOption = Annotated[bool, typer.Option("--json", help="Write a versioned JSON document instead of text.")]
 OutputOption = Annotated[str, typer.Option("--output", "-o", help="Write the result here ('-' = stdout). Written atomically.")]
 TimeLimitOption = Annotated[
-    float | None, typer.Option("--time-limit", min=0.0, help="Give up after this many seconds (exit 20).")
+    float | None, typer.Option("--time-limit", help="Give up after this many seconds (exit 20).")
 ]
+
+#: Longest time limit accepted (about 11 days); beyond it timers overflow.
+MAX_TIME_LIMIT = 1e6
+
+
+def check_time_limit(value: float | None) -> float | None:
+    """A usable --time-limit: finite, positive, at most :data:`MAX_TIME_LIMIT`."""
+    if value is None:
+        return None
+    if not math.isfinite(value) or value <= 0 or value > MAX_TIME_LIMIT:
+        raise OptionError(f"--time-limit {value:g}: expected a number of seconds > 0 and <= {MAX_TIME_LIMIT:g}")
+    return value
+
+
+def check_inputs(*paths: str) -> None:
+    """Standard input can be read once: refuse ``-`` for two inputs."""
+    if sum(1 for p in paths if p == "-") > 1:
+        raise OptionError("'-' (standard input) can stand for only one input file")
+
+
+def emit(output: str, text: str, success: bool) -> None:
+    """Write a result; a failed run never replaces an existing output file.
+
+    On failure the document still goes to stdout when that is the output.
+    """
+    if success or output == "-":
+        write_text(output, text)
+    else:
+        ui.info(f"[dim]{output} not written: the run did not succeed[/]")
 
 
 def command(fn: F) -> F:

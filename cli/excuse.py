@@ -7,12 +7,14 @@ from typing import Annotated, Any
 import typer
 from rich.progress import Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
 
-from cli.common import JsonOption, OutputOption, QuietOption, TimeLimitOption, command, ui
+from cli.common import (
+    JsonOption, OutputOption, QuietOption, TimeLimitOption, check_inputs, check_time_limit, command, emit, ui,
+)
 from guided_lfd import errors
 from guided_lfd.excuse.engine import Excuse, ExcuseOptions, ExcuseReport, describe_change, find_excuses
 from guided_lfd.excuse.space import Semantics
 from guided_lfd.excuse.strategies import DEFAULT_STRATEGY, STRATEGIES
-from guided_lfd.io import json_document, write_text
+from guided_lfd.io import check_writable, json_document, write_text
 from guided_lfd.pddl.model import Problem
 from guided_lfd.pddl.reader import parse_domain, parse_task
 from guided_lfd.pddl.writer import problem_to_pddl
@@ -47,7 +49,7 @@ def excuse(
                                             "Total cost is minimised, ties broken by size.")
     ] = None,
     all_minimal: Annotated[bool, typer.Option("--all", help="List every minimal excuse, not just the first.")] = False,
-    max_size: Annotated[int | None, typer.Option("--max-size", min=0, help="Give up beyond this many changes (exit 13).")] = None,
+    max_size: Annotated[int | None, typer.Option("--max-size", help="Give up beyond this many changes (exit 13).")] = None,
     invariants_from: Annotated[
         str | None, typer.Option("--invariants-from", metavar="DOMAIN",
                                  help="Take the consistent semantics' invariants from this domain (e.g. the human's).")
@@ -69,11 +71,17 @@ def excuse(
     """Find a minimal excuse: the smallest change to the initial state after which the robot's
     own skills reach the goal. The human then only demonstrates how to reach it."""
     if strategy not in STRATEGIES:
-        raise typer.BadParameter(f"unknown strategy '{strategy}', expected one of: {', '.join(STRATEGIES)}",
-                                 param_hint="--strategy")
+        raise errors.OptionError(f"--strategy {strategy}: unknown strategy (expected one of: {', '.join(STRATEGIES)})")
+    if max_size is not None and max_size < 0:
+        raise errors.OptionError(f"--max-size {max_size}: expected a number of changes >= 0")
+    time_limit = check_time_limit(time_limit)
+    check_inputs(domain, problem, *(p for p in (invariants_from, fixed_from) if p))
+    check_writable(output)
+    if excuse_problem:
+        check_writable(excuse_problem)
     dom, prob = parse_task(domain, problem)
     options = ExcuseOptions(
-        semantics=semantics, strategy=strategy, fixed=list(fixed or []), costs=list(cost or []),
+        semantics=semantics, strategy=strategy, fixed=[f.lower() for f in fixed or []], costs=list(cost or []),
         all_minimal=all_minimal, max_size=max_size, time_limit=time_limit,
         invariants_from=parse_domain(invariants_from) if invariants_from else None,
         fixed_from=parse_domain(fixed_from) if fixed_from else None,
@@ -85,7 +93,8 @@ def excuse(
         text = json_document("excuse", _document(report, domain, problem, spellings))
     else:
         text = _text(report, prob, spellings)
-    write_text(output, text)
+    code = EXIT_BY_STATUS[report.status]
+    emit(output, text, success=code == errors.EXIT_OK)
     if excuse_problem and report.excuse is not None:
         header = (f"Excuse state of {problem} for {domain} ({report.semantics.value} semantics):\n"
                   + "\n".join(f"  {c}" for c in report.excuse.changes))
@@ -93,7 +102,6 @@ def excuse(
     stats = report.statistics
     ui.info(f"[dim]{report.strategy} search: {stats.get('candidates', 0)} candidate(s), "
             f"{stats.get('planner_calls', 0)} reachability check(s), {stats['time_s']:.2f} s[/]")
-    code = EXIT_BY_STATUS[report.status]
     if code:
         ui.error(_summary(report, spellings))
         raise typer.Exit(code)
@@ -115,11 +123,14 @@ def _run(dom, prob, options: ExcuseOptions) -> ExcuseReport:
 
 def _summary(report: ExcuseReport, spellings: dict[str, str]) -> str:
     if report.status == "no-excuse":
+        fixed = report.statistics.get("fixed_predicates") or []
+        while_fixed = f" while {', '.join(fixed)} stay fixed" if fixed else ""
         if report.unachievable_goals:
             goals = ", ".join(str(g) for g in report.unachievable_goals)
-            return (f"no excuse exists: no robot skill achieves {goals}, and no change of the initial state "
-                    f"short of satisfying the goal helps; a new skill must be demonstrated")
-        return "no excuse exists: no change of the initial state lets the robot reach the goal; a new skill must be demonstrated"
+            return (f"no excuse exists: no robot skill achieves {goals}{while_fixed}, and no change of the initial "
+                    f"state short of satisfying the goal helps; a new skill must be demonstrated")
+        return (f"no excuse exists: no change of the initial state lets the robot reach the goal{while_fixed}; "
+                "a new skill must be demonstrated")
     if report.status == "no-excuse-within-size":
         return "no excuse within --max-size; a larger change or a new skill is needed"
     if report.status == "timeout":

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import sys
 from typing import Annotated
 
 import typer
@@ -10,6 +11,24 @@ from cli.excuse import excuse
 from cli.plan import plan
 from cli.validate import validate
 from guided_lfd import __version__
+
+def _one_line_usage_errors() -> None:
+    """Typer prints usage errors as a usage block; guided-lfd promises one line."""
+    try:
+        from typer._click import exceptions as click_exceptions
+    except ImportError:  # a typer without its vendored click: keep its format
+        return
+
+    def show(self, file=None) -> None:
+        out = file or sys.stderr
+        command = self.ctx.command_path if getattr(self, "ctx", None) is not None else "guided-lfd"
+        message = " ".join(self.format_message().split())
+        out.write(f"{command}: usage error: {message} (see --help)\n")
+
+    click_exceptions.UsageError.show = show  # type: ignore[method-assign]
+
+
+_one_line_usage_errors()
 
 app = typer.Typer(
     name="guided-lfd",

@@ -6,9 +6,11 @@ from typing import Annotated
 
 import typer
 
-from cli.common import JsonOption, OutputOption, QuietOption, TimeLimitOption, command, ui
-from guided_lfd.errors import EXIT_UNSOLVABLE
-from guided_lfd.io import json_document, write_text
+from cli.common import (
+    JsonOption, OutputOption, QuietOption, TimeLimitOption, check_inputs, check_time_limit, command, emit, ui,
+)
+from guided_lfd.errors import EXIT_UNSOLVABLE, OptionError
+from guided_lfd.io import check_writable, json_document, write_text
 from guided_lfd.pddl.reader import parse_task
 from guided_lfd.planning import DEFAULT_SEARCH, SEARCHES, plan_task
 from guided_lfd.validate import PlanStep, format_plan, validate_plan
@@ -28,24 +30,25 @@ def plan(
 ) -> None:
     """Plan with pyperplan; print the plan in IPC format (exit 10 if unsolvable)."""
     if search not in SEARCHES:
-        raise typer.BadParameter(f"unknown search '{search}', expected one of: {', '.join(SEARCHES)}", param_hint="--search")
+        raise OptionError(f"--search {search}: unknown search (expected one of: {', '.join(SEARCHES)})")
+    time_limit = check_time_limit(time_limit)
+    check_inputs(domain, problem)
+    check_writable(output)
     dom, prob = parse_task(domain, problem)
     task, result = plan_task(dom, prob, search, time_limit)
     if result.plan is None:
-        ui.info(f"[bold red]unsolvable[/]: exhaustive {search} search found no plan ({result.time_s:.2f} s)")
         if json_out:
-            write_text(output, json_document("plan", {
+            emit(output, json_document("plan", {
                 "domain": domain, "problem": problem, "status": "unsolvable", "plan": None,
                 "search": search, "time_s": round(result.time_s, 4),
-            }))
+            }), success=False)
+        ui.error(f"unsolvable: exhaustive {search} search found no plan ({result.time_s:.2f} s)")
         raise typer.Exit(EXIT_UNSOLVABLE)
     steps = [PlanStep(a.schema, a.args) for a in result.plan]
     report = validate_plan(dom, prob.init, prob.goal, steps)
     if not report.valid:  # the planner and the validator disagree: a bug
         raise RuntimeError("planner returned a plan that does not validate")
     names = [a.name for a in result.plan]
-    ui.info(f"plan of length {len(names)} found by {search} in {result.time_s:.2f} s"
-            + (" (optimal)" if result.optimal else "") + ", validated")
     if json_out:
         text = json_document("plan", {
             "domain": domain, "problem": problem, "status": "solved", "plan": names,
@@ -55,3 +58,5 @@ def plan(
     else:
         text = format_plan(names)
     write_text(output, text)
+    ui.info(f"plan of length {len(names)} found by {search} in {result.time_s:.2f} s"
+            + (" (optimal)" if result.optimal else "") + ", validated")

@@ -6,9 +6,9 @@ from typing import Annotated
 
 import typer
 
-from cli.common import JsonOption, OutputOption, QuietOption, command
+from cli.common import JsonOption, OutputOption, QuietOption, check_inputs, command, emit
 from guided_lfd.errors import EXIT_PLAN_INVALID
-from guided_lfd.io import json_document, write_text
+from guided_lfd.io import check_writable, json_document
 from guided_lfd.pddl.reader import parse_task
 from guided_lfd.validate import parse_plan, validate_plan
 
@@ -23,6 +23,8 @@ def validate(
     quiet: QuietOption = False,
 ) -> None:
     """Execute PLAN from the problem's initial state; say which precondition of which step fails."""
+    check_inputs(domain, problem, plan_file)
+    check_writable(output)
     dom, prob = parse_task(domain, problem)
     steps = parse_plan(plan_file, dom, prob)
     report = validate_plan(dom, prob.init, prob.goal, steps)
@@ -36,7 +38,8 @@ def validate(
                 for s in report.steps
             ],
             "goal_reached": failure is None and not report.unsatisfied_goal,
-            "unsatisfied_goal": [str(l) for l in report.unsatisfied_goal],
+            # null when a step failed: the goal was never evaluated
+            "unsatisfied_goal": None if failure is not None else [str(l) for l in report.unsatisfied_goal],
         })
     elif report.valid:
         text = f"valid: {len(steps)} step(s), goal reached\n"
@@ -47,6 +50,6 @@ def validate(
     else:
         text = (f"invalid: all {len(steps)} step(s) apply, but the goal is not reached: "
                 f"{', '.join(str(l) for l in report.unsatisfied_goal)} does not hold\n")
-    write_text(output, text)
+    emit(output, text, success=report.valid)
     if not report.valid:
         raise typer.Exit(EXIT_PLAN_INVALID)

@@ -18,6 +18,7 @@ code  meaning
 12    plan invalid (``validate``)
 13    no excuse within ``--max-size``
 20    time limit reached
+21    task too large to ground (atom or action limit)
 30    input file missing, unreadable or empty
 31    PDDL syntax error
 32    PDDL semantic error (unknown object, predicate, type, arity)
@@ -42,6 +43,7 @@ EXIT_NO_EXCUSE = 11
 EXIT_PLAN_INVALID = 12
 EXIT_NO_EXCUSE_WITHIN_LIMIT = 13
 EXIT_TIME_LIMIT = 20
+EXIT_TOO_LARGE = 21
 EXIT_INPUT_FILE = 30
 EXIT_PDDL_SYNTAX = 31
 EXIT_PDDL_SEMANTIC = 32
@@ -62,6 +64,7 @@ EXIT_CODES: dict[int, str] = {
     EXIT_PLAN_INVALID: "plan invalid",
     EXIT_NO_EXCUSE_WITHIN_LIMIT: "no excuse within --max-size",
     EXIT_TIME_LIMIT: "time limit reached",
+    EXIT_TOO_LARGE: "task too large to ground",
     EXIT_INPUT_FILE: "input file missing, unreadable or empty",
     EXIT_PDDL_SYNTAX: "PDDL syntax error",
     EXIT_PDDL_SEMANTIC: "PDDL semantic error",
@@ -174,3 +177,10 @@ class SearchTimeout(GuidedLfdError):
 
     exit_code = EXIT_TIME_LIMIT
     kind = "time limit"
+
+
+class TaskTooLarge(GuidedLfdError):
+    """Grounding would exceed the atom or action limit."""
+
+    exit_code = EXIT_TOO_LARGE
+    kind = "too large"

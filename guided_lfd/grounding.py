@@ -10,11 +10,18 @@ pruned by reachability from the original initial state.
 
 from __future__ import annotations
 
+import time
 from dataclasses import dataclass, field
 from itertools import product
 from typing import Iterable, Sequence
 
+from guided_lfd.errors import Location, SearchTimeout, TaskTooLarge
 from guided_lfd.pddl.model import EQUALITY, ActionSchema, Atom, Domain, Literal, Problem, objects_by_type
+
+#: Grounding limits: beyond them the task is refused (exit 21) instead of
+#: exhausting memory.  Both are far above what the searches can handle.
+MAX_GROUND_ATOMS = 1_000_000
+MAX_GROUND_ACTIONS = 1_000_000
 
 
 @dataclass(frozen=True)
@@ -83,11 +90,26 @@ def bits(mask: int) -> Iterable[int]:
         mask ^= low
 
 
-def ground_atoms(domain: Domain, problem: Problem) -> list[Atom]:
-    """Every type-correct ground atom of the domain's predicates, sorted."""
+def ground_atoms(domain: Domain, problem: Problem, skip: set[str] | None = None) -> list[Atom]:
+    """Every type-correct ground atom of the domain's predicates (except ``skip``), sorted."""
     by_type = objects_by_type(domain, problem)
     out: list[Atom] = []
+    total = 0
+    for pred in domain.predicates.values():
+        if skip and pred.name in skip:
+            continue
+        count = 1
+        for _, t in pred.params:
+            count *= len(by_type.get(t, []))
+        total += count
+    if total > MAX_GROUND_ATOMS:
+        raise TaskTooLarge(
+            f"{total} ground atoms exceed the limit of {MAX_GROUND_ATOMS} (fewer objects or --fixed predicates help)",
+            Location(problem.path),
+        )
     for pred in sorted(domain.predicates.values(), key=lambda p: p.name):
+        if skip and pred.name in skip:
+            continue
         domains = [by_type.get(t, []) for _, t in pred.params]
         for args in product(*domains):
             out.append(Atom(pred.name, tuple(args)))
@@ -104,6 +126,7 @@ def ground(
     problem: Problem,
     fixed: Iterable[str] = (),
     actions: Sequence[ActionSchema] | None = None,
+    deadline: float | None = None,
 ) -> GroundTask:
     """Ground ``problem`` over all type-correct atoms.
 
@@ -115,7 +138,8 @@ def ground(
     static = static_predicates(domain) & set(fixed)
     # Atoms of fixed static predicates keep their initial value in every state
     # considered: only the true ones need an index (a planner's grounding).
-    atoms = [a for a in ground_atoms(domain, problem) if a.predicate not in static or a in problem.init]
+    atoms = ground_atoms(domain, problem, skip=static)
+    atoms += sorted(a for a in problem.init if a.predicate in static)
     known = set(atoms)
     for atom in sorted(problem.init):
         if atom not in known:
@@ -126,7 +150,16 @@ def ground(
     by_type = objects_by_type(domain, problem)
     ground_actions: list[GroundAction] = []
     for schema in schemas:
-        ground_actions.extend(_ground_schema(schema, by_type, index, problem.init, static))
+        for k, act in enumerate(_ground_schema(schema, by_type, index, problem.init, static)):
+            ground_actions.append(act)
+            if not k & 1023:
+                if len(ground_actions) > MAX_GROUND_ACTIONS:
+                    raise TaskTooLarge(
+                        f"more than {MAX_GROUND_ACTIONS} ground actions (fewer objects or --fixed predicates help)",
+                        Location(problem.path),
+                    )
+                if deadline is not None and time.monotonic() > deadline:
+                    raise SearchTimeout("grounding exceeded the time limit")
     init = 0
     for atom in problem.init:
         init |= 1 << index[atom]

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import os
+import stat
 import sys
 import tempfile
 from pathlib import Path
@@ -18,42 +19,85 @@ FORMAT_VERSION = 1
 def write_text(path: str | Path, text: str) -> None:
     """Write ``text`` to ``path`` atomically (``-`` writes stdout).
 
-    The text goes to a temporary file next to the target which then replaces
-    it, so an interrupted run never leaves a half-written file and the
-    previous content survives any failure before the rename.
+    A regular file is replaced through a temporary file in the same folder,
+    so an interrupted run never leaves a half-written file and the previous
+    content survives any failure; it keeps the old file's permissions (new
+    files get the umask's).  A symbolic link is followed, and a device or
+    FIFO (``/dev/null``) is written in place, never replaced.
     """
     name = str(path)
     if name == "-":
-        sys.stdout.write(text)
-        sys.stdout.flush()
+        _write_stdout(text)
         return
-    target = Path(name)
-    if target.is_dir():
-        raise OutputError("is a directory, expected a file name", Location(name))
-    directory = target.parent if str(target.parent) else Path(".")
+    if name.endswith(("/", os.sep)) or not Path(name).name:
+        raise OutputError("expected a file name, got a folder", Location(name))
+    target = Path(os.path.realpath(name))
     try:
-        directory.mkdir(parents=True, exist_ok=True)
-        fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=directory)
+        if target.is_dir():
+            raise OutputError("is a directory, expected a file name", Location(name))
+        if target.exists() and not target.is_file():
+            with open(target, "w", encoding="utf-8") as fh:  # device or FIFO: write in place
+                fh.write(text)
+            return
+        mode = stat.S_IMODE(target.stat().st_mode) if target.exists() else _default_mode()
+        fd, tmp = tempfile.mkstemp(prefix=f".{target.name[:50]}.", suffix=".tmp", dir=target.parent)
+    except OutputError:
+        raise
     except OSError as exc:
-        raise OutputError(f"cannot write ({exc.strerror})", Location(name)) from None
+        raise OutputError(f"cannot write ({exc.strerror or exc})", Location(name)) from None
     try:
         with os.fdopen(fd, "w", encoding="utf-8", newline="\n") as fh:
             fh.write(text)
             fh.flush()
             os.fsync(fh.fileno())
+        os.chmod(tmp, mode)
         os.replace(tmp, target)
-    except OSError as exc:
+    except BaseException as exc:
         try:
             os.unlink(tmp)
         except OSError:
             pass
-        raise OutputError(f"cannot write ({exc.strerror})", Location(name)) from None
-    except BaseException:
-        try:
-            os.unlink(tmp)
-        except OSError:
-            pass
+        if isinstance(exc, OSError):
+            raise OutputError(f"cannot write ({exc.strerror or exc})", Location(name)) from None
         raise
+
+
+def _default_mode() -> int:
+    umask = os.umask(0)
+    os.umask(umask)
+    return 0o666 & ~umask
+
+
+def _write_stdout(text: str) -> None:
+    stream = sys.stdout
+    if stream is None:
+        raise OutputError("standard output is closed", Location("-"))
+    try:
+        stream.write(text)
+        stream.flush()
+    except BrokenPipeError:
+        raise OutputError("standard output closed by the reader (broken pipe)", Location("-")) from None
+    except (OSError, ValueError) as exc:
+        reason = exc.strerror if isinstance(exc, OSError) and exc.strerror else str(exc)
+        raise OutputError(f"cannot write standard output ({reason})", Location("-")) from None
+
+
+def check_writable(path: str | Path) -> None:
+    """Fail early (before any work is written) if ``path`` cannot be an output file."""
+    name = str(path)
+    if name == "-":
+        return
+    if name.endswith(("/", os.sep)) or not Path(name).name:
+        raise OutputError("expected a file name, got a folder", Location(name))
+    target = Path(os.path.realpath(name))
+    if target.is_dir():
+        raise OutputError("is a directory, expected a file name", Location(name))
+    if not target.parent.is_dir():
+        raise OutputError("its folder does not exist", Location(name))
+    if len(target.name) > 200:
+        raise OutputError("file name too long", Location(name))
+    if not os.access(target.parent, os.W_OK) and not (target.exists() and os.access(target, os.W_OK)):
+        raise OutputError("no permission to write there", Location(name))
 
 
 def json_document(kind: str, body: dict[str, Any]) -> str:

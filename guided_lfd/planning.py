@@ -7,6 +7,7 @@ compiled into complement atoms ``(not-<atom>)`` kept up to date by every action.
 
 from __future__ import annotations
 
+import math
 import signal
 import threading
 import time
@@ -34,7 +35,8 @@ def time_limit(seconds: float | None, what: str = "search") -> Iterator[None]:
     Uses ``SIGALRM`` (pyperplan's searches cannot be interrupted otherwise),
     so it only applies in the main thread; elsewhere the block runs unlimited.
     """
-    if not seconds or threading.current_thread() is not threading.main_thread() or not hasattr(signal, "SIGALRM"):
+    if (not seconds or not math.isfinite(seconds) or seconds > 1e6
+            or threading.current_thread() is not threading.main_thread() or not hasattr(signal, "SIGALRM")):
         yield
         return
 

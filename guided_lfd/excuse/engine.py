@@ -94,6 +94,24 @@ class ExcuseReport:
         return self.excuses[0] if self.excuses else None
 
 
+def check_option_names(domain: Domain, options: ExcuseOptions) -> None:
+    """Reject unknown predicates in --fixed and --cost before any expensive work."""
+    from guided_lfd.errors import OptionError
+
+    for pred in options.fixed:
+        if pred.lower() not in domain.predicates:
+            raise OptionError(
+                f"--fixed '{pred}': unknown predicate (expected one of: {', '.join(sorted(domain.predicates))})"
+            )
+    for spec in options.costs:
+        head = spec.split("=", 1)[0].strip()
+        if head and not head.startswith("(") and head.lower() not in domain.predicates:
+            raise OptionError(
+                f"--cost '{spec}': unknown predicate '{head}' "
+                f"(expected one of: {', '.join(sorted(domain.predicates))})"
+            )
+
+
 def unachievable_goals(task: GroundTask) -> list[Literal]:
     """Goal literals false in I that no robot action can make true."""
     adds = deletes = 0
@@ -147,13 +165,18 @@ def find_excuses(
         raise OptionError(f"unknown strategy '{options.strategy}' (expected one of: {', '.join(STRATEGIES)})")
     start = time.monotonic()
     deadline = None if options.time_limit is None else start + options.time_limit
+    check_option_names(domain, options)
     fixed = options.fixed_predicates(domain)
-    task = ground(domain, problem, fixed=fixed)
+    try:
+        task = ground(domain, problem, fixed=fixed, deadline=deadline)
+    except SearchTimeout:
+        return ExcuseReport("timeout", [], options.semantics, options.strategy,
+                            {"time_s": round(time.monotonic() - start, 4), "phase": "grounding"}, [], [])
     groups: list[MutexGroup] = []
-    if options.semantics is Semantics.CONSISTENT:
+    if options.semantics is Semantics.CONSISTENT and not task.satisfies_goal(task.init):
         from guided_lfd.excuse.invariants import mutex_groups
 
-        groups = mutex_groups(options.invariants_from or domain, task)
+        groups = mutex_groups(options.invariants_from or domain, task, deadline)
     space = build_space(task, options.semantics, fixed, options.costs, groups)
     stats: dict[str, Any] = {
         "ground_atoms": len(task.atoms),
@@ -162,6 +185,7 @@ def find_excuses(
         "relevant_atoms": space.relevant_atoms.bit_count(),
         "relevant_actions": len(space.relevant_actions),
         "invariant_groups": len(space.groups),
+        "fixed_predicates": fixed,
     }
     unachievable = unachievable_goals(task)
 

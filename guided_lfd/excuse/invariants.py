@@ -22,45 +22,76 @@ from __future__ import annotations
 
 import contextlib
 import io
+import time
 from dataclasses import replace
 
+from guided_lfd.errors import Location, MismatchError
 from guided_lfd.excuse.space import MutexGroup
 from guided_lfd.grounding import GroundTask, bits, ground
-from guided_lfd.pddl.model import Domain, Problem
+from guided_lfd.pddl.model import Atom, Domain, Literal, Predicate, Problem
 from guided_lfd.pddl.writer import domain_to_pddl, problem_to_pddl
 
 
+#: A 0-ary predicate only used as the goal handed to the translator, which
+#: needs a non-empty goal over the synthesised domain's own predicates.
+_DUMMY_GOAL = "guided-lfd-invariant-goal"
+
+
 def with_reversed_actions(domain: Domain) -> Domain:
-    """The domain with the reverse of every action added."""
-    return replace(domain, actions=[*domain.actions, *(a.reversed() for a in domain.actions)])
+    """The domain with the reverse of every action added (names kept unique)."""
+    taken = {a.name for a in domain.actions}
+    reverses = []
+    for action in domain.actions:
+        rev = action.reversed()
+        name, k = rev.name, 1
+        while name in taken:
+            k += 1
+            name = f"{rev.name}{k}"
+        taken.add(name)
+        reverses.append(replace(rev, name=name))
+    return replace(domain, actions=[*domain.actions, *reverses])
 
 
-def lifted_invariants(domain: Domain, problem: Problem) -> list:
+def lifted_invariants(domain: Domain, problem: Problem, max_time: float | None = None) -> list:
     """Fast Downward's lifted invariants of ``domain`` (with reversed actions)."""
     from fast_downward.translate import invariant_finder, normalize, options
     from fast_downward.translate.pddl_parser import lisp_parser, parsing_functions
 
     augmented = with_reversed_actions(domain)
+    augmented = replace(augmented, predicates={**augmented.predicates, _DUMMY_GOAL: Predicate(_DUMMY_GOAL)})
     dom_text = domain_to_pddl(augmented)
-    prob = replace(problem, domain_name=domain.name, init=frozenset())
+    # Objects of types the domain does not know are dropped: the invariants
+    # are lifted, objects only matter for their types.
+    types = set(domain.types) | {"object"}
+    objects = {o: t for o, t in problem.objects.items() if t in types and o not in domain.constants}
+    prob = replace(problem, domain_name=domain.name, init=frozenset(), objects=objects,
+                   goal=(Literal(Atom(_DUMMY_GOAL)),))
     prob_text = problem_to_pddl(prob)
     if options.options is None:
         options.set_options(["domain.pddl", "problem.pddl"])
+    options.options.invariant_generation_max_time = max(1, int(max_time)) if max_time else 300
     sink = io.StringIO()
     # The translator reports progress on stdout, which carries our data.
-    with contextlib.redirect_stdout(sink):
-        task = parsing_functions.parse_task(
-            lisp_parser.parse_nested_list(dom_text.splitlines(keepends=True)),
-            lisp_parser.parse_nested_list(prob_text.splitlines(keepends=True)),
-        )
-        normalize.normalize(task)
-        found = list(invariant_finder.find_invariants(task, None))
+    try:
+        with contextlib.redirect_stdout(sink), contextlib.redirect_stderr(sink):
+            task = parsing_functions.parse_task(
+                lisp_parser.parse_nested_list(dom_text.splitlines(keepends=True)),
+                lisp_parser.parse_nested_list(prob_text.splitlines(keepends=True)),
+            )
+            normalize.normalize(task)
+            found = list(invariant_finder.find_invariants(task, None))
+    except (Exception, SystemExit) as exc:  # the translator signals errors with SystemExit too
+        detail = " ".join(str(exc).split()) or type(exc).__name__
+        raise MismatchError(
+            f"cannot synthesise invariants from domain '{domain.name}': {detail[:200]}", Location(domain.path)
+        ) from None
     return sorted(found, key=str)
 
 
-def mutex_groups(source: Domain, task: GroundTask) -> list[MutexGroup]:
+def mutex_groups(source: Domain, task: GroundTask, deadline: float | None = None) -> list[MutexGroup]:
     """Ground mutex groups of ``task`` from invariants of ``source`` (usually its own domain)."""
-    invariants = lifted_invariants(source, task.problem)
+    remaining = None if deadline is None else max(1.0, deadline - time.monotonic())
+    invariants = lifted_invariants(source, task.problem, remaining)
     groups: list[MutexGroup] = []
     if source is task.domain:
         check_task = task

@@ -25,6 +25,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+import math
+
 import numpy as np
 
 from guided_lfd.excuse.space import ChangeSpace
@@ -39,7 +41,7 @@ class Bound:
 
     h: float
     landmarks: list[list[int]]
-    costs: list[int]  # the cost share of each landmark (sums to h)
+    costs: list[int]  # the cost share of each landmark, in the task's scaled units
 
 
 def _csr(rows: list[list[int]]) -> tuple[np.ndarray, np.ndarray]:
@@ -112,9 +114,23 @@ class RelaxedExcuseTask:
             [pos_id[i] for i in bits(task.goal_pos)] + [neg_id[i] for i in bits(task.goal_neg)], dtype=np.int64
         )
         self.changeable = bitmask_to_array(space.changeable, self.n_atoms)
+        # Consistent semantics: making an atom of a mutex group true forces the
+        # removal of the group's true atom q.  That removal is charged to the
+        # change, split over the k groups q belongs to (so it is never charged
+        # more than once in total): costs are scaled by lcm(k) to stay integral.
+        self.groups = [g.mask for g in space.groups]
+        membership: dict[int, int] = {}
+        for mask in self.groups:
+            for i in bits(mask):
+                membership[i] = membership.get(i, 0) + 1
+        self.scale = math.lcm(*membership.values()) if membership else 1
+        self.membership = membership
+        self.group_facts = [np.array([pos_id[i] for i in bits(mask) if i in pos_id], dtype=np.int64)
+                            for mask in self.groups]
         weights = np.zeros(self.n_atoms, dtype=np.float64)
         for i, w in space.weights.items():
-            weights[i] = w
+            weights[i] = w * self.scale
+        self.atom_weight = weights
         self.fact_weight = weights[self.fact_atom]
 
     def _initial(self, state: int, changes: int) -> tuple[np.ndarray, np.ndarray]:
@@ -124,6 +140,17 @@ class RelaxedExcuseTask:
         true[self.n_pos :] = ~state_bits[self.n_pos :]
         flippable = (self.changeable & ~bitmask_to_array(changes, self.n_atoms))[self.fact_atom] & ~true
         cost = np.where(flippable, self.fact_weight, INF)
+        for mask, facts in zip(self.groups, self.group_facts):
+            if facts.size == 0:
+                continue
+            present = state & mask
+            if present.bit_count() != 1:
+                continue
+            q = present.bit_length() - 1
+            if (changes >> q) & 1:
+                cost[facts] = INF  # q was made true by the change set and must stay
+            else:
+                cost[facts] += self.atom_weight[q] / self.membership[q]
         return true, cost
 
     def _hmax(self, true: np.ndarray, cost: np.ndarray) -> np.ndarray:
@@ -155,8 +182,11 @@ class RelaxedExcuseTask:
                 h[frontier] = c
         return h
 
-    def _pcf(self, h: np.ndarray) -> np.ndarray:
-        """Precondition choice function: for each action, a precondition of maximal h (-1 if none)."""
+    def _pcf(self, h: np.ndarray, last: bool) -> np.ndarray:
+        """Precondition choice function: for each action, a precondition of maximal h (-1 if none).
+
+        Ties go to the first (or, with ``last``, the last) such precondition.
+        """
         pcf = np.full(self.n_actions, -1, dtype=np.int64)
         if self.pre_flat.size == 0:
             return pcf
@@ -166,16 +196,38 @@ class RelaxedExcuseTask:
         best = np.full(self.n_actions, INF)
         best[self.nonempty] = amax
         is_max = vals == best[self.pre_owner]
-        pos = np.where(is_max, np.arange(vals.size), vals.size)
-        first = np.minimum.reduceat(pos, starts)
-        pcf[self.nonempty] = self.pre_flat[first]
+        if last:
+            pos = np.where(is_max, np.arange(vals.size), -1)
+            chosen = np.maximum.reduceat(pos, starts)
+        else:
+            pos = np.where(is_max, np.arange(vals.size), vals.size)
+            chosen = np.minimum.reduceat(pos, starts)
+        pcf[self.nonempty] = self.pre_flat[chosen]
         return pcf
 
-    def bound(self, state: int, changes: int, want_landmarks: bool = True) -> Bound:
-        """LM-cut value and landmarks (as atom indices to flip) for excuses extending ``changes``."""
+    def bound(self, state: int, changes: int) -> Bound:
+        """LM-cut value and landmarks (as atom indices to flip) for excuses extending ``changes``.
+
+        LM-cut is computed with two tie-breaking rules for the precondition
+        choice function; both are admissible and the stronger is kept (the
+        choice decides whether goals share one weak landmark or get their own).
+        """
         if self.goal.size == 0:
             return Bound(0, [], [])
         true, cost = self._initial(state, changes)
+        first = self._lmcut(true, cost.copy(), last=False)
+        if not (first.h == INF or first.h == 0):
+            second = self._lmcut(true, cost, last=True)
+            first = second if second.h > first.h else first
+        if first.h != INF:
+            first.h = self.unscale(first.h)
+        return first
+
+    def unscale(self, value: float) -> int:
+        """A bound in scaled cost units as an admissible bound in weight units."""
+        return int(math.floor(value / self.scale + 1e-9))
+
+    def _lmcut(self, true: np.ndarray, cost: np.ndarray, last: bool) -> Bound:
         total = 0.0
         landmarks: list[list[int]] = []
         shares: list[int] = []
@@ -187,7 +239,7 @@ class RelaxedExcuseTask:
                 return Bound(INF, [], [])
             if h[goal_fact] == 0:
                 return Bound(total, landmarks, shares)
-            pcf = self._pcf(h)
+            pcf = self._pcf(h, last)
             # Goal zone: facts that reach the goal through zero-cost robot actions.
             zone = np.zeros(self.n_facts, dtype=bool)
             zone[goal_fact] = True
@@ -208,6 +260,5 @@ class RelaxedExcuseTask:
             m = float(cost[cut].min())
             total += m
             cost[cut] -= m
-            if want_landmarks:
-                landmarks.append(sorted(int(self.fact_atom[f]) for f in cut))
-                shares.append(int(m))
+            landmarks.append(sorted(int(self.fact_atom[f]) for f in cut))
+            shares.append(int(m))

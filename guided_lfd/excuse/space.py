@@ -145,14 +145,16 @@ def parse_costs(specs: list[str], task: GroundTask) -> dict[int, int]:
         if not match:
             raise OptionError(f"--cost '{spec}': expected PRED=N or '(pred arg ...)=N'")
         target, value = match.group(1), match.group(2)
-        try:
-            number = int(value)
-        except ValueError:
-            raise OptionError(f"--cost '{spec}': cost '{value}' is not a whole number") from None
-        if number < 0:
-            raise OptionError(f"--cost '{spec}': cost must be 0 or more")
+        if not re.fullmatch(r"[0-9]+", value, flags=re.ASCII):
+            if re.fullmatch(r"-[0-9]+", value, flags=re.ASCII):
+                raise OptionError(f"--cost '{spec}': cost must be 0 or more")
+            raise OptionError(f"--cost '{spec}': cost '{value}' is not a whole number")
+        number = int(value)
         if target.startswith("("):
-            words = target.strip("()").lower().split()
+            inner = target[1:-1] if target.endswith(")") else ""
+            if "(" in inner or ")" in inner:
+                raise OptionError(f"--cost '{spec}': expected one atom '(pred arg ...)'")
+            words = inner.lower().split()
             atom = Atom(words[0], tuple(words[1:])) if words else None
             if atom is None or atom not in task.index:
                 raise OptionError(f"--cost '{spec}': {target} is not a ground atom of this task")

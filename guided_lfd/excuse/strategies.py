@@ -174,7 +174,7 @@ class LandmarkSearch:
                     seen.add(child)
                     kept = [(lm, m) for lm, m in landmarks if not (lm >> i) & 1] if landmarks else []
                     cg = g + weights[i]
-                    h_child = max(sum(m for _, m in kept), space.consistency_bound(task.init ^ child))
+                    h_child = max(relaxed.unscale(sum(m for _, m in kept)), space.consistency_bound(task.init ^ child))
                     counter += 1
                     inherited[child] = kept
                     heapq.heappush(heap, (max(f, cg + h_child), -cg, counter, child))

@@ -141,17 +141,17 @@ def _tarski_parse(reader, kind: str, src: SourceMap) -> None:
         name = _element_name(exc)
         raise PddlSemanticError(
             f"unknown predicate '{name}' (expected a predicate declared in the domain's :predicates)",
-            src.locate(name, ":init", ":goal"),
+            src.locate_head(name, ":init", ":goal", ":action"),
         ) from None
     except terr.UndefinedConstant as exc:
         name = _element_name(exc)
         raise PddlSemanticError(
             f"unknown object '{name}' (expected an object declared in :objects or a domain constant)",
-            src.locate(name, ":init", ":goal"),
+            src.locate_argument(name, ":init", ":goal", ":action"),
         ) from None
     except terr.UndefinedElement as exc:
         name = _element_name(exc)
-        raise PddlSemanticError(f"unknown name '{name}'", src.locate(name)) from None
+        raise PddlSemanticError(f"unknown name '{name}'", src.locate_argument(name, ":init", ":goal", ":action")) from None
     except terr.ArityMismatch as exc:
         text = str(exc)
         match = re.search(r"element (\S+)/(\d+)", text)
@@ -162,11 +162,24 @@ def _tarski_parse(reader, kind: str, src: SourceMap) -> None:
             _locate_application(src, pred, int(arity) if arity.isdigit() else None),
         ) from None
     except terr.SortMismatch as exc:
+        match = re.search(r'element (\S+?)\.? Expected sort was "([^"]*)", element has sort "([^"]*)"', str(exc))
+        if match:
+            element, expected, actual = match.group(1), match.group(2), match.group(3)
+            element = element.split("(")[0]
+            raise PddlSemanticError(
+                f"'{element}' is a {actual}, expected a {expected}", src.locate_argument(element, ":init", ":goal")
+            ) from None
         raise PddlSemanticError(f"type mismatch: {exc}", src.location(src.define().line, src.define().col)) from None
     except terr.DuplicateDefinition as exc:
-        raise PddlSemanticError(f"duplicate definition: {exc}", src.location(src.define().line, src.define().col)) from None
+        name = str(getattr(exc, "name", _element_name(exc)))
+        raise PddlSemanticError(
+            f"'{name}' is declared twice (expected each type, constant, object, predicate and action name once)",
+            src.locate_second(name),
+        ) from None
+    except RecursionError:
+        raise PddlSyntaxError("nested too deeply to parse", src.location(src.define().line, src.define().col)) from None
     except Exception as exc:  # tarski's ParsingError and anything else it raises
-        text = str(exc).splitlines()[0] if str(exc) else type(exc).__name__
+        text = str(exc).split("\n")[0] if str(exc) else type(exc).__name__
         match = _TARSKI_POS.search(text)
         if match:
             line, col, rest = int(match.group(1)), int(match.group(2)) + 1, match.group(3)
@@ -184,7 +197,11 @@ def _element_name(exc: Exception) -> str:
 def _locate_application(src: SourceMap, pred: str, arity: int | None = None) -> Location:
     """Where ``(pred ...)`` is applied, preferring an application with the wrong arity."""
     first = None
+    declarations = src.section(":predicates")
+    skip = {id(n) for n in declarations.walk()} if declarations is not None else set()
     for node in _lists(src):
+        if id(node) in skip:
+            continue
         if node.head() == pred.lower():
             if arity is None or len(node.items) - 1 != arity:
                 return src.location(node.line, node.col)
@@ -257,7 +274,20 @@ def _domain_from_tarski(reader, src: SourceMap, path: str) -> Domain:
         name = str(pred.name).lower()
         predicates[name] = Predicate(name, tuple((f"?x{i}", str(s.name).lower()) for i, s in enumerate(pred.sort)))
     actions: list[ActionSchema] = []
+    seen_actions: set[str] = set()
     for act in reader.problem.actions.values():
+        lname = str(act.name).lower()
+        node = src.action(lname)
+        where_node = src.location(node.line, node.col) if node else src.location(src.define().line, src.define().col)
+        if lname in seen_actions:
+            raise PddlSemanticError(
+                f"action '{act.name}' is declared twice (names are case-insensitive)", src.locate_second_action(lname)
+            )
+        seen_actions.add(lname)
+        names = [_term_name(v) for v in act.parameters]
+        if len(set(names)) != len(names):
+            dup = next(n for n in names if names.count(n) > 1)
+            raise PddlSemanticError(f"parameter {dup} of action '{act.name}' is declared twice", where_node)
         where = f"precondition of action '{act.name}'"
         params = tuple((_term_name(v), str(v.sort.name).lower()) for v in act.parameters)
         pre = tuple(_literals(act.precondition, src, where))

@@ -15,9 +15,14 @@ import sys
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from guided_lfd.errors import InputFileError, Location, PddlSyntaxError
+from guided_lfd.errors import InputFileError, Location, PddlSemanticError, PddlSyntaxError
 
 _TOKEN = re.compile(r";[^\n]*|\(|\)|[^\s()]+")
+
+#: Inputs larger than this are refused (a device like /dev/zero never ends).
+MAX_INPUT_BYTES = 64 * 1024 * 1024
+#: Deeper nesting is refused: real PDDL stays far below, and parsers recurse.
+MAX_DEPTH = 64
 
 
 def read_text(path: str | Path) -> str:
@@ -29,15 +34,23 @@ def read_text(path: str | Path) -> str:
     name = str(path)
     try:
         if name == "-":
-            data = sys.stdin.buffer.read() if hasattr(sys.stdin, "buffer") else sys.stdin.read().encode()
+            if sys.stdin is None:
+                raise InputFileError("standard input is closed", Location(name))
+            if hasattr(sys.stdin, "buffer"):
+                data = sys.stdin.buffer.read(MAX_INPUT_BYTES + 1)
+            else:
+                data = sys.stdin.read(MAX_INPUT_BYTES + 1).encode()
         else:
-            data = Path(name).read_bytes()
+            with open(name, "rb") as fh:
+                data = fh.read(MAX_INPUT_BYTES + 1)
     except FileNotFoundError:
         raise InputFileError("file not found", Location(name)) from None
     except IsADirectoryError:
         raise InputFileError("is a directory, expected a file", Location(name)) from None
     except OSError as exc:
         raise InputFileError(f"cannot read file ({exc.strerror})", Location(name)) from None
+    if len(data) > MAX_INPUT_BYTES:
+        raise InputFileError(f"larger than {MAX_INPUT_BYTES // (1024 * 1024)} MiB, expected a PDDL file", Location(name))
     if b"\x00" in data:
         raise InputFileError("binary file, expected text", Location(name))
     try:
@@ -121,6 +134,11 @@ class SourceMap:
                 else:
                     self.roots.append(node)
                 stack.append(node)
+                if len(stack) > MAX_DEPTH:
+                    raise PddlSyntaxError(
+                        f"nested more than {MAX_DEPTH} levels deep, expected PDDL of reasonable depth",
+                        self.location(line, col),
+                    )
             elif tok == ")":
                 if not stack:
                     raise PddlSyntaxError("unexpected ')' with no matching '('", self.location(line, col))
@@ -224,19 +242,71 @@ class SourceMap:
         while len(ordered) < len(names):
             progress = False
             for name in names:
-                if name in done:
+                if name.lower() in done:
                     continue
                 up = parent.get(name)
-                if up is None or up.lower() not in lower or up in done or up.lower() == name.lower():
+                if up is None or up.lower() not in lower or up.lower() in done:
                     ordered.append(name)
-                    done.add(name)
+                    done.add(name.lower())
                     progress = True
             if not progress:
-                return self.text  # a cycle: let the parser complain
+                cycle = [n for n in names if n.lower() not in done]
+                raise PddlSemanticError(
+                    "type hierarchy has a cycle: " + ", ".join(f"{n} - {parent[n]}" for n in cycle),
+                    self.location(section.line, section.col),
+                )
         decl = " ".join(f"{n} - {parent[n]}" if n in parent else n for n in ordered)
         old = self.text[section.start : section.end + 1]
         new = f"(:types {decl}" + "\n" * old.count("\n") + ")"
         return self.text[: section.start] + new + self.text[section.end + 1 :]
+
+    def _sections(self, sections: tuple[str, ...]) -> list[SExpr]:
+        out = []
+        for keyword in sections:
+            if keyword == ":action":
+                out += [i for i in self.define().items if isinstance(i, SExpr) and i.head() == ":action"]
+            else:
+                scope = self.section(keyword)
+                if scope is not None:
+                    out.append(scope)
+        return out
+
+    def locate_head(self, name: str, *sections: str) -> Location:
+        """Where ``(name ...)`` is applied (a predicate), searched in ``sections`` first."""
+        name = name.lower()
+        for scope in self._sections(sections):
+            for item in scope.walk():
+                if isinstance(item, SExpr) and item.head() == name:
+                    tok = item.items[0]
+                    return self.location(tok.line, tok.col)  # type: ignore[union-attr]
+        return self.locate(name)
+
+    def locate_argument(self, name: str, *sections: str) -> Location:
+        """Where ``name`` is used as an argument (not a list head), in ``sections`` first."""
+        name = name.lower()
+        for scope in self._sections(sections):
+            for item in scope.walk():
+                if isinstance(item, SExpr):
+                    for tok in item.items[1:]:
+                        if isinstance(tok, Token) and tok.lower == name:
+                            return self.location(tok.line, tok.col)
+        return self.locate(name)
+
+    def locate_second(self, name: str) -> Location:
+        """The second occurrence of ``name`` (a duplicate declaration), else the first."""
+        name = name.lower()
+        found = [t for t in self.define().walk() if isinstance(t, Token) and t.lower == name]
+        tok = found[1] if len(found) > 1 else (found[0] if found else None)
+        if tok is None:
+            return self.location(self.define().line, self.define().col)
+        return self.location(tok.line, tok.col)
+
+    def locate_second_action(self, name: str) -> Location:
+        """The second ``(:action name`` (case-insensitive)."""
+        found = [i for i in self.define().items if isinstance(i, SExpr) and i.head() == ":action"
+                 and len(i.items) > 1 and isinstance(i.items[1], Token) and i.items[1].lower == name.lower()]
+        node = found[1] if len(found) > 1 else (found[0] if found else self.define())
+        return self.location(node.line, node.col)
 
     def spellings(self) -> dict[str, str]:
         """Map lower-case names to their first spelling in the file (``PinkDrawer``)."""

@@ -1,0 +1,80 @@
+#!/usr/bin/env python3
+"""Excuse benchmark: generate the suite, run it, report.
+
+    python benchmarks/excuse_bench.py generate            # -> benchmarks/suite.csv
+    python benchmarks/excuse_bench.py run --jobs 2        # -> benchmarks/results/results.csv
+    python benchmarks/excuse_bench.py report              # -> benchmarks/results/summary.md + PNG plots
+    python benchmarks/excuse_bench.py all --jobs 2        # run + report
+
+`run --executor dask --scheduler tcp://host:8786` sends the runs to an existing
+Dask cluster (extra: pip install 'guided-lfd[dist]').
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(ROOT))
+
+from guided_lfd import benchmark  # noqa: E402
+
+HERE = ROOT / "benchmarks"
+SUITE = HERE / "suite.csv"
+RESULTS = HERE / "results"
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("command", choices=["generate", "run", "report", "all"])
+    parser.add_argument("--ipc", type=Path, default=ROOT / "data" / "benchmarks" / "ipc")
+    parser.add_argument("--tasks", default="task01,task02,task03,task04",
+                        help="comma-separated IPC task names per domain")
+    parser.add_argument("--suite", type=Path, default=SUITE)
+    parser.add_argument("--results", type=Path, default=RESULTS)
+    parser.add_argument("--time-limit", type=float, default=60.0)
+    parser.add_argument("--jobs", type=int, default=2)
+    parser.add_argument("--strategies", default="landmark,baseline")
+    parser.add_argument("--semantics", default="literal,consistent")
+    parser.add_argument("--only", default="", help="comma-separated substrings of task ids to run")
+    parser.add_argument("--executor", choices=["local", "dask"], default="local")
+    parser.add_argument("--scheduler", default=None, help="Dask scheduler address (default: a local cluster)")
+    args = parser.parse_args(argv)
+
+    if args.command == "generate":
+        suite = benchmark.generate_suite(args.ipc, ROOT / "data" / "domains", args.tasks.split(","),
+                                         log=lambda m: print(m, file=sys.stderr))
+        benchmark.write_suite(suite, args.suite, ROOT)
+        print(f"{len(suite)} tasks over {len({t.domain for t in suite})} domains -> {args.suite}", file=sys.stderr)
+        return 0
+    results_csv = args.results / "results.csv"
+    if args.command in ("run", "all"):
+        suite = benchmark.read_suite(args.suite, ROOT)
+        if args.only:
+            keys = args.only.split(",")
+            suite = [t for t in suite if any(k in t.id for k in keys)]
+        done = [0]
+        total = len(suite) * len(args.strategies.split(",")) * len(args.semantics.split(","))
+
+        def progress(row):
+            done[0] += 1
+            print(f"[{done[0]}/{total}] {row['id']} {row['strategy']} {row['semantics']}: "
+                  f"{row['status']} size={row['size']} {row['time_s']}s", file=sys.stderr, flush=True)
+
+        rows = benchmark.run_suite(suite, args.strategies.split(","), args.semantics.split(","), args.time_limit,
+                                   args.jobs, args.executor, args.scheduler, progress)
+        benchmark.write_results(rows, results_csv)
+    if args.command in ("report", "all"):
+        rows = benchmark.read_results(results_csv)
+        plots = benchmark.plot(rows, args.results, args.time_limit)
+        command = "python benchmarks/excuse_bench.py all --jobs 2"
+        text = benchmark.summary_markdown(rows, args.time_limit, command, plots, args.results)
+        (args.results / "summary.md").write_text(text, encoding="utf-8")
+        print(text)
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
