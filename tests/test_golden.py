@@ -1,0 +1,65 @@
+"""Golden files for the JSON and PDDL guided-lfd writes, and determinism.
+
+Regenerate after an intended format change with:
+    GUIDED_LFD_REGOLD=1 python -m pytest tests/test_golden.py
+"""
+
+from __future__ import annotations
+
+import json
+import os
+from pathlib import Path
+
+import pytest
+
+from conftest import BLOCKS, DATA, kitchen
+from guided_lfd.pddl.reader import parse_task
+from guided_lfd.pddl.writer import domain_to_pddl
+
+GOLDEN = DATA / "golden"
+VOLATILE = {"time_s"}
+
+
+def stable(doc: dict) -> dict:
+    """The document without timings (they differ run to run)."""
+    doc = dict(doc)
+    doc["statistics"] = {k: v for k, v in doc["statistics"].items() if k not in VOLATILE}
+    return doc
+
+
+def check_golden(name: str, text: str) -> None:
+    path = GOLDEN / name
+    if os.environ.get("GUIDED_LFD_REGOLD"):
+        path.write_text(text)
+    assert path.exists(), f"missing golden file {path}; run with GUIDED_LFD_REGOLD=1"
+    assert text == path.read_text()
+
+
+@pytest.mark.parametrize(
+    "name,args",
+    [
+        ("excuse-kitchen-1.json", [*kitchen(1)]),
+        ("excuse-kitchen-2.json", [*kitchen(2)]),
+        ("excuse-blocks-literal-all.json",
+         [str(BLOCKS / "domain-no-unstack.pddl"), str(BLOCKS / "task03.pddl"), "--semantics", "literal", "--all"]),
+    ],
+)
+def test_excuse_json_matches_golden_and_is_deterministic(runner, app, name, args):
+    root = Path(__file__).resolve().parent.parent
+    rel = [os.path.relpath(a, root) if a.endswith(".pddl") else a for a in args]
+    cwd = os.getcwd()
+    os.chdir(root)
+    try:
+        first = runner.invoke(app, ["excuse", *rel, "--json"])
+        second = runner.invoke(app, ["excuse", *rel, "--json"])
+    finally:
+        os.chdir(cwd)
+    assert first.exit_code == 0, first.stderr
+    a, b = stable(json.loads(first.stdout)), stable(json.loads(second.stdout))
+    assert a == b
+    check_golden(name, json.dumps(a, indent=2) + "\n")
+
+
+def test_domain_writer_matches_golden():
+    domain, _ = parse_task(*kitchen(2, "human"))
+    check_golden("kitchen-2-human.pddl", domain_to_pddl(domain))
