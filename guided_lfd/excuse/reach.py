@@ -21,7 +21,7 @@ from dataclasses import dataclass
 
 from guided_lfd.errors import SearchTimeout
 from guided_lfd.excuse.space import ChangeSpace
-from guided_lfd.grounding import GroundAction
+from guided_lfd.grounding import GroundAction, bits
 
 
 @dataclass
@@ -49,26 +49,41 @@ class ReachabilityOracle:
         self.stats = ReachStats()
         # Index actions by one positive precondition so successor generation
         # skips most inapplicable actions; actions without one are always tried.
-        self._unconditional = [a for a in self.actions if not a.pre_pos]
-        self._by_first_pre: dict[int, list[GroundAction]] = {}
+        mask = self.mask
+        self._unconditional = [(a, a.pre_neg, a.delete, a.add & mask) for a in self.actions if not a.pre_pos]
+        # Index each action under its precondition that is most likely false:
+        # an atom of the predicate with the most ground atoms (``(lifting h c)``
+        # rather than ``(available h)``), so few actions are tried per state.
+        per_predicate: dict[str, int] = {}
+        for atom in task.atoms:
+            per_predicate[atom.predicate] = per_predicate.get(atom.predicate, 0) + 1
+        rarity = [per_predicate[a.predicate] for a in task.atoms]
+        self._by_first_pre: dict[int, list[tuple]] = {}
         for act in self.actions:
             if act.pre_pos:
-                low = (act.pre_pos & -act.pre_pos).bit_length() - 1
-                self._by_first_pre.setdefault(low, []).append(act)
-        self._keys = sorted(self._by_first_pre)
+                key = max(bits(act.pre_pos), key=lambda i: (rarity[i], i))
+                self._by_first_pre.setdefault(key, []).append((act, act.pre_pos, act.pre_neg, act.delete, act.add & mask))
+        self._key_mask = 0
+        for key in self._by_first_pre:
+            self._key_mask |= 1 << key
 
     def _goal_distance(self, state: int) -> int:
         return (self.goal_pos & ~state).bit_count() + (self.goal_neg & state).bit_count()
 
     def _successors(self, state: int):
-        for act in self._unconditional:
-            if not (state & act.pre_neg):
-                yield act, (state & ~act.delete | act.add) & self.mask
-        for key in self._keys:
-            if (state >> key) & 1:
-                for act in self._by_first_pre[key]:
-                    if (state & act.pre_pos) == act.pre_pos and not (state & act.pre_neg):
-                        yield act, (state & ~act.delete | act.add) & self.mask
+        # States are already projected on the relevant atoms, and so are the
+        # stored add effects, so successors need no further masking.
+        for act, pre_neg, delete, add in self._unconditional:
+            if not (state & pre_neg):
+                yield act, (state & ~delete) | add
+        keys = state & self._key_mask
+        by_first = self._by_first_pre
+        while keys:
+            low = keys & -keys
+            keys ^= low
+            for act, pre_pos, pre_neg, delete, add in by_first[low.bit_length() - 1]:
+                if (state & pre_pos) == pre_pos and not (state & pre_neg):
+                    yield act, (state & ~delete) | add
 
     def solve(self, state: int) -> list[GroundAction] | None:
         """A plan from ``state`` to the goal, or None if the goal is unreachable."""
