@@ -58,20 +58,30 @@ def main(argv: list[str] | None = None) -> int:
         done = [0]
         total = len(suite) * len(args.strategies.split(",")) * len(args.semantics.split(","))
 
+        log = benchmark.RowLog(args.results / "results.partial.csv")
+        if log.done:
+            print(f"resuming: {len(log.done)} runs already in {log.path}", file=sys.stderr)
+
         def progress(row):
             done[0] += 1
+            log.append(row)
             print(f"[{done[0]}/{total}] {row['id']} {row['strategy']} {row['semantics']}: "
                   f"{row['status']} size={row['size']} {row['time_s']}s", file=sys.stderr, flush=True)
 
-        rows = benchmark.run_suite(suite, args.strategies.split(","), args.semantics.split(","), args.time_limit,
-                                   args.jobs, args.executor, args.scheduler, progress)
+        benchmark.run_suite(suite, args.strategies.split(","), args.semantics.split(","), args.time_limit,
+                            args.jobs, args.executor, args.scheduler, progress, skip=log.done)
+        rows = sorted(benchmark.read_results(log.path), key=lambda r: (r["id"], r["semantics"], r["strategy"]))
         benchmark.write_results(rows, results_csv)
+        log.path.unlink()
     if args.command in ("report", "all"):
+        args.results.mkdir(parents=True, exist_ok=True)
         rows = benchmark.read_results(results_csv)
         plots = benchmark.plot(rows, args.results, args.time_limit)
         command = "python benchmarks/excuse_bench.py all --jobs 2"
         text = benchmark.summary_markdown(rows, args.time_limit, command, plots, args.results)
-        (args.results / "summary.md").write_text(text, encoding="utf-8")
+        from guided_lfd.io import write_text
+
+        write_text(args.results / "summary.md", text)
         print(text)
     return 0
 

@@ -15,6 +15,12 @@ from contextlib import contextmanager
 from dataclasses import dataclass
 from typing import Callable, Iterator
 
+from pyperplan.heuristics.blind import BlindHeuristic
+from pyperplan.heuristics.lm_cut import LmCutHeuristic
+from pyperplan.heuristics.relaxation import hFFHeuristic, hMaxHeuristic
+from pyperplan.search import astar_search, breadth_first_search, greedy_best_first_search
+from pyperplan.task import Operator, Task
+
 from guided_lfd.errors import SearchTimeout
 from guided_lfd.grounding import GroundAction, GroundTask, bits
 
@@ -54,8 +60,6 @@ def time_limit(seconds: float | None, what: str = "search") -> Iterator[None]:
 
 def to_pyperplan(task: GroundTask, init: int | None = None, actions: list[GroundAction] | None = None):
     """Build a pyperplan ``Task`` (with complement atoms for negative conditions)."""
-    from pyperplan.task import Operator, Task
-
     init = task.init if init is None else init
     actions = task.actions if actions is None else actions
     negated = task.goal_neg
@@ -102,11 +106,6 @@ def find_plan(
     A ``None`` plan is a proof of unsolvability: all searches registered here
     are complete and exhaust the reachable state space before giving up.
     """
-    from pyperplan.heuristics.blind import BlindHeuristic
-    from pyperplan.heuristics.lm_cut import LmCutHeuristic
-    from pyperplan.heuristics.relaxation import hFFHeuristic, hMaxHeuristic
-    from pyperplan.search import astar_search, breadth_first_search, greedy_best_first_search
-
     kind, heuristic, optimal = SEARCHES[search]
     start = time.perf_counter()
     ptask = to_pyperplan(task, init, actions)

@@ -207,7 +207,10 @@ def find_excuses(
         return finish("already-solvable", [], [a.name for a in plan], candidates=0, planner_calls=1)
 
     limits = SearchLimits(all_minimal=options.all_minimal, max_size=options.max_size, deadline=deadline)
+    search_start = time.monotonic()
+    stats["setup_time_s"] = round(search_start - start, 4)
     outcome = STRATEGIES[options.strategy].search(space, limits, progress)
+    stats["search_time_s"] = round(time.monotonic() - search_start, 4)
     excuses: list[Excuse] = []
     for changes in outcome.solutions:
         state = task.init ^ changes

@@ -28,6 +28,7 @@ from dataclasses import dataclass
 import math
 
 import numpy as np
+import numpy.ma  # noqa: F401  (numpy imports it lazily on first use: pay that at start-up)
 
 from guided_lfd.excuse.space import ChangeSpace
 from guided_lfd.grounding import bits
