@@ -1,0 +1,37 @@
+"""A small slice of the excuse benchmark as a regression check on minimal sizes.
+
+Expected statuses and sizes come from a benchmark run in which the baseline
+(the paper's method) agreed wherever it finished (column ``baseline_agrees``).
+Only sizes are checked here, never times.
+"""
+
+from __future__ import annotations
+
+import csv
+
+import pytest
+
+from conftest import ROOT
+from guided_lfd import benchmark
+
+SUBSET = list(csv.DictReader(open(ROOT / "benchmarks" / "ci_subset.csv", encoding="utf-8")))
+SUITE = {t.id: t for t in benchmark.read_suite(ROOT / "benchmarks" / "suite.csv", ROOT)}
+CASES = [(row, se) for row in SUBSET for se in ("literal", "consistent")]
+
+
+def test_subset_spans_the_benchmark_domains():
+    assert len({SUITE[row["id"]].domain for row in SUBSET}) >= 10
+
+
+@pytest.mark.parametrize("row,semantics", CASES, ids=[f"{r['id']}-{se}" for r, se in CASES])
+def test_default_strategy_keeps_minimal_sizes(row, semantics):
+    result = benchmark.run_one(SUITE[row["id"]], "landmark", semantics, time_limit=30)
+    assert result["status"] == row[f"{semantics}_status"]
+    assert str(result["size"]) == row[f"{semantics}_size"]
+
+
+@pytest.mark.parametrize("task_id", ["kitchen-1-problem", "kitchen-2-problem", "gripper-task01-move", "miconic-task04-up"])
+def test_baseline_agrees_on_small_tasks(task_id):
+    row = next(r for r in SUBSET if r["id"] == task_id)
+    result = benchmark.run_one(SUITE[task_id], "baseline", "literal", time_limit=30)
+    assert (result["status"], str(result["size"])) == (row["literal_status"], row["literal_size"])
