@@ -1,0 +1,1 @@
+"""Demonstrations: VR hand traces, their segmentation, and the skills learned from them."""

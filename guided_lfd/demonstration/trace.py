@@ -1,0 +1,248 @@
+"""The hand-trace format of a VR demonstration, and its strict reader.
+
+A demonstration is two CSV files.
+
+**The trace** (``demo.csv``): one row per frame and hand.
+
+============  =========================================================
+column        meaning
+============  =========================================================
+``time``      seconds since the start, non-decreasing for each hand
+``hand``      ``left`` or ``right``
+``x y z``     the hand's position in metres (world frame)
+``grip``      ``open`` or ``closed`` (also ``0``/``1``)
+``in_hand``   the object held by the hand, empty when none
+``act_on``    the object the hand acts on or moves toward, empty when none
+============  =========================================================
+
+Extra columns are kept and ignored.  ``hand_move`` is *derived*: the hand
+moves in a frame when its speed, measured as the displacement over a window
+of :data:`MOVE_WINDOW_S` centred on the frame, exceeds
+:data:`MOVE_THRESHOLD_M_S`.  The window makes the speed robust to tracking
+noise (millimetres per frame at 90 Hz would otherwise read as 0.3 m/s).
+
+**The environment state** (``demo.state.csv``, next to the trace): the
+symbolic fluents as they change, long format, columns ``time``, ``fluent``,
+``value`` (``true``/``false``); fluents with commas are quoted, as CSV
+requires (``0,"inside(RedPlate,PinkDrawer)",true``).  Rows ``object(Name,type)`` declare the scene's
+objects; rows at the first time list the initial state (fluents not listed
+are false); later rows are changes, e.g. ``12.48,open(PinkDrawer),true``.
+Fluents are written ``pred(Arg,...)``: ``inside(A,B)``, ``on_top(A,B)``,
+``clear(X)``, ``open(X)``, ``graspable(X)``, ``blocking(C,F)``, ...
+"""
+
+from __future__ import annotations
+
+import io
+import re
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+
+from guided_lfd.errors import Location, TraceError
+from guided_lfd.pddl.model import Atom
+from guided_lfd.pddl.source import read_text
+
+TRACE_COLUMNS = ("time", "hand", "x", "y", "z", "grip", "in_hand", "act_on")
+STATE_COLUMNS = ("time", "fluent", "value")
+HANDS = ("left", "right")
+#: Speed above which a hand counts as moving (m/s).
+MOVE_THRESHOLD_M_S = 0.10
+#: Window over which the speed is measured (s), centred on the frame.
+MOVE_WINDOW_S = 0.10
+
+_FLUENT = re.compile(r"^\s*([A-Za-z][\w-]*)\s*\(\s*([^()]*?)\s*\)\s*$")
+_TRUE = {"true", "1", "yes"}
+_FALSE = {"false", "0", "no"}
+
+
+@dataclass
+class Demonstration:
+    """A loaded demonstration: frames (with ``hand_move``) and the symbolic state."""
+
+    frames: pd.DataFrame
+    objects: dict[str, str]
+    initial: frozenset[Atom]
+    events: list[tuple[float, Atom, bool]] = field(default_factory=list)
+    spellings: dict[str, str] = field(default_factory=dict)
+    path: str = "<trace>"
+
+    def state_at(self, t: float) -> frozenset[Atom]:
+        """The true fluents at time ``t`` (changes at exactly ``t`` included)."""
+        state = set(self.initial)
+        for when, atom, value in self.events:
+            if when > t:
+                break
+            (state.add if value else state.discard)(atom)
+        return frozenset(state)
+
+
+def default_state_path(trace_path: str) -> str:
+    """``demo.csv`` -> ``demo.state.csv``."""
+    p = Path(trace_path)
+    return str(p.with_name(p.stem + ".state.csv"))
+
+
+def _csv(text: str, path: str, columns: tuple[str, ...]) -> pd.DataFrame:
+    try:
+        frame = pd.read_csv(io.StringIO(text), dtype=str, keep_default_na=False, skipinitialspace=True)
+    except pd.errors.ParserError as exc:
+        match = re.search(r"line (\d+)", str(exc))
+        raise TraceError(f"malformed CSV ({' '.join(str(exc).split())}; quote fields that contain commas, "
+                         f"e.g. \"inside(A,B)\")", Location(path, int(match.group(1)) if match else None)) from None
+    except pd.errors.EmptyDataError:
+        raise TraceError("empty file, expected a CSV header and rows", Location(path, 1)) from None
+    frame.columns = [c.strip() for c in frame.columns]
+    missing = [c for c in columns if c not in frame.columns]
+    if missing:
+        raise TraceError(
+            f"missing column {', '.join(repr(c) for c in missing)} (expected columns: {', '.join(columns)})",
+            Location(path, 1),
+        )
+    if frame.empty:
+        raise TraceError("no rows after the header", Location(path, 2))
+    return frame
+
+
+def _where(path: str, frame: pd.DataFrame, row: int, column: str) -> Location:
+    # CSV line = data row + 2 (header is line 1); column is 1-based.
+    return Location(path, row + 2, list(frame.columns).index(column) + 1)
+
+
+def _numbers(frame: pd.DataFrame, path: str, column: str) -> np.ndarray:
+    values = pd.to_numeric(frame[column].str.strip(), errors="coerce").to_numpy(dtype=float)
+    bad = np.flatnonzero(~np.isfinite(values))
+    if bad.size:
+        row = int(bad[0])
+        raise TraceError(
+            f"column '{column}': expected a finite number, got '{frame[column].iloc[row]}'",
+            _where(path, frame, row, column),
+        )
+    return values
+
+
+def parse_fluent(text: str) -> Atom:
+    """``inside(RedPlate,PinkDrawer)`` -> ``(inside redplate pinkdrawer)``."""
+    match = _FLUENT.match(text)
+    if not match:
+        raise ValueError(text)
+    args = tuple(a.strip().lower() for a in match.group(2).split(",")) if match.group(2).strip() else ()
+    if any(not a or not re.fullmatch(r"[\w-]+", a) for a in args):
+        raise ValueError(text)
+    return Atom(match.group(1).lower(), args)
+
+
+def load_state(path: str) -> tuple[dict[str, str], frozenset[Atom], list[tuple[float, Atom, bool]], dict[str, str]]:
+    """Objects, initial fluents, later changes and spellings from a state CSV."""
+    frame = _csv(read_text(path), path, STATE_COLUMNS)
+    times = _numbers(frame, path, "time")
+    objects: dict[str, str] = {}
+    spellings: dict[str, str] = {}
+    rows: list[tuple[int, float, Atom, bool]] = []
+    for i, (t, text, value) in enumerate(zip(times, frame["fluent"], frame["value"])):
+        raw = text.strip()
+        try:
+            atom = parse_fluent(raw)
+        except ValueError:
+            raise TraceError(f"column 'fluent': expected pred(Arg,...), got '{raw}'",
+                             _where(path, frame, i, "fluent")) from None
+        flag = value.strip().lower()
+        if flag not in _TRUE | _FALSE:
+            raise TraceError(f"column 'value': expected true or false, got '{value}'", _where(path, frame, i, "value"))
+        if atom.predicate == "object":
+            if len(atom.args) != 2:
+                raise TraceError(f"column 'fluent': expected object(Name,type), got '{raw}'",
+                                 _where(path, frame, i, "fluent"))
+            objects[atom.args[0]] = atom.args[1]
+            original = _FLUENT.match(raw).group(2).split(",")[0].strip()  # type: ignore[union-attr]
+            spellings[atom.args[0]] = original
+            continue
+        rows.append((i, float(t), atom, flag in _TRUE))
+    if not objects:
+        raise TraceError("no object(Name,type) rows: the scene's objects must be declared", Location(path, 1))
+    for i, _, atom, _ in rows:
+        for arg in atom.args:
+            if arg not in objects:
+                raise TraceError(f"column 'fluent': object '{arg}' is never declared (add an object({arg},type) row)",
+                                 _where(path, frame, i, "fluent"))
+    start = min((t for _, t, _, _ in rows), default=0.0)
+    initial = frozenset(a for _, t, a, v in rows if t == start and v)
+    events = sorted(((t, a, v) for _, t, a, v in rows if t > start), key=lambda e: e[0])
+    return objects, initial, events, spellings
+
+
+def load_demonstration(trace_path: str, state_path: str | None = None) -> Demonstration:
+    """Read and check a trace and its state file; adds the derived ``hand_move`` column."""
+    state_path = state_path or default_state_path(trace_path)
+    frame = _csv(read_text(trace_path), trace_path, TRACE_COLUMNS)
+    objects, initial, events, spellings = load_state(state_path)
+    times = _numbers(frame, trace_path, "time")
+    for axis in ("x", "y", "z"):
+        frame[axis] = _numbers(frame, trace_path, axis)
+    frame["time"] = times
+    hands = frame["hand"].str.strip().str.lower()
+    bad = np.flatnonzero(~hands.isin(HANDS).to_numpy())
+    if bad.size:
+        row = int(bad[0])
+        raise TraceError(f"column 'hand': expected left or right, got '{frame['hand'].iloc[row]}'",
+                         _where(trace_path, frame, row, "hand"))
+    frame["hand"] = hands
+    grip = frame["grip"].str.strip().str.lower().map({"open": False, "0": False, "closed": True, "1": True})
+    bad = np.flatnonzero(grip.isna().to_numpy())
+    if bad.size:
+        row = int(bad[0])
+        raise TraceError(f"column 'grip': expected open or closed, got '{frame['grip'].iloc[row]}'",
+                         _where(trace_path, frame, row, "grip"))
+    frame["grip_closed"] = grip.astype(bool)
+    for column in ("in_hand", "act_on"):
+        names = frame[column].str.strip().str.lower()
+        unknown = np.flatnonzero(((names != "") & ~names.isin(list(objects))).to_numpy())
+        if unknown.size:
+            row = int(unknown[0])
+            raise TraceError(
+                f"column '{column}': object '{frame[column].iloc[row].strip()}' is never declared in {Path(state_path).name}",
+                _where(trace_path, frame, row, column),
+            )
+        frame[column] = names
+    for hand in HANDS:
+        idx = np.flatnonzero((frame["hand"] == hand).to_numpy())
+        if idx.size > 1:
+            back = np.flatnonzero(np.diff(times[idx]) < 0)
+            if back.size:
+                row = int(idx[back[0] + 1])
+                raise TraceError(f"column 'time': time goes backwards for the {hand} hand "
+                                 f"({times[idx[back[0]]]:g} s, then {times[row]:g} s)",
+                                 _where(trace_path, frame, row, "time"))
+    frame["hand_move"] = hand_move(frame)
+    return Demonstration(frame, objects, initial, events, spellings, trace_path)
+
+
+def hand_move(frame: pd.DataFrame) -> np.ndarray:
+    """Whether each frame's hand moves (see :data:`MOVE_THRESHOLD_M_S`)."""
+    out = np.zeros(len(frame), dtype=bool)
+    half = MOVE_WINDOW_S / 2
+    for hand in HANDS:
+        idx = np.flatnonzero((frame["hand"] == hand).to_numpy())
+        if idx.size < 2:
+            continue
+        t = frame["time"].to_numpy()[idx]
+        pos = frame[["x", "y", "z"]].to_numpy()[idx]
+        lo = np.searchsorted(t, t - half, side="left")
+        hi = np.searchsorted(t, t + half, side="right") - 1
+        span = t[hi] - t[lo]
+        dist = np.linalg.norm(pos[hi] - pos[lo], axis=1)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            speed = np.where(span > 0, dist / span, 0.0)
+        out[idx] = speed > MOVE_THRESHOLD_M_S
+    return out
+
+
+def speed_threshold_note() -> str:
+    """One line for reports: how hand_move is derived."""
+    return (f"hand_move: speed over a {MOVE_WINDOW_S * 1000:.0f} ms window > {MOVE_THRESHOLD_M_S:g} m/s")
+
+
+__all__ = ["Demonstration", "load_demonstration", "load_state", "parse_fluent", "hand_move",
+           "TRACE_COLUMNS", "STATE_COLUMNS", "MOVE_THRESHOLD_M_S", "MOVE_WINDOW_S"]

@@ -1,0 +1,73 @@
+"""The hand-trace format: a valid demonstration loads; bad input is one pinned error."""
+
+from __future__ import annotations
+
+import pytest
+
+from conftest import DATA
+from guided_lfd.demonstration.trace import load_demonstration, parse_fluent
+from guided_lfd.errors import TraceError
+from guided_lfd.pddl.model import Atom
+
+DEMO = DATA / "demo"
+TRACE = DEMO / "open-drawer.csv"
+STATE = DEMO / "open-drawer.state.csv"
+
+
+def test_valid_trace_loads_with_state_and_hand_move():
+    demo = load_demonstration(str(TRACE))
+    assert demo.objects == {"redplate": "item", "table": "surface", "pinkdrawer": "drawer"}
+    assert Atom("on_top", ("redplate", "table")) in demo.initial
+    assert Atom("open", ("pinkdrawer",)) not in demo.initial
+    assert Atom("open", ("pinkdrawer",)) in demo.state_at(1.5)
+    right = demo.frames[demo.frames["hand"] == "right"]
+    # moving while reaching (0.6 m/s) and pulling, still afterwards; the left hand never moves
+    assert right[(right["time"] > 0.1) & (right["time"] < 0.7)]["hand_move"].all()
+    assert not right[right["time"] > 1.5]["hand_move"].any()
+    assert not demo.frames[demo.frames["hand"] == "left"]["hand_move"].any()
+    assert demo.spellings["pinkdrawer"] == "PinkDrawer"
+
+
+def test_parse_fluent():
+    assert parse_fluent("inside(RedPlate, PinkDrawer)") == Atom("inside", ("redplate", "pinkdrawer"))
+    with pytest.raises(ValueError):
+        parse_fluent("inside RedPlate")
+
+
+def _edit(tmp_path, trace_lines=None, state_text=None, line=None, new=None):
+    lines = TRACE.read_text().splitlines()
+    if line is not None:
+        lines[line] = new
+    if trace_lines is not None:
+        lines = trace_lines
+    (tmp_path / "t.csv").write_text("\n".join(lines) + "\n")
+    (tmp_path / "t.state.csv").write_text(STATE.read_text() if state_text is None else state_text)
+    return str(tmp_path / "t.csv")
+
+
+@pytest.mark.parametrize(
+    "line,new,message",
+    [
+        (0, "time,hand,x,y,z,in_hand,act_on", "t.csv:1: trace error: missing column 'grip'"),
+        (5, "0.0333,right,nan,0.2,0.9,open,,PinkDrawer", "t.csv:6:3: trace error: column 'x': expected a finite number, got 'nan'"),
+        (5, "0.0333,middle,0.1,0.2,0.9,open,,PinkDrawer", "t.csv:6:2: trace error: column 'hand': expected left or right"),
+        (5, "0.0333,right,0.1,0.2,0.9,half,,PinkDrawer", "t.csv:6:6: trace error: column 'grip': expected open or closed"),
+        (5, "0.0333,right,0.1,0.2,0.9,open,,Sofa", "t.csv:6:8: trace error: column 'act_on': object 'Sofa' is never declared"),
+        (5, "5.0,right,0.1,0.2,0.9,open,,PinkDrawer", "t.csv:8:1: trace error: column 'time': time goes backwards for the right hand"),
+    ],
+)
+def test_bad_trace_rows_name_file_row_and_column(tmp_path, line, new, message):
+    path = _edit(tmp_path, line=line, new=new)
+    with pytest.raises(TraceError) as info:
+        load_demonstration(path)
+    assert str(info.value).split("/")[-1].startswith(message)
+    assert info.value.exit_code == 36
+
+
+def test_empty_trace_and_state_errors(tmp_path):
+    with pytest.raises(TraceError, match="t.csv: input error|empty"):
+        load_demonstration(_edit(tmp_path, trace_lines=["time,hand,x,y,z,grip,in_hand,act_on"]))
+    with pytest.raises(TraceError, match=r"t.state.csv:4:2: trace error: column 'fluent': object 'sofa' is never declared"):
+        load_demonstration(_edit(tmp_path, state_text='time,fluent,value\n0,"object(A,item)",true\n0,clear(A),true\n0,clear(Sofa),true\n'))
+    with pytest.raises(TraceError, match=r"column 'fluent': expected pred\(Arg,...\), got 'clear A'"):
+        load_demonstration(_edit(tmp_path, state_text='time,fluent,value\n0,"object(A,item)",true\n0,clear A,true\n'))
