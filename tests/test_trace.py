@@ -71,3 +71,26 @@ def test_empty_trace_and_state_errors(tmp_path):
         load_demonstration(_edit(tmp_path, state_text='time,fluent,value\n0,"object(A,item)",true\n0,clear(A),true\n0,clear(Sofa),true\n'))
     with pytest.raises(TraceError, match=r"column 'fluent': expected pred\(Arg,...\), got 'clear A'"):
         load_demonstration(_edit(tmp_path, state_text='time,fluent,value\n0,"object(A,item)",true\n0,clear A,true\n'))
+
+
+def test_segmenting_the_open_drawer_trace():
+    from guided_lfd.demonstration.segment import segment
+
+    segments = [s for s in segment(load_demonstration(str(TRACE))) if s.hand == "right"]
+    assert [s.activity for s in segments] == ["Reach", "Open", "Idle"]
+    opened = segments[1]
+    assert opened.object == "pinkdrawer"
+    assert opened.added == {Atom("open", ("pinkdrawer",))}
+    assert 0.7 < opened.start < 0.9 and 1.2 < opened.end < 1.4
+
+
+def test_debouncing_absorbs_grip_flicker(tmp_path):
+    from guided_lfd.demonstration.segment import segment
+
+    lines = TRACE.read_text().splitlines()
+    # one frame of the pull reports an open grip (flicker)
+    k = next(i for i, l in enumerate(lines) if l.startswith("1.0") and ",right," in l)
+    lines[k] = lines[k].replace(",closed,", ",open,")
+    path = _edit(tmp_path, trace_lines=lines)
+    segments = [s for s in segment(load_demonstration(path)) if s.hand == "right"]
+    assert [s.activity for s in segments] == ["Reach", "Open", "Idle"]
