@@ -9,6 +9,7 @@ import typer
 
 from cli.excuse import excuse
 from cli.plan import plan
+from cli.segment import segment
 from cli.validate import validate
 from guided_lfd import __version__
 
@@ -58,6 +59,7 @@ def main(
 
 app.command("excuse")(excuse)
 app.command("plan")(plan)
+app.command("segment")(segment)
 app.command("validate")(validate)
 
 

@@ -94,3 +94,17 @@ def test_debouncing_absorbs_grip_flicker(tmp_path):
     path = _edit(tmp_path, trace_lines=lines)
     segments = [s for s in segment(load_demonstration(path)) if s.hand == "right"]
     assert [s.activity for s in segments] == ["Reach", "Open", "Idle"]
+
+
+def test_segment_cli_json_and_errors(runner, app, tmp_path):
+    import json
+
+    result = runner.invoke(app, ["segment", str(TRACE)])
+    assert result.exit_code == 0, result.stderr
+    doc = json.loads(result.stdout)
+    assert doc["format"] == "guided-lfd/segments"
+    assert [s["activity"] for s in doc["segments"] if s["hand"] == "right"] == ["Reach", "Open"]
+    bad = _edit(tmp_path, line=5, new="0.0333,right,0.1,0.2,0.9,half,,PinkDrawer")
+    result = runner.invoke(app, ["segment", bad])
+    assert result.exit_code == 36
+    assert result.stderr.strip().endswith("t.csv:6:6: trace error: column 'grip': expected open or closed, got 'half'")

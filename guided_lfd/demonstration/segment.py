@@ -168,3 +168,38 @@ def _name_manipulation(obj: str, before: frozenset[Atom], after: frozenset[Atom]
     if Atom("open", (obj,)) in before - after:
         return "Close"
     return "Manipulate"
+
+
+def segments_document(demo: Demonstration, segments: list[Segment], state_path: str) -> dict:
+    """The ``guided-lfd/segments`` JSON body (see README)."""
+    def atoms(xs):
+        return [str(a) for a in sorted(xs)]
+
+    return {
+        "trace": demo.path,
+        "state": state_path,
+        "objects": dict(sorted(demo.objects.items())),
+        "spellings": dict(sorted(demo.spellings.items())),
+        "initial": atoms(demo.initial),
+        "segments": [
+            {"index": s.index, "hand": s.hand, "activity": s.activity, "start": round(s.start, 4),
+             "end": round(s.end, 4), "object": s.object, "target": s.target,
+             "added": atoms(s.added), "deleted": atoms(s.deleted),
+             "before": atoms(s.before), "after": atoms(s.after)}
+            for s in segments
+        ],
+    }
+
+
+def segments_csv(segments: list[Segment]) -> str:
+    """Segments as CSV (fluent lists joined with ``;``)."""
+    import csv
+    import io
+
+    buf = io.StringIO()
+    writer = csv.writer(buf, lineterminator="\n")
+    writer.writerow(["index", "hand", "activity", "start", "end", "object", "target", "added", "deleted"])
+    for s in segments:
+        writer.writerow([s.index, s.hand, s.activity, f"{s.start:.4f}", f"{s.end:.4f}", s.object, s.target,
+                         ";".join(str(a) for a in sorted(s.added)), ";".join(str(a) for a in sorted(s.deleted))])
+    return buf.getvalue()

@@ -1,0 +1,38 @@
+"""``guided-lfd segment``: a VR hand trace -> hand-activity segments."""
+
+from __future__ import annotations
+
+from typing import Annotated
+
+import typer
+
+from cli.common import OutputOption, QuietOption, check_inputs, command, ui
+from guided_lfd.demonstration.segment import segment as segment_trace
+from guided_lfd.demonstration.segment import segments_csv, segments_document
+from guided_lfd.demonstration.trace import default_state_path, load_demonstration
+from guided_lfd.io import check_writable, json_document, write_text
+
+
+@command
+def segment(
+    trace: Annotated[str, typer.Argument(help="Hand trace CSV ('-' = stdin; then give --state).")],
+    state: Annotated[
+        str | None, typer.Option("--state", metavar="FILE", help="Environment state CSV (default: TRACE.state.csv).")
+    ] = None,
+    csv_out: Annotated[bool, typer.Option("--csv", help="Write CSV instead of JSON.")] = False,
+    include_idle: Annotated[bool, typer.Option("--idle/--no-idle", help="Keep Idle segments.")] = False,
+    output: OutputOption = "-",
+    quiet: QuietOption = False,
+) -> None:
+    """Segment a demonstration into hand activities (Reach, Take, Put, Release, Open, Close, ...)."""
+    state_path = state or default_state_path(trace)
+    check_inputs(trace, state_path)
+    check_writable(output)
+    demo = load_demonstration(trace, state_path)
+    segments = [s for s in segment_trace(demo) if include_idle or s.activity != "Idle"]
+    if csv_out:
+        text = segments_csv(segments)
+    else:
+        text = json_document("segments", segments_document(demo, segments, state_path))
+    write_text(output, text)
+    ui.info(f"[dim]{len(segments)} segment(s) from {len(demo.frames)} frames[/]")
