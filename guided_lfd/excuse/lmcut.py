@@ -115,10 +115,13 @@ class RelaxedExcuseTask:
             [pos_id[i] for i in bits(task.goal_pos)] + [neg_id[i] for i in bits(task.goal_neg)], dtype=np.int64
         )
         self.changeable = bitmask_to_array(space.changeable, self.n_atoms)
+        self.neg_mask = space.negation_needed
         # Consistent semantics: making an atom of a mutex group true forces the
         # removal of the group's true atom q.  That removal is charged to the
         # change, split over the k groups q belongs to (so it is never charged
         # more than once in total): costs are scaled by lcm(k) to stay integral.
+        # Landmark cost shares then include these charges, so a child whose
+        # change removes such a q must not inherit them (see strategies.py).
         self.groups = [g.mask for g in space.groups]
         membership: dict[int, int] = {}
         for mask in self.groups:
@@ -150,7 +153,9 @@ class RelaxedExcuseTask:
             q = present.bit_length() - 1
             if (changes >> q) & 1:
                 cost[facts] = INF  # q was made true by the change set and must stay
-            else:
+            elif not (self.neg_mask >> q) & 1:
+                # Only when "not q" is no relaxed fact of its own: its change
+                # already costs w(q), and a relaxed plan may use both.
                 cost[facts] += self.atom_weight[q] / self.membership[q]
         return true, cost
 

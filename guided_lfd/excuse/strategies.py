@@ -172,7 +172,12 @@ class LandmarkSearch:
                     if child in seen:
                         continue
                     seen.add(child)
-                    kept = [(lm, m) for lm, m in landmarks if not (lm >> i) & 1] if landmarks else []
+                    if (state >> i) & 1 and i in space.groups_of:
+                        # Removing a group atom: the parent's shares may include a
+                        # charge for exactly this removal; recompute instead.
+                        kept = []
+                    else:
+                        kept = [(lm, m) for lm, m in landmarks if not (lm >> i) & 1] if landmarks else []
                     cg = g + weights[i]
                     h_child = max(relaxed.unscale(sum(m for _, m in kept)), space.consistency_bound(task.init ^ child))
                     counter += 1

@@ -1,0 +1,1 @@
+(define (problem t1) (:domain inherited-removal-share) (:init (q)) (:goal (g)))

@@ -1,0 +1,1 @@
+(define (problem t1) (:domain removal-charged-twice) (:init (q)) (:goal (g)))
