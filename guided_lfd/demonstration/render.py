@@ -1,0 +1,194 @@
+"""Rendering symbolic hand activities into a realistic VR hand trace.
+
+The study's VR recordings are not public, so guided-lfd renders stand-ins:
+a script of hand activities in a scene becomes a trace in the format of
+:mod:`guided_lfd.demonstration.trace`, with the environment state and
+per-frame ground-truth labels beside it.  Rendered, not recorded:
+
+* 90 Hz (configurable) frames for both hands; the idle hand rests;
+* reach, transport, pull and push motions follow minimum-jerk profiles
+  (Flash & Hogan 1985), the standard model of human point-to-point motion;
+* Gaussian position noise, dropped frames and single-frame grip flicker, as
+  trackers and glove sensors produce them.
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from guided_lfd.pddl.model import Atom
+
+Vec = tuple[float, float, float]
+
+
+@dataclass
+class Step:
+    """One hand activity to render.
+
+    ``changes`` are the fluent changes the activity causes, registered at its
+    end (``Release`` registers where the object now is at its start).
+    """
+
+    activity: str  # Idle, Reach, Take, Put, Release, Open, Close
+    obj: str = ""
+    target: str = ""
+    duration: float = 1.0
+    changes: list[tuple[Atom, bool]] = field(default_factory=list)
+    hand: str = "right"
+
+
+@dataclass
+class Scene:
+    """Object positions (m), object types, and where the hands rest."""
+
+    positions: dict[str, Vec]
+    types: dict[str, str]
+    spellings: dict[str, str] = field(default_factory=dict)
+    rest: dict[str, Vec] = field(default_factory=lambda: {"right": (0.25, -0.3, 0.95), "left": (-0.25, -0.3, 0.95)})
+    pull: Vec = (0.0, -0.25, 0.0)  # how far a drawer handle travels when opened
+
+
+@dataclass
+class Noise:
+    """Sensor imperfections of the rendered trace."""
+
+    position_sd_m: float = 0.0015
+    drop_rate: float = 0.02
+    flicker_rate: float = 0.01
+    seed: int = 0
+
+
+@dataclass
+class Rendering:
+    """The rendered trace, state and labels as CSV text."""
+
+    trace_csv: str
+    state_csv: str
+    labels_csv: str
+    steps: list[Step]
+
+
+def minimum_jerk(p0: np.ndarray, p1: np.ndarray, s: np.ndarray) -> np.ndarray:
+    """Positions along the minimum-jerk path from p0 to p1 at phases s in [0, 1]."""
+    shape = 10 * s**3 - 15 * s**4 + 6 * s**5
+    return p0 + (p1 - p0) * shape[:, None]
+
+
+def render(steps: list[Step], scene: Scene, initial: set[Atom], rate_hz: float = 90.0,
+           noise: Noise | None = None) -> Rendering:
+    """Render ``steps`` (one after the other) into trace, state and label CSVs."""
+    noise = noise or Noise()
+    rng = np.random.default_rng(noise.seed)
+    dt = 1.0 / rate_hz
+    hand_pos = {h: np.array(p, dtype=float) for h, p in scene.rest.items()}
+    held: dict[str, str] = {"right": "", "left": ""}
+    rows: list[tuple] = []  # (time, hand, pos, grip, in_hand, act_on, label)
+    events: list[tuple[float, Atom, bool]] = []
+    t = 0.0
+    for step in steps:
+        n = max(2, int(round(step.duration * rate_hz)))
+        times = t + dt * np.arange(n)
+        s = np.linspace(0.0, 1.0, n)
+        hand = step.hand
+        start = hand_pos[hand].copy()
+        grip, in_hand, act_on = False, "", step.obj
+        label = step.activity
+        if step.activity == "Reach":
+            path = minimum_jerk(start, np.array(scene.positions[step.obj]), s)
+        elif step.activity == "Take":
+            path = np.repeat(start[None, :], n, axis=0)
+            grip, in_hand, act_on = True, step.obj, step.obj
+            held[hand] = step.obj
+        elif step.activity == "Put":
+            goal = np.array(scene.positions[step.target]) + np.array([0.0, 0.0, 0.05])
+            path = minimum_jerk(start, goal, s)
+            grip, in_hand, act_on = True, step.obj, step.target
+        elif step.activity == "Release":
+            path = minimum_jerk(start, np.array(scene.rest[hand]), s)
+            in_hand, act_on = "", ""
+            held[hand] = ""
+        elif step.activity in ("Open", "Close"):
+            direction = np.array(scene.pull) * (1 if step.activity == "Open" else -1)
+            path = minimum_jerk(start, start + direction, s)
+            grip, act_on = True, step.obj
+        elif step.activity == "Idle":
+            path = minimum_jerk(start, np.array(scene.rest[hand]), np.clip(s * 3, 0, 1))
+            act_on = ""
+            label = "Idle"
+        else:
+            raise ValueError(f"cannot render activity {step.activity!r}")
+        if step.activity == "Release":
+            # The object is registered where it was put as the hand lets go.
+            events += [(float(times[0]) + 1e-3, atom, value) for atom, value in step.changes]
+        else:
+            events += [(float(times[-1]), atom, value) for atom, value in step.changes]
+        for k in range(n):
+            rows.append((float(times[k]), hand, path[k], grip, in_hand, act_on, label))
+        hand_pos[hand] = path[-1]
+        # The other hand rests.
+        other = "left" if hand == "right" else "right"
+        for k in range(n):
+            rows.append((float(times[k]), other, hand_pos[other], False, held[other], "", "Idle"))
+        t = float(times[-1]) + dt
+    return Rendering(_trace_csv(rows, scene, noise, rng), _state_csv(scene, initial, events),
+                     _labels_csv(rows), steps)
+
+
+def _name(scene: Scene, obj: str) -> str:
+    return scene.spellings.get(obj, obj) if obj else ""
+
+
+def _trace_csv(rows, scene: Scene, noise: Noise, rng: np.random.Generator) -> str:
+    buf = io.StringIO()
+    writer = csv.writer(buf, lineterminator="\n")
+    writer.writerow(["time", "hand", "x", "y", "z", "grip", "in_hand", "act_on"])
+    for time, hand, pos, grip, in_hand, act_on, _ in sorted(rows, key=lambda r: (r[0], r[1])):
+        if rng.random() < noise.drop_rate:
+            continue  # a dropped frame
+        if rng.random() < noise.flicker_rate:
+            grip = not grip  # a one-frame glove misreading
+        x, y, z = np.asarray(pos) + rng.normal(0.0, noise.position_sd_m, 3)
+        writer.writerow([f"{time:.4f}", hand, f"{x:.4f}", f"{y:.4f}", f"{z:.4f}",
+                         "closed" if grip else "open", _name(scene, in_hand), _name(scene, act_on)])
+    return buf.getvalue()
+
+
+def _fluent(atom: Atom, scene: Scene) -> str:
+    return f"{atom.predicate}({','.join(_name(scene, a) for a in atom.args)})"
+
+
+def _state_csv(scene: Scene, initial: set[Atom], events) -> str:
+    buf = io.StringIO()
+    writer = csv.writer(buf, lineterminator="\n")
+    writer.writerow(["time", "fluent", "value"])
+    for obj in sorted(scene.types):
+        writer.writerow(["0", f"object({_name(scene, obj)},{scene.types[obj]})", "true"])
+    for atom in sorted(initial):
+        writer.writerow(["0", _fluent(atom, scene), "true"])
+    for time, atom, value in sorted(events, key=lambda e: (e[0], e[1])):
+        writer.writerow([f"{time:.4f}", _fluent(atom, scene), "true" if value else "false"])
+    return buf.getvalue()
+
+
+def _labels_csv(rows) -> str:
+    buf = io.StringIO()
+    writer = csv.writer(buf, lineterminator="\n")
+    writer.writerow(["time", "hand", "activity"])
+    for time, hand, _, _, _, _, label in sorted(rows, key=lambda r: (r[0], r[1])):
+        writer.writerow([f"{time:.4f}", hand, label])
+    return buf.getvalue()
+
+
+def frame_f1(truth: list[str], predicted: list[str]) -> float:
+    """Macro-F1 of frame labels over the activities that occur in ``truth``."""
+    scores = []
+    for label in sorted(set(truth)):
+        tp = sum(1 for a, b in zip(truth, predicted) if a == label and b == label)
+        fp = sum(1 for a, b in zip(truth, predicted) if a != label and b == label)
+        fn = sum(1 for a, b in zip(truth, predicted) if a == label and b != label)
+        scores.append(0.0 if tp == 0 else 2 * tp / (2 * tp + fp + fn))
+    return sum(scores) / len(scores) if scores else 1.0
