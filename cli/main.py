@@ -8,6 +8,7 @@ from typing import Annotated
 import typer
 
 from cli.excuse import excuse
+from cli.learn_domain import learn_domain
 from cli.plan import plan
 from cli.segment import segment
 from cli.validate import validate
@@ -60,6 +61,7 @@ def main(
 app.command("excuse")(excuse)
 app.command("plan")(plan)
 app.command("segment")(segment)
+app.command("learn-domain")(learn_domain)
 app.command("validate")(validate)
 
 

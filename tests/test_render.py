@@ -60,3 +60,60 @@ def test_noisy_rendering_segments_back(tmp_path, seed):
     put = next(s for s in segments if s.activity == "Put")
     assert put.object == "redplate" and put.target == "pinkdrawer"
     assert Atom("inside", ("redplate", "pinkdrawer")) in put.added
+
+
+@pytest.mark.parametrize("seed", [0, 3, 5])
+def test_learning_from_the_rendered_demonstration(tmp_path, seed):
+    from guided_lfd.demonstration.learn import learn_domain
+    from guided_lfd.demonstration.segment import segments_document
+    from guided_lfd.pddl.model import Literal
+    from guided_lfd.pddl.writer import domain_to_pddl
+
+    rendering = render(COMPLETE, SCENE, INITIAL, noise=Noise(seed=seed))
+    demo = write(tmp_path, rendering)
+    doc = segments_document(demo, segment(demo), "demo.state.csv")
+    domain = learn_domain([("demo", doc)])
+    names = [a.name for a in domain.actions]
+    # Reach and the Release after opening change nothing symbolic: no actions.
+    assert names == ["open_drawer", "take_item", "put_item_drawer", "release"]
+    opening = domain.action("open_drawer")
+    # nodes of interest: clear(drawer) is a precondition although it does not change
+    assert Literal(Atom("clear", ("?o1",))) in opening.precondition
+    assert opening.add == (Atom("open", ("?o1",)),)
+    put = domain.action("put_item_drawer")
+    assert Atom("inside", ("?o1", "?o2")) in put.add
+    release = domain.action("release")
+    assert release.add == (Atom("hand_free"),) and release.delete == (Atom("in_hand", ("?o1",)),)
+    # the PDDL parses back
+    (tmp_path / "learned.pddl").write_text(domain_to_pddl(domain))
+    from guided_lfd.pddl.reader import parse_domain
+
+    assert [a.name for a in parse_domain(tmp_path / "learned.pddl").actions] == names
+
+
+def test_segment_learn_domain_pipeline_and_prior(runner, app, tmp_path):
+    from conftest import kitchen
+
+    rendering = render(COMPLETE, SCENE, INITIAL, noise=Noise(seed=1))
+    write(tmp_path, rendering)
+    segmented = runner.invoke(app, ["segment", str(tmp_path / "demo.csv")])
+    assert segmented.exit_code == 0, segmented.stderr
+    learned = runner.invoke(app, ["learn-domain", "-"], input=segmented.stdout)
+    assert learned.exit_code == 0, learned.stderr
+    assert "(:action open_drawer" in learned.stdout and "(:action put_item_drawer" in learned.stdout
+    (tmp_path / "segments.json").write_text(segmented.stdout)
+    merged = runner.invoke(app, ["learn-domain", str(tmp_path / "segments.json"), "--prior", kitchen(1)[0],
+                                 "-o", str(tmp_path / "merged.pddl")])
+    assert merged.exit_code == 0, merged.stderr
+    # The robot with the demonstrated skills solves the original Kitchen I task.
+    plan = runner.invoke(app, ["plan", str(tmp_path / "merged.pddl"), kitchen(1)[1]])
+    assert plan.exit_code == 0, plan.stderr
+    assert "(open_drawer pinkdrawer)" in plan.stdout
+
+
+def test_learn_domain_rejects_non_segment_input(runner, app, tmp_path):
+    bad = tmp_path / "x.json"
+    bad.write_text("{not json")
+    result = runner.invoke(app, ["learn-domain", str(bad)])
+    assert result.exit_code == 36
+    assert "x.json:1:2: trace error: not JSON" in result.stderr

@@ -33,6 +33,8 @@ MIN_SEGMENT_S = 0.15
 MAX_GAP_S = 0.5
 #: Fluent changes this long after a segment still belong to it (s).
 EFFECT_DELAY_S = 0.1
+#: Frames read at a segment boundary for what the hand holds or targets.
+BOUNDARY_FRAMES = 4
 
 
 @dataclass
@@ -48,6 +50,8 @@ class Segment:
     target: str
     before: frozenset[Atom] = field(default_factory=frozenset)
     after: frozenset[Atom] = field(default_factory=frozenset)
+    held_before: str = ""  # what the hand held just before the segment
+    held_after: str = ""  # ... and at its end
 
     @property
     def added(self) -> frozenset[Atom]:
@@ -136,11 +140,17 @@ def segment(demo: Demonstration) -> list[Segment]:
         for label, first, last in runs:
             start, end = float(times[first]), float(times[last])
             obj, tgt = _roles(label, held[first:last + 1], target[first:last + 1])
-            before = demo.state_at(start - 1e-9)
+            # Effect windows (start + delay, end + delay] tile the timeline, so
+            # every change belongs to exactly one segment of the hand.
+            before = demo.state_at(start + EFFECT_DELAY_S)
             after = demo.state_at(end + EFFECT_DELAY_S)
             if label == "Manipulate":
                 label = _name_manipulation(obj, before, after)
-            out.append(Segment(0, hand, label, start, end, obj, tgt, before, after))
+            # Boundaries move by a few frames with jitter and debouncing: read
+            # the hand's state over a few frames, not one.
+            held_before = _most_common(held[max(0, first - BOUNDARY_FRAMES):first]) if first > 0 else ""
+            held_after = _most_common(held[max(first, last - BOUNDARY_FRAMES + 1):last + 1])
+            out.append(Segment(0, hand, label, start, end, obj, tgt, before, after, held_before, held_after))
     out.sort(key=lambda s: (s.start, s.hand))
     for i, seg in enumerate(out):
         seg.index = i
@@ -158,7 +168,8 @@ def _most_common(values) -> str:
 def _roles(label: str, held, target) -> tuple[str, str]:
     """(object, target) of a segment: what the hand holds or handles, and where it goes."""
     if label in ("Take", "Put", "Stack"):
-        return _most_common(held), (str(target[-1]) if label != "Take" and target[-1] else "")
+        tail = target[max(0, len(target) - 3 * BOUNDARY_FRAMES):]
+        return _most_common(held), (_most_common(tail) if label != "Take" else "")
     return _most_common(target), ""
 
 
@@ -184,6 +195,7 @@ def segments_document(demo: Demonstration, segments: list[Segment], state_path: 
         "segments": [
             {"index": s.index, "hand": s.hand, "activity": s.activity, "start": round(s.start, 4),
              "end": round(s.end, 4), "object": s.object, "target": s.target,
+             "held_before": s.held_before, "held_after": s.held_after,
              "added": atoms(s.added), "deleted": atoms(s.deleted),
              "before": atoms(s.before), "after": atoms(s.after)}
             for s in segments

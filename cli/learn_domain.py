@@ -1,0 +1,47 @@
+"""``guided-lfd learn-domain``: demonstration segments -> a PDDL domain of the demonstrated skills."""
+
+from __future__ import annotations
+
+import json
+from typing import Annotated
+
+import typer
+
+from cli.common import OutputOption, QuietOption, check_inputs, command, ui
+from guided_lfd.demonstration.learn import learn_domain as learn
+from guided_lfd.errors import Location, TraceError
+from guided_lfd.io import check_writable, write_text
+from guided_lfd.pddl.reader import parse_domain
+from guided_lfd.pddl.source import read_text
+from guided_lfd.pddl.writer import domain_to_pddl
+
+
+@command
+def learn_domain(
+    segments: Annotated[list[str], typer.Argument(help="Segment JSON files from `guided-lfd segment` ('-' = stdin).")],
+    prior: Annotated[
+        str | None, typer.Option("--prior", metavar="DOMAIN", help="Keep this domain's types, predicates and actions.")
+    ] = None,
+    name: Annotated[str, typer.Option("--name", help="Name of the learned domain.")] = "learned",
+    output: OutputOption = "-",
+    quiet: QuietOption = False,
+) -> None:
+    """Turn demonstrated hand activities into lifted PDDL actions (nodes of interest, generalised)."""
+    check_inputs(*segments, *([prior] if prior else []))
+    check_writable(output)
+    documents = []
+    for path in segments:
+        text = read_text(path)
+        try:
+            doc = json.loads(text)
+        except json.JSONDecodeError as exc:
+            raise TraceError(f"not JSON ({exc.msg}), expected a guided-lfd/segments document",
+                             Location(path, exc.lineno, exc.colno)) from None
+        if not isinstance(doc, dict) or doc.get("format") != "guided-lfd/segments":
+            raise TraceError("expected a guided-lfd/segments document (from `guided-lfd segment`)", Location(path, 1))
+        documents.append((path, doc))
+    domain = learn(documents, parse_domain(prior) if prior else None, name=name.lower())
+    header = "Learned by guided-lfd learn-domain from: " + ", ".join(segments)
+    write_text(output, domain_to_pddl(domain, header=header))
+    learned = [a for a in domain.actions if a.origin and a.origin.startswith("learned")]
+    ui.info(f"[dim]{len(learned)} demonstrated skill(s): {', '.join(a.name for a in learned)}[/]")

@@ -1,0 +1,160 @@
+"""Learning a PDDL domain from demonstration segments (paper, section III-D-1).
+
+Every segment that changes something (the environment or what the hand
+holds) is a demonstrated action:
+
+* its name comes from the activity and the types of the objects it handles
+  (``take_item``, ``put_item_drawer``, ``open_drawer``);
+* preconditions follow the *nodes of interest* principle (Zanchettin 2023):
+  every fluent true before the segment that mentions an object the hand
+  interacts with (the handled object, the target, what it holds, and every
+  object whose fluents change), changed or not (``clear`` of the drawer),
+  plus the hand's state (``in_hand``/``hand_free``);
+* effects are the changes over the segment to fluents of the objects the
+  hand handles, and to the hand's state;
+* objects are lifted to typed parameters; repeated demonstrations of a skill
+  (same name and parameter types) are generalised by intersecting their
+  preconditions and effects.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, replace
+
+from guided_lfd.errors import Location, TraceError
+from guided_lfd.pddl.model import ActionSchema, Atom, Domain, Literal, Predicate
+
+#: Activities that are never planning actions.
+SKIPPED = ("Idle",)
+
+
+@dataclass(frozen=True)
+class DemonstratedAction:
+    """A ground action read off one segment."""
+
+    name: str
+    objects: tuple[str, ...]
+    precondition: frozenset[Atom]
+    add: frozenset[Atom]
+    delete: frozenset[Atom]
+    source: str
+
+
+def _hand_fluents(held: str) -> set[Atom]:
+    return {Atom("in_hand", (held,))} if held else {Atom("hand_free")}
+
+
+def ground_actions(document: dict, source: str = "segments") -> list[DemonstratedAction]:
+    """The demonstrated actions of one ``guided-lfd/segments`` document."""
+    types: dict[str, str] = document.get("objects", {})
+    out: list[DemonstratedAction] = []
+    for seg in document.get("segments", []):
+        if seg["activity"] in SKIPPED:
+            continue
+        before = {_atom(a, source) for a in seg["before"]}
+        after = {_atom(a, source) for a in seg["after"]}
+        hand_before = _hand_fluents(seg.get("held_before", ""))
+        hand_after = _hand_fluents(seg.get("held_after", ""))
+        roles = [o for o in (seg.get("object", ""), seg.get("target", "")) if o]
+        handled = set(roles) | {o for o in (seg.get("held_before", ""), seg.get("held_after", "")) if o}
+        # Only changes to what the hand handles are its effects (the other hand
+        # may change something at the same time).
+        env_add = {a for a in after - before if set(a.args) & handled}
+        env_del = {a for a in before - after if set(a.args) & handled}
+        add = env_add | (hand_after - hand_before)
+        delete = env_del | (hand_before - hand_after)
+        if not add and not delete:
+            continue  # e.g. a Reach: moves the hand, changes nothing symbolic
+        interest = handled | {arg for atom in add | delete for arg in atom.args}
+        pre = {a for a in before if set(a.args) & interest} | hand_before
+        others = sorted(interest - set(roles))
+        objects = tuple(dict.fromkeys(roles + others))
+        name = "_".join([seg["activity"].lower(), *(types.get(o, "object") for o in roles)])
+        out.append(DemonstratedAction(name, objects, frozenset(pre), frozenset(add), frozenset(delete),
+                                      f"{source} segment {seg['index']} ({seg['activity']} {' '.join(roles)})"))
+    return out
+
+
+def _atom(text: str, source: str) -> Atom:
+    words = text.strip().strip("()").split()
+    if not words:
+        raise TraceError("empty fluent in segments", Location(source))
+    return Atom(words[0], tuple(words[1:]))
+
+
+def lift(action: DemonstratedAction, types: dict[str, str]) -> ActionSchema:
+    """Objects become typed parameters ``?o1 ...`` in order of their role."""
+    variables = {o: f"?o{i + 1}" for i, o in enumerate(action.objects)}
+    extra = sorted({a for atom in action.precondition | action.add | action.delete for a in atom.args} - set(variables))
+    for o in extra:
+        variables[o] = f"?o{len(variables) + 1}"
+    binding = dict(variables)
+    params = tuple((variables[o], types.get(o, "object")) for o in variables)
+    return ActionSchema(
+        name=action.name,
+        params=params,
+        precondition=tuple(sorted(Literal(a.substitute(binding)) for a in action.precondition)),
+        add=tuple(sorted(a.substitute(binding) for a in action.add)),
+        delete=tuple(sorted(a.substitute(binding) for a in action.delete)),
+        origin=action.source,
+    )
+
+
+def generalise(actions: list[ActionSchema]) -> list[ActionSchema]:
+    """One schema per skill: preconditions and effects intersected over demonstrations."""
+    groups: dict[tuple, list[ActionSchema]] = {}
+    for act in actions:
+        groups.setdefault((act.name, tuple(t for _, t in act.params)), []).append(act)
+    out: list[ActionSchema] = []
+    names: dict[str, int] = {}
+    for (name, _), acts in groups.items():
+        first = acts[0]
+        pre = set(first.precondition)
+        add = set(first.add)
+        dele = set(first.delete)
+        for other in acts[1:]:
+            pre &= set(other.precondition)
+            add &= set(other.add)
+            dele &= set(other.delete)
+        k = names.get(name, 0)
+        names[name] = k + 1
+        origin = f"learned from {len(acts)} demonstration(s): " + "; ".join(a.origin or "" for a in acts[:3])
+        out.append(ActionSchema(name if k == 0 else f"{name}_{k + 1}", first.params, tuple(sorted(pre)),
+                                tuple(sorted(add)), tuple(sorted(dele)), origin))
+    return out
+
+
+def learn_domain(documents: list[tuple[str, dict]], prior: Domain | None = None, name: str = "learned") -> Domain:
+    """A domain of the skills demonstrated in ``documents`` (source, segments document).
+
+    With ``prior``, its types and predicate declarations are used and its
+    actions are kept (a minimal merge; ``guided-lfd merge`` does the full one).
+    """
+    types: dict[str, str] = {}
+    lifted: list[ActionSchema] = []
+    for source, doc in documents:
+        types.update(doc.get("objects", {}))
+        lifted += [lift(a, doc.get("objects", {})) for a in ground_actions(doc, source)]
+    learned = generalise(lifted)
+    predicates: dict[str, Predicate] = {}
+    for act in learned:
+        ptypes = dict(act.params)
+        for atom in [l.atom for l in act.precondition] + list(act.add) + list(act.delete):
+            if atom.predicate not in predicates:
+                predicates[atom.predicate] = Predicate(
+                    atom.predicate, tuple((f"?x{i}", ptypes.get(a, "object")) for i, a in enumerate(atom.args)))
+            else:
+                old = predicates[atom.predicate]
+                merged = tuple((v, t if t == ptypes.get(a, "object") else "object")
+                               for (v, t), a in zip(old.params, atom.args))
+                predicates[atom.predicate] = Predicate(atom.predicate, merged)
+    if prior is not None:
+        known = {a.name for a in prior.actions}
+        renamed = [a if a.name not in known else replace(a, name=f"{a.name}_demo") for a in learned]
+        return replace(prior, predicates={**predicates, **prior.predicates},
+                       actions=[*prior.actions, *renamed], path="<learned>")
+    type_decl: dict[str, str | None] = {"object": None}
+    for t in sorted(set(types.values())):
+        type_decl[t] = "object"
+    return Domain(name=name, requirements=(":strips", ":typing"), types=type_decl, constants={},
+                  predicates=predicates, actions=learned, path="<learned>")
