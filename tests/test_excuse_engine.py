@@ -269,3 +269,22 @@ def test_landmark_matches_baseline_with_costs(tmp_path_factory, semantics, pddl,
     # The baseline enumerates by weight up to the size bound: the reference.
     if found["baseline"][0] != "no-excuse-within-size":
         assert found["landmark"] == found["baseline"]
+
+
+@pytest.mark.parametrize("small", [True, False])
+@settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow, HealthCheck.function_scoped_fixture])
+@given(pddl=small_tasks())
+def test_both_lmcut_implementations_match_brute_force(tmp_path_factory, monkeypatch, small, pddl):
+    """LM-cut runs on plain lists for small tasks and on numpy for large ones: test both."""
+    from guided_lfd.excuse import lmcut
+
+    monkeypatch.setattr(lmcut, "SMALL_TASK_ACTIONS", 10**9 if small else 0)
+    folder = tmp_path_factory.mktemp("rndl")
+    (folder / "d.pddl").write_text(pddl[0])
+    (folder / "p.pddl").write_text(pddl[1])
+    domain, problem = parse_task(folder / "d.pddl", folder / "p.pddl")
+    for semantics in Semantics:
+        report = find_excuses(domain, problem, ExcuseOptions(semantics=semantics, all_minimal=True, max_size=3))
+        size, expected = brute_force(domain, problem, report.checked_groups)
+        if size not in (None, 0):
+            assert sorted(sorted(str(c) for c in e.changes) for e in report.excuses) == expected

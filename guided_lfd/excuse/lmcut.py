@@ -34,6 +34,9 @@ from guided_lfd.excuse.space import ChangeSpace
 from guided_lfd.grounding import bits
 
 INF = float("inf")
+#: Below this many relaxed actions LM-cut runs on plain Python lists (the
+#: numpy version pays ~10 us per array call, too much for small tasks).
+SMALL_TASK_ACTIONS = 1500
 
 
 @dataclass
@@ -96,10 +99,6 @@ class RelaxedExcuseTask:
             add.append(e)
         n_actions = len(pre)
         self.n_actions = n_actions
-        self.pre_ptr, self.pre_flat = _csr(pre)
-        self.add_ptr, self.add_flat = _csr(add)
-        self.n_pre = np.diff(self.pre_ptr)
-        self.pre_owner = np.repeat(np.arange(n_actions, dtype=np.int64), self.n_pre)
         prec_of: list[list[int]] = [[] for _ in range(self.n_facts)]
         achievers: list[list[int]] = [[] for _ in range(self.n_facts)]
         for ai, p in enumerate(pre):
@@ -107,13 +106,21 @@ class RelaxedExcuseTask:
                 prec_of[f].append(ai)
             for f in add[ai]:
                 achievers[f].append(ai)
-        self.prec_ptr, self.prec_flat = _csr(prec_of)
-        self.ach_ptr, self.ach_flat = _csr(achievers)
-        self.free_actions = np.flatnonzero(self.n_pre == 0)
-        self.nonempty = np.flatnonzero(self.n_pre > 0)
-        self.goal = np.array(
-            [pos_id[i] for i in bits(task.goal_pos)] + [neg_id[i] for i in bits(task.goal_neg)], dtype=np.int64
-        )
+        # Small tasks: numpy's per-call overhead dominates; plain lists are faster.
+        self.small = n_actions < SMALL_TASK_ACTIONS
+        self.pre_lists, self.add_lists = pre, add
+        self.prec_of_lists, self.achiever_lists = prec_of, achievers
+        if not self.small:
+            self.pre_ptr, self.pre_flat = _csr(pre)
+            self.add_ptr, self.add_flat = _csr(add)
+            self.n_pre = np.diff(self.pre_ptr)
+            self.pre_owner = np.repeat(np.arange(n_actions, dtype=np.int64), self.n_pre)
+            self.prec_ptr, self.prec_flat = _csr(prec_of)
+            self.ach_ptr, self.ach_flat = _csr(achievers)
+            self.free_actions = np.flatnonzero(self.n_pre == 0)
+            self.nonempty = np.flatnonzero(self.n_pre > 0)
+        self.goal_list = [pos_id[i] for i in bits(task.goal_pos)] + [neg_id[i] for i in bits(task.goal_neg)]
+        self.goal = np.array(self.goal_list, dtype=np.int64)
         self.changeable = bitmask_to_array(space.changeable, self.n_atoms)
         self.neg_mask = space.negation_needed
         # Consistent semantics: making an atom of a mutex group true forces the
@@ -234,6 +241,8 @@ class RelaxedExcuseTask:
         return int(math.floor(value / self.scale + 1e-9))
 
     def _lmcut(self, true: np.ndarray, cost: np.ndarray, last: bool) -> Bound:
+        if self.small:
+            return self._lmcut_lists(true.tolist(), cost.tolist(), last)
         total = 0.0
         landmarks: list[list[int]] = []
         shares: list[int] = []
@@ -267,4 +276,74 @@ class RelaxedExcuseTask:
             total += m
             cost[cut] -= m
             landmarks.append(sorted(int(self.fact_atom[f]) for f in cut))
+            shares.append(int(m))
+
+    # -- the same LM-cut on plain lists, for small tasks ------------------------
+    def _hmax_lists(self, true: list[bool], cost: list[float], last: bool) -> tuple[list[float], list[int]]:
+        """h^max (generalised Dijkstra) and the precondition choice function."""
+        import heapq
+
+        h = [0.0 if t else c for t, c in zip(true, cost)]
+        heap = [(v, f) for f, v in enumerate(h) if v != INF]
+        heapq.heapify(heap)
+        unsat = [len(p) for p in self.pre_lists]
+        pcf = [-1] * len(unsat)
+        adds = self.add_lists
+        for ai, n in enumerate(unsat):
+            if n == 0:
+                for q in adds[ai]:
+                    if h[q] > 0:
+                        h[q] = 0.0
+                        heapq.heappush(heap, (0.0, q))
+        done = [False] * len(h)
+        prec_of = self.prec_of_lists
+        while heap:
+            c, f = heapq.heappop(heap)
+            if done[f] or c > h[f]:
+                continue
+            done[f] = True
+            for ai in prec_of[f]:
+                unsat[ai] -= 1
+                if unsat[ai] == 0:
+                    for q in adds[ai]:
+                        if c < h[q]:
+                            h[q] = c
+                            heapq.heappush(heap, (c, q))
+        pre = self.pre_lists
+        for ai, p in enumerate(pre):
+            if p:
+                best = max(h[f] for f in p)
+                chosen = [f for f in p if h[f] == best]
+                pcf[ai] = chosen[-1] if last else chosen[0]
+        return h, pcf
+
+    def _lmcut_lists(self, true: list[bool], cost: list[float], last: bool) -> Bound:
+        total = 0.0
+        landmarks: list[list[int]] = []
+        shares: list[int] = []
+        goal = self.goal_list
+        while True:
+            h, pcf = self._hmax_lists(true, cost, last)
+            goal_fact = max(goal, key=lambda g: h[g])  # first maximum, as np.argmax
+            if h[goal_fact] == INF:
+                return Bound(INF, [], [])
+            if h[goal_fact] == 0:
+                return Bound(total, landmarks, shares)
+            zone = {goal_fact}
+            stack = [goal_fact]
+            while stack:
+                q = stack.pop()
+                for ai in self.achiever_lists[q]:
+                    f = pcf[ai]
+                    if f >= 0 and f not in zone and h[f] > 0:
+                        zone.add(f)
+                        stack.append(f)
+            cut = sorted(f for f in zone if cost[f] > 0 and cost[f] != INF)
+            if not cut:
+                return Bound(total, landmarks, shares)
+            m = min(cost[f] for f in cut)
+            total += m
+            for f in cut:
+                cost[f] -= m
+            landmarks.append(sorted(self.fact_atom_list[f] for f in cut))
             shares.append(int(m))
