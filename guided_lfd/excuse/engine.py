@@ -15,7 +15,7 @@ from typing import Any
 
 from guided_lfd.errors import SearchTimeout
 from guided_lfd.excuse.check import Change, check_excuse, excuse_state
-from guided_lfd.excuse.reach import ReachabilityOracle
+from guided_lfd.excuse.reach import ReachabilityOracle, relaxed_reachable
 from guided_lfd.excuse.space import ChangeSpace, MutexGroup, Semantics, build_space
 from guided_lfd.excuse.strategies import DEFAULT_STRATEGY, STRATEGIES, Progress, SearchLimits
 from guided_lfd.grounding import GroundAction, GroundTask, bits, ground
@@ -197,10 +197,12 @@ def find_excuses(
 
     # Already solvable: no excuse needed.
     oracle = ReachabilityOracle(space, deadline)
-    try:
-        plan0 = oracle.solve(task.init)
-    except SearchTimeout:
-        return finish("timeout", [], candidates=0, planner_calls=1)
+    plan0 = None
+    if relaxed_reachable(space, task.init):  # else unsolvable without a search
+        try:
+            plan0 = oracle.solve(task.init)
+        except SearchTimeout:
+            return finish("timeout", [], candidates=0, planner_calls=1)
     if plan0 is not None:
         plan, _ = _robot_plan(task, space, task.init, plan0, options.optimal_plans, deadline)
         _verify(domain, problem, [], plan, space)
