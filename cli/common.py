@@ -5,7 +5,6 @@ from __future__ import annotations
 import functools
 import math
 import os
-import sys
 from typing import Annotated, Callable, TypeVar
 
 import typer
@@ -103,10 +102,3 @@ def command(fn: F) -> F:
 
     return wrapper  # type: ignore[return-value]
 
-
-def stdout_is_terminal() -> bool:
-    """Whether stdout is an interactive terminal (then text beats JSON)."""
-    try:
-        return sys.stdout.isatty()
-    except (AttributeError, ValueError):
-        return False

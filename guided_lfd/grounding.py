@@ -63,24 +63,6 @@ class GroundTask:
         """Whether ``state`` models the goal."""
         return (state & self.goal_pos) == self.goal_pos and not (state & self.goal_neg)
 
-    def atoms_of(self, mask: int) -> list[Atom]:
-        """The atoms in a bit set, sorted."""
-        return sorted(self.atoms[i] for i in bits(mask))
-
-    def mask_of(self, atoms: Iterable[Atom]) -> int:
-        """The bit set of ``atoms`` (all must be in the index)."""
-        mask = 0
-        for atom in atoms:
-            mask |= 1 << self.index[atom]
-        return mask
-
-    def with_init(self, init: int) -> "GroundTask":
-        """The same task from another initial state."""
-        return GroundTask(
-            self.domain, self.problem, self.atoms, self.index, init, self.goal_pos, self.goal_neg,
-            self.actions, self.fixed_static,
-        )
-
 
 def bits(mask: int) -> Iterable[int]:
     """Indices of the set bits of ``mask``, ascending."""

@@ -153,7 +153,7 @@ def small_tasks(draw):
             add = draw(st.lists(st.sampled_from(pool), min_size=1, max_size=2, unique=True))
             dele = draw(st.lists(st.sampled_from([a for a in pool if a not in add] or pool), max_size=2, unique=True))
             dele = [a for a in dele if a not in add]
-        params = f"(?x - obj)" if param else "()"
+        params = "(?x - obj)" if param else "()"
         precondition = " ".join(pre + [f"(not {a})" for a in neg])
         effect = " ".join(add + [f"(not {a})" for a in dele])
         actions.append(f"(:action a{k} :parameters {params} :precondition (and {precondition}) :effect (and {effect}))")

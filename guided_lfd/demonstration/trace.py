@@ -239,10 +239,5 @@ def hand_move(frame: pd.DataFrame) -> np.ndarray:
     return out
 
 
-def speed_threshold_note() -> str:
-    """One line for reports: how hand_move is derived."""
-    return (f"hand_move: speed over a {MOVE_WINDOW_S * 1000:.0f} ms window > {MOVE_THRESHOLD_M_S:g} m/s")
-
-
 __all__ = ["Demonstration", "load_demonstration", "load_state", "parse_fluent", "hand_move",
            "TRACE_COLUMNS", "STATE_COLUMNS", "MOVE_THRESHOLD_M_S", "MOVE_WINDOW_S"]

@@ -22,9 +22,6 @@ from guided_lfd.grounding import GroundAction, GroundTask, bits, ground
 from guided_lfd.pddl.model import Atom, Domain, Literal, Problem, pretty_atom
 from guided_lfd.validate import PlanStep
 
-#: Outcome statuses of an excuse search, as written in the JSON document.
-STATUSES = ("already-solvable", "excuse-found", "no-excuse", "no-excuse-within-size", "timeout")
-
 
 @dataclass
 class ExcuseOptions:
@@ -63,10 +60,6 @@ class Excuse:
     @property
     def size(self) -> int:
         return len(self.changes)
-
-    def describe(self, spellings: dict[str, str]) -> list[str]:
-        """The changes in the paper's words (``Open PinkDrawer``)."""
-        return [describe_change(c, spellings) for c in self.changes]
 
 
 def describe_change(change: Change, spellings: dict[str, str]) -> str:

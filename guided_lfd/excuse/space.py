@@ -69,10 +69,6 @@ class ChangeSpace:
         self.weights = {i: self.costs.get(i, 1) * self.size_factor + 1 for i in bits(self.changeable)}
 
     # -- measures of a change set ---------------------------------------------
-    def weight(self, changes: int) -> int:
-        """Combined cost/size weight of a change set."""
-        return sum(self.weights[i] for i in bits(changes))
-
     def cost(self, changes: int) -> int:
         """User-facing cost of a change set (sum of ``--cost`` values, default 1 each)."""
         return sum(self.costs.get(i, 1) for i in bits(changes))
