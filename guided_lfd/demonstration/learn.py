@@ -11,7 +11,9 @@ holds) is a demonstrated action:
   object whose fluents change), changed or not (``clear`` of the drawer),
   plus the hand's state (``in_hand``/``hand_free``);
 * effects are the changes over the segment to fluents of the objects the
-  hand handles, and to the hand's state;
+  hand handles, and to the hand's state; what the skill makes true must have
+  been false before it (a negative precondition, as action-model learners do);
+* a Put (or Stack) and the Release that ends it are one skill;
 * objects are lifted to typed parameters; repeated demonstrations of a skill
   (same name and parameter types) are generalised by intersecting their
   preconditions and effects.
@@ -34,7 +36,7 @@ class DemonstratedAction:
 
     name: str
     objects: tuple[str, ...]
-    precondition: frozenset[Atom]
+    precondition: frozenset[Literal]
     add: frozenset[Atom]
     delete: frozenset[Atom]
     source: str
@@ -44,13 +46,33 @@ def _hand_fluents(held: str) -> set[Atom]:
     return {Atom("in_hand", (held,))} if held else {Atom("hand_free")}
 
 
+def skill_segments(segments: list[dict]) -> list[dict]:
+    """Segments as skills: a Put or Stack and the Release that ends it are one skill.
+
+    Putting something somewhere includes letting go of it; the Release only
+    shows when the hand opens.  Idle segments are dropped.
+    """
+    out: list[dict] = []
+    last: dict[str, dict] = {}
+    for seg in segments:
+        if seg["activity"] in SKIPPED:
+            continue
+        prev = last.get(seg["hand"])
+        if seg["activity"] == "Release" and prev is not None and prev["activity"] in ("Put", "Stack"):
+            merged = dict(prev, end=seg["end"], after=seg["after"], held_after=seg.get("held_after", ""))
+            out[out.index(prev)] = merged
+            last[seg["hand"]] = merged
+            continue
+        out.append(seg)
+        last[seg["hand"]] = seg
+    return out
+
+
 def ground_actions(document: dict, source: str = "segments") -> list[DemonstratedAction]:
     """The demonstrated actions of one ``guided-lfd/segments`` document."""
     types: dict[str, str] = document.get("objects", {})
     out: list[DemonstratedAction] = []
-    for seg in document.get("segments", []):
-        if seg["activity"] in SKIPPED:
-            continue
+    for seg in skill_segments(document.get("segments", [])):
         before = {_atom(a, source) for a in seg["before"]}
         after = {_atom(a, source) for a in seg["after"]}
         hand_before = _hand_fluents(seg.get("held_before", ""))
@@ -66,7 +88,9 @@ def ground_actions(document: dict, source: str = "segments") -> list[Demonstrate
         if not add and not delete:
             continue  # e.g. a Reach: moves the hand, changes nothing symbolic
         interest = handled | {arg for atom in add | delete for arg in atom.args}
-        pre = {a for a in before if set(a.args) & interest} | hand_before
+        pre = {Literal(a) for a in before if set(a.args) & interest} | {Literal(a) for a in hand_before}
+        # What the skill makes true was false before it (the drawer was closed).
+        pre |= {Literal(a, False) for a in env_add}
         others = sorted(interest - set(roles))
         objects = tuple(dict.fromkeys(roles + others))
         name = "_".join([seg["activity"].lower(), *(types.get(o, "object") for o in roles)])
@@ -85,7 +109,8 @@ def _atom(text: str, source: str) -> Atom:
 def lift(action: DemonstratedAction, types: dict[str, str]) -> ActionSchema:
     """Objects become typed parameters ``?o1 ...`` in order of their role."""
     variables = {o: f"?o{i + 1}" for i, o in enumerate(action.objects)}
-    extra = sorted({a for atom in action.precondition | action.add | action.delete for a in atom.args} - set(variables))
+    atoms = [lit.atom for lit in action.precondition] + list(action.add) + list(action.delete)
+    extra = sorted({a for atom in atoms for a in atom.args} - set(variables))
     for o in extra:
         variables[o] = f"?o{len(variables) + 1}"
     binding = dict(variables)
@@ -93,7 +118,7 @@ def lift(action: DemonstratedAction, types: dict[str, str]) -> ActionSchema:
     return ActionSchema(
         name=action.name,
         params=params,
-        precondition=tuple(sorted(Literal(a.substitute(binding)) for a in action.precondition)),
+        precondition=tuple(sorted(lit.substitute(binding) for lit in action.precondition)),
         add=tuple(sorted(a.substitute(binding) for a in action.add)),
         delete=tuple(sorted(a.substitute(binding) for a in action.delete)),
         origin=action.source,
@@ -151,10 +176,12 @@ def learn_domain(documents: list[tuple[str, dict]], prior: Domain | None = None,
     if prior is not None:
         known = {a.name for a in prior.actions}
         renamed = [a if a.name not in known else replace(a, name=f"{a.name}_demo") for a in learned]
-        return replace(prior, predicates={**predicates, **prior.predicates},
+        reqs = tuple(dict.fromkeys([*prior.requirements, ":negative-preconditions"]))
+        return replace(prior, requirements=reqs, predicates={**predicates, **prior.predicates},
                        actions=[*prior.actions, *renamed], path="<learned>")
     type_decl: dict[str, str | None] = {"object": None}
     for t in sorted(set(types.values())):
         type_decl[t] = "object"
-    return Domain(name=name, requirements=(":strips", ":typing"), types=type_decl, constants={},
+    return Domain(name=name, requirements=(":strips", ":typing", ":negative-preconditions"), types=type_decl,
+                  constants={},
                   predicates=predicates, actions=learned, path="<learned>")
