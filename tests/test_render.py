@@ -118,3 +118,33 @@ def test_learn_domain_rejects_non_segment_input(runner, app, tmp_path):
     result = runner.invoke(app, ["learn-domain", str(bad)])
     assert result.exit_code == 36
     assert "x.json:1:2: trace error: not JSON" in result.stderr
+
+
+@pytest.mark.parametrize("kitchen_n", [1, 2])
+def test_excuse_demonstration_of_a_human_plan_teaches_the_robot(tmp_path, runner, app, kitchen_n):
+    """Render the human's plan to the excuse state, learn from it, merge: the robot solves the task."""
+    from conftest import kitchen
+    from guided_lfd.demonstration.learn import learn_domain
+    from guided_lfd.demonstration.render import script_for_plan
+    from guided_lfd.demonstration.segment import segments_document
+    from guided_lfd.pddl.reader import parse_task
+    from guided_lfd.pddl.writer import domain_to_pddl
+
+    human, problem = parse_task(*kitchen(kitchen_n, "human"))
+    robot, _ = parse_task(*kitchen(kitchen_n))
+    # The human's plans to reach the minimal excuse of each kitchen.
+    plan = {1: [("open_drawer", ("pinkdrawer",))],
+            2: [("move_chair", ("chair", "pinkdrawer", "corner"))]}[kitchen_n]
+    scene = Scene(
+        positions={"redplate": (0.5, 0.2, 0.8), "table": (0.5, 0.2, 0.75), "counter": (0.9, 0.2, 0.9),
+                   "pinkdrawer": (-0.1, 0.45, 0.6), "bluedrawer": (-0.4, 0.45, 0.6), "corner": (-1.0, -0.5, 0.5),
+                   "chair": (-0.1, 0.1, 0.5)},
+        types={**problem.objects}, spellings=problem.spellings)
+    steps = script_for_plan(plan, human, set(problem.init))
+    rendering = render(steps, scene, set(problem.init), noise=Noise(seed=kitchen_n))
+    demo = write(tmp_path, rendering)
+    doc = segments_document(demo, segment(demo), "demo.state.csv")
+    merged = learn_domain([("demo", doc)], prior=robot)
+    (tmp_path / "merged.pddl").write_text(domain_to_pddl(merged))
+    result = runner.invoke(app, ["plan", str(tmp_path / "merged.pddl"), kitchen(kitchen_n)[1]])
+    assert result.exit_code == 0, result.stderr

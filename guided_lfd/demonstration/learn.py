@@ -79,10 +79,13 @@ def ground_actions(document: dict, source: str = "segments") -> list[Demonstrate
         hand_after = _hand_fluents(seg.get("held_after", ""))
         roles = [o for o in (seg.get("object", ""), seg.get("target", "")) if o]
         handled = set(roles) | {o for o in (seg.get("held_before", ""), seg.get("held_after", "")) if o}
-        # Only changes to what the hand handles are its effects (the other hand
-        # may change something at the same time).
-        env_add = {a for a in after - before if set(a.args) & handled}
-        env_del = {a for a in before - after if set(a.args) & handled}
+        # Only changes to what the hand handles, or to objects a changed fluent
+        # links to it (the drawer the chair stops blocking), are its effects:
+        # the other hand may change something at the same time.
+        changed = (after - before) | (before - after)
+        linked = handled | {x for a in changed if set(a.args) & handled for x in a.args}
+        env_add = {a for a in after - before if set(a.args) & linked}
+        env_del = {a for a in before - after if set(a.args) & linked}
         add = env_add | (hand_after - hand_before)
         delete = env_del | (hand_before - hand_after)
         if not add and not delete:

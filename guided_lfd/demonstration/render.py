@@ -33,7 +33,7 @@ class Step:
     end (``Release`` registers where the object now is at its start).
     """
 
-    activity: str  # Idle, Reach, Take, Put, Release, Open, Close
+    activity: str  # Idle, Reach, Take, Put, Release, Open, Close, Push
     obj: str = ""
     target: str = ""
     duration: float = 1.0
@@ -115,6 +115,10 @@ def render(steps: list[Step], scene: Scene, initial: set[Atom], rate_hz: float =
             direction = np.array(scene.pull) * (1 if step.activity == "Open" else -1)
             path = minimum_jerk(start, start + direction, s)
             grip, act_on = True, step.obj
+        elif step.activity == "Push":
+            goal = np.array(scene.positions[step.target]) + np.array([0.0, -0.4, 0.0])
+            path = minimum_jerk(start, goal, s)
+            grip, act_on = True, step.obj
         elif step.activity == "Idle":
             path = minimum_jerk(start, np.array(scene.rest[hand]), np.clip(s * 3, 0, 1))
             act_on = ""
@@ -192,3 +196,47 @@ def frame_f1(truth: list[str], predicted: list[str]) -> float:
         fn = sum(1 for a, b in zip(truth, predicted) if a == label and b != label)
         scores.append(0.0 if tp == 0 else 2 * tp / (2 * tp + fp + fn))
     return sum(scores) / len(scores) if scores else 1.0
+
+
+def script_for_plan(plan: list[tuple[str, tuple[str, ...]]], domain, state: set[Atom],
+                    pause: float = 0.4) -> list[Step]:
+    """Hand activities that demonstrate a plan of ``domain`` from ``state``.
+
+    Each action becomes the activities a person performs for it, read off
+    its effects: making ``in_hand`` true is Reach + Take; giving up
+    ``in_hand`` is Put + Release; changing ``open`` is Reach + Open/Close +
+    Release; moving an object the hand does not hold (the chair) is Reach +
+    Push + Release.  Fluent changes are attached to the activity that causes
+    them.  Idle pauses separate the actions.
+    """
+    schemas = {a.name: a for a in domain.actions}
+    current = set(state)
+    steps: list[Step] = [Step("Idle", duration=pause)]
+    for name, args in plan:
+        schema = schemas[name]
+        binding = {v: a for (v, _), a in zip(schema.params, args)}
+        adds = {a.substitute(binding) for a in schema.add}
+        dels = {a.substitute(binding) for a in schema.delete}
+        env = [(a, True) for a in sorted(adds - current) if a.predicate not in ("in_hand", "hand_free")]
+        env += [(a, False) for a in sorted(dels & current) if a.predicate not in ("in_hand", "hand_free")]
+        taken = [a.args[0] for a in adds if a.predicate == "in_hand"]
+        given = [a.args[0] for a in dels if a.predicate == "in_hand"]
+        opened = [a for a, _ in env if a.predicate == "open"]
+        if taken:
+            steps += [Step("Reach", taken[0], duration=1.0), Step("Take", taken[0], duration=0.5, changes=env)]
+        elif given:
+            target = next((x for a, _ in env for x in a.args if x != given[0]), "")
+            steps += [Step("Put", given[0], target, duration=1.2), Step("Release", duration=0.6, changes=env)]
+        elif opened:
+            obj = opened[0].args[0]
+            kind = "Open" if (opened[0], True) in env else "Close"
+            steps += [Step("Reach", obj, duration=1.0), Step(kind, obj, duration=0.8, changes=env),
+                      Step("Release", duration=0.6)]
+        else:
+            moved = args[0]
+            target = next((a.args[-1] for a, value in env if value and moved in a.args), "")
+            steps += [Step("Reach", moved, duration=1.0), Step("Push", moved, target, duration=1.4, changes=env),
+                      Step("Release", duration=0.6)]
+        current = (current - dels) | adds
+        steps.append(Step("Idle", duration=pause))
+    return steps

@@ -6,8 +6,8 @@ labelled by a small decision tree over ``hand_move``, ``in_hand``, ``act_on``
 and the grip:
 
 * object in hand:            moving -> ``Put`` (``Stack`` onto an item), still -> ``Take``
-* no object, grip closed on ``act_on`` (a handle): ``Manipulate``, named at
-  segment level after the fluent it changes (``Open``, ``Close``)
+* no object, grip closed on ``act_on`` (a handle, a chair): ``Manipulate``,
+  named at segment level after what it changes (``Open``, ``Close``, ``Push``)
 * no object, moving toward ``act_on``: ``Reach``; moving, nothing targeted: ``Release``
   (the hand withdrawing), still: ``Idle`` (still at a target: ``Reach``)
 
@@ -26,7 +26,7 @@ import numpy as np
 from guided_lfd.demonstration.trace import Demonstration
 from guided_lfd.pddl.model import Atom
 
-ACTIVITIES = ("Idle", "Reach", "Take", "Put", "Stack", "Release", "Open", "Close", "Manipulate")
+ACTIVITIES = ("Idle", "Reach", "Take", "Put", "Stack", "Release", "Open", "Close", "Push", "Manipulate")
 #: Runs shorter than this are jitter and merge into their neighbours (s).
 MIN_SEGMENT_S = 0.15
 #: Frame gaps up to this long (dropped frames) do not split a segment (s).
@@ -174,10 +174,13 @@ def _roles(label: str, held, target) -> tuple[str, str]:
 
 
 def _name_manipulation(obj: str, before: frozenset[Atom], after: frozenset[Atom]) -> str:
+    """Open/Close for a drawer's ``open`` fluent, Push when the object moved otherwise."""
     if Atom("open", (obj,)) in after - before:
         return "Open"
     if Atom("open", (obj,)) in before - after:
         return "Close"
+    if any(obj in a.args for a in after ^ before):
+        return "Push"
     return "Manipulate"
 
 
