@@ -6,7 +6,7 @@ VENV   ?= .venv
 BIN     = $(VENV)/bin
 JOBS   ?= 2
 
-.PHONY: setup demo test test-slow clean
+.PHONY: setup demo demos test test-slow clean
 
 $(BIN)/guided-lfd: pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -23,6 +23,9 @@ demo: setup
 	$(BIN)/guided-lfd excuse data/domains/kitchen-2/robot.pddl data/domains/kitchen-2/problem.pddl
 	@echo "== Kitchen II, as JSON"
 	$(BIN)/guided-lfd excuse data/domains/kitchen-2/robot.pddl data/domains/kitchen-2/problem.pddl --json --quiet
+
+demos: setup
+	$(BIN)/python -m guided_lfd.demonstration.study_data data/demos
 
 test: setup
 	$(BIN)/python -m pytest -q -n $(JOBS)
