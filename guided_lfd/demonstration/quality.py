@@ -1,0 +1,133 @@
+"""How well demonstrations are segmented and learned: the #4 quality report.
+
+``python -m guided_lfd.demonstration.quality`` prints, for the shipped
+demonstrations, the frame-level activity F1 against the rendered ground truth,
+whether the segment count matches exactly, and the precision and recall of
+the learned actions' preconditions and effects against the human domain (the
+measures of action-model-learning benchmarks).
+"""
+
+from __future__ import annotations
+
+import csv
+import itertools
+from dataclasses import dataclass
+from pathlib import Path
+
+from guided_lfd.demonstration.learn import learn_domain
+from guided_lfd.demonstration.render import frame_f1
+from guided_lfd.demonstration.segment import Segment, segment, segments_document
+from guided_lfd.demonstration.trace import load_demonstration
+from guided_lfd.pddl.model import ActionSchema, Domain
+from guided_lfd.pddl.reader import parse_domain
+
+
+@dataclass
+class SegmentationQuality:
+    """Segmentation of one rendered demonstration against its labels."""
+
+    name: str
+    f1: float
+    truth_segments: int
+    segments: int
+
+
+def segmentation_quality(trace: Path) -> SegmentationQuality:
+    """Frame F1 and segment counts of one demonstration with a ``.labels.csv``."""
+    demo = load_demonstration(str(trace))
+    segments = segment(demo)
+    labels = list(csv.DictReader(open(str(trace).replace(".csv", ".labels.csv"), encoding="utf-8")))
+    truth, predicted = [], []
+    for row in labels:
+        t, hand = float(row["time"]), row["hand"]
+        match = [s for s in segments if s.hand == hand and s.start - 1e-6 <= t <= s.end + 1e-6]
+        truth.append(row["activity"])
+        predicted.append(match[0].activity if match else "Idle")
+    count = 0
+    for hand in ("left", "right"):
+        seq = [r["activity"] for r in labels if r["hand"] == hand]
+        count += sum(1 for i, a in enumerate(seq) if a != "Idle" and (i == 0 or seq[i - 1] != a))
+    return SegmentationQuality(f"{trace.parent.name}/{trace.stem}", frame_f1(truth, predicted), count,
+                               sum(1 for s in segments if s.activity != "Idle"))
+
+
+def _sets(action: ActionSchema, mapping: dict[str, str]):
+    pre = {l.substitute(mapping) for l in action.precondition}
+    eff = {("+", a.substitute(mapping)) for a in action.add} | {("-", a.substitute(mapping)) for a in action.delete}
+    return pre, eff
+
+
+def compare_actions(learned: ActionSchema, reference: ActionSchema) -> tuple[int, int, int, int, int, int] | None:
+    """(pre TP, FP, FN, effect TP, FP, FN) under the best parameter mapping, None if no effect matches."""
+    ref_pre, ref_eff = _sets(reference, {})
+    best = None
+    params = [v for v, _ in learned.params]
+    for target in itertools.permutations([v for v, _ in reference.params] + [f"?free{i}" for i in range(len(params))],
+                                         len(params)):
+        pre, eff = _sets(learned, dict(zip(params, target)))
+        score = (len(eff & ref_eff), len(pre & ref_pre))
+        if best is None or score > best[0]:
+            best = (score, pre, eff)
+    if best is None or best[0][0] == 0:
+        return None
+    _, pre, eff = best
+    return (len(pre & ref_pre), len(pre - ref_pre), len(ref_pre - pre),
+            len(eff & ref_eff), len(eff - ref_eff), len(ref_eff - eff))
+
+
+def learning_quality(learned: Domain, reference: Domain) -> dict[str, float | list[str]]:
+    """Pooled precision and recall of preconditions and effects over matched actions."""
+    totals = [0] * 6
+    matched: list[str] = []
+    for act in learned.actions:
+        scores = [(compare_actions(act, ref), ref.name) for ref in reference.actions]
+        scores = [(s, n) for s, n in scores if s is not None]
+        if not scores:
+            continue
+        (s, name) = max(scores, key=lambda x: (x[0][3] - x[0][4] - x[0][5], x[0][0] - x[0][1] - x[0][2]))
+        matched.append(f"{act.name} ~ {name}")
+        totals = [a + b for a, b in zip(totals, s)]
+    tp, fp, fn, etp, efp, efn = totals
+
+    def ratio(a: int, b: int) -> float:
+        return a / b if b else 1.0
+
+    return {"pre_precision": ratio(tp, tp + fp), "pre_recall": ratio(tp, tp + fn),
+            "eff_precision": ratio(etp, etp + efp), "eff_recall": ratio(etp, etp + efn), "matched": matched}
+
+
+def main(argv: list[str] | None = None) -> int:
+    """Print the quality report for ``data/demos``."""
+    demos = Path(argv[0]) if argv else Path("data/demos")
+    print("| demonstration | frame F1 | segments (truth / found) |")
+    print("|---|---|---|")
+    rows = []
+    for trace in sorted(p for p in demos.glob("*/*.csv") if not p.name.endswith((".state.csv", ".labels.csv"))):
+        q = segmentation_quality(trace)
+        rows.append(q)
+        print(f"| {q.name} | {q.f1:.3f} | {q.truth_segments} / {q.segments} |")
+    exact = sum(q.truth_segments == q.segments for q in rows)
+    print(f"\nsegment counts exact: {exact} / {len(rows)}; minimum frame F1 {min(q.f1 for q in rows):.3f}\n")
+    for kitchen in sorted({p.parent.name for p in demos.glob("*/*.csv")}):
+        documents = []
+        for trace in sorted((demos / kitchen).glob("P*-*.csv")):
+            if trace.name.endswith((".state.csv", ".labels.csv")) or trace.stem == "P3-complete":
+                continue  # P3's complete demonstrations are not processable (two hands at once)
+            demo = load_demonstration(str(trace))
+            documents.append((trace.name, segments_document(demo, segment(demo), "")))
+        learned = learn_domain(documents)
+        human = parse_domain(Path("data/domains") / kitchen / "human.pddl")
+        report = learning_quality(learned, human)
+        print(f"{kitchen}: preconditions precision {report['pre_precision']:.2f} recall {report['pre_recall']:.2f}; "
+              f"effects precision {report['eff_precision']:.2f} recall {report['eff_recall']:.2f}; "
+              f"{', '.join(report['matched'])}")
+    return 0
+
+
+if __name__ == "__main__":
+    import sys
+
+    raise SystemExit(main(sys.argv[1:]))
+
+
+__all__ = ["Segment", "segmentation_quality", "learning_quality", "compare_actions"]
