@@ -28,6 +28,8 @@ from guided_lfd.pddl.model import ActionSchema, Atom, Domain, Literal, Predicate
 
 #: Activities that are never planning actions.
 SKIPPED = ("Idle",)
+#: Fluents of the hand: derived from what the trace says the hand holds.
+HAND_PREDICATES = ("in_hand", "hand_free")
 
 
 @dataclass(frozen=True)
@@ -73,8 +75,9 @@ def ground_actions(document: dict, source: str = "segments") -> list[Demonstrate
     types: dict[str, str] = document.get("objects", {})
     out: list[DemonstratedAction] = []
     for seg in skill_segments(document.get("segments", [])):
-        before = {_atom(a, source) for a in seg["before"]}
-        after = {_atom(a, source) for a in seg["after"]}
+        # The hand's fluents come from the trace, never from the environment state.
+        before = {a for a in (_atom(x, source) for x in seg["before"]) if a.predicate not in HAND_PREDICATES}
+        after = {a for a in (_atom(x, source) for x in seg["after"]) if a.predicate not in HAND_PREDICATES}
         hand_before = _hand_fluents(seg.get("held_before", ""))
         hand_after = _hand_fluents(seg.get("held_after", ""))
         roles = [o for o in (seg.get("object", ""), seg.get("target", "")) if o]
@@ -91,7 +94,10 @@ def ground_actions(document: dict, source: str = "segments") -> list[Demonstrate
         if not add and not delete:
             continue  # e.g. a Reach: moves the hand, changes nothing symbolic
         interest = handled | {arg for atom in add | delete for arg in atom.args}
-        pre = {Literal(a) for a in before if set(a.args) & interest} | {Literal(a) for a in hand_before}
+        # Nodes of interest: fluents about the objects the action involves, all
+        # of whose arguments it involves (so opening a drawer does not depend on
+        # which plate happens to lie in it).
+        pre = {Literal(a) for a in before if set(a.args) <= interest} | {Literal(a) for a in hand_before}
         # What the skill makes true was false before it (the drawer was closed).
         pre |= {Literal(a, False) for a in env_add}
         others = sorted(interest - set(roles))

@@ -23,6 +23,8 @@ import numpy as np
 from guided_lfd.pddl.model import Atom
 
 Vec = tuple[float, float, float]
+#: Fluents of the hand, derived from the trace's ``in_hand`` column.
+HAND_PREDICATES = ("in_hand", "hand_free")
 
 
 @dataclass
@@ -89,8 +91,12 @@ def render(steps: list[Step], scene: Scene, initial: set[Atom], rate_hz: float =
     rows: list[tuple] = []  # (time, hand, pos, grip, in_hand, act_on, label)
     events: list[tuple[float, Atom, bool]] = []
     t = 0.0
+    ideal = 0.0  # frames are counted on the cumulative time, so rounding never accumulates
+    frame = 0
     for step in steps:
-        n = max(2, int(round(step.duration * rate_hz)))
+        ideal += step.duration
+        n = max(2, int(round(ideal * rate_hz)) - frame)
+        frame += n
         times = t + dt * np.arange(n)
         s = np.linspace(0.0, 1.0, n)
         hand = step.hand
@@ -120,9 +126,14 @@ def render(steps: list[Step], scene: Scene, initial: set[Atom], rate_hz: float =
             path = minimum_jerk(start, goal, s)
             grip, act_on = True, step.obj
         elif step.activity == "Idle":
-            path = minimum_jerk(start, np.array(scene.rest[hand]), np.clip(s * 3, 0, 1))
             act_on = ""
-            label = "Idle"
+            if held[hand]:
+                # Holding still keeps the object (the activity model calls it Take).
+                path = np.repeat(start[None, :], n, axis=0)
+                grip, in_hand, label = True, held[hand], "Take"
+            else:
+                path = minimum_jerk(start, np.array(scene.rest[hand]), np.clip(s * 3, 0, 1))
+                label = "Idle"
         else:
             raise ValueError(f"cannot render activity {step.activity!r}")
         if step.activity == "Release":
@@ -172,6 +183,8 @@ def _state_csv(scene: Scene, initial: set[Atom], events) -> str:
     for obj in sorted(scene.types):
         writer.writerow(["0", f"object({_name(scene, obj)},{scene.types[obj]})", "true"])
     for atom in sorted(initial):
+        if atom.predicate in HAND_PREDICATES:
+            continue  # the hand's state is in the trace (in_hand), not the environment
         writer.writerow(["0", _fluent(atom, scene), "true"])
     for time, atom, value in sorted(events, key=lambda e: (e[0], e[1])):
         writer.writerow([f"{time:.4f}", _fluent(atom, scene), "true" if value else "false"])
@@ -238,5 +251,6 @@ def script_for_plan(plan: list[tuple[str, tuple[str, ...]]], domain, state: set[
             steps += [Step("Reach", moved, duration=1.0), Step("Push", moved, target, duration=1.4, changes=env),
                       Step("Release", duration=0.6)]
         current = (current - dels) | adds
-        steps.append(Step("Idle", duration=pause))
+        if not taken:  # no pause while carrying something
+            steps.append(Step("Idle", duration=pause))
     return steps
