@@ -148,3 +148,23 @@ def test_excuse_demonstration_of_a_human_plan_teaches_the_robot(tmp_path, runner
     (tmp_path / "merged.pddl").write_text(domain_to_pddl(merged))
     result = runner.invoke(app, ["plan", str(tmp_path / "merged.pddl"), kitchen(kitchen_n)[1]])
     assert result.exit_code == 0, result.stderr
+
+
+def test_generalise_aligns_repeats_and_keeps_names_unique():
+    from guided_lfd.demonstration.learn import generalise
+    from guided_lfd.pddl.model import ActionSchema, Literal
+
+    # The same push demonstrated twice with the extra objects in swapped order.
+    a = ActionSchema("push", (("?o1", "obstacle"), ("?o2", "furniture"), ("?o3", "drawer")),
+                     (Literal(Atom("blocking", ("?o1", "?o3"))),), (Atom("blocking", ("?o1", "?o2")),),
+                     (Atom("blocking", ("?o1", "?o3")),))
+    b = ActionSchema("push", (("?o1", "obstacle"), ("?o2", "furniture"), ("?o3", "surface")),
+                     (Literal(Atom("blocking", ("?o1", "?o2"))),), (Atom("blocking", ("?o1", "?o3")),),
+                     (Atom("blocking", ("?o1", "?o2")),))
+    c = ActionSchema("push", (("?o1", "obstacle"),), (), (Atom("clear", ("?o1",)),), ())
+    parents = {"furniture": "object", "drawer": "furniture", "surface": "furniture", "obstacle": "object"}
+    out = generalise([a, b, c], parents)
+    assert [x.name for x in out] == ["push", "push_2"]
+    merged = out[0]
+    assert merged.add == (Atom("blocking", ("?o1", "?o2")),) and merged.delete == (Atom("blocking", ("?o1", "?o3")),)
+    assert dict(merged.params)["?o3"] == "furniture"  # drawer and surface generalise to furniture

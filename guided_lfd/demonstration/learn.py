@@ -134,27 +134,67 @@ def lift(action: DemonstratedAction, types: dict[str, str]) -> ActionSchema:
     )
 
 
-def generalise(actions: list[ActionSchema]) -> list[ActionSchema]:
-    """One schema per skill: preconditions and effects intersected over demonstrations."""
+def _aligned(base: ActionSchema, other: ActionSchema) -> dict[str, str] | None:
+    """The renaming of ``other``'s parameters that best agrees with ``base`` (effects first)."""
+    import itertools
+
+    best, best_score = None, None
+    names = [v for v, _ in other.params]
+    base_eff = {("+", a) for a in base.add} | {("-", a) for a in base.delete}
+    base_pre = set(base.precondition)
+    for perm in itertools.permutations([v for v, _ in base.params]):
+        mapping = dict(zip(names, perm))
+        eff = {("+", a.substitute(mapping)) for a in other.add} | {("-", a.substitute(mapping)) for a in other.delete}
+        pre = {l.substitute(mapping) for l in other.precondition}
+        score = (len(eff & base_eff), len(pre & base_pre))
+        if best_score is None or score > best_score:
+            best, best_score = mapping, score
+    return best
+
+
+def _common_type(a: str, b: str, parents: dict[str, str | None]) -> str:
+    """The closest common supertype (``object`` without a hierarchy)."""
+    def chain(t: str) -> list[str]:
+        out = [t]
+        while parents.get(out[-1]) is not None and out[-1] != "object":
+            out.append(parents[out[-1]])  # type: ignore[arg-type]
+        return out + ["object"]
+
+    up = chain(b)
+    return next((t for t in chain(a) if t in up), "object")
+
+
+def generalise(actions: list[ActionSchema], parents: dict[str, str | None] | None = None) -> list[ActionSchema]:
+    """One schema per skill (name and arity): repeats are aligned and intersected.
+
+    Each repeat's parameters are renamed to agree best with the first
+    demonstration (effects first, then preconditions); preconditions and
+    effects are intersected; differing parameter types become their closest
+    common supertype (from ``parents``, else ``object``).
+    """
+    parents = parents or {}
     groups: dict[tuple, list[ActionSchema]] = {}
     for act in actions:
-        groups.setdefault((act.name, tuple(t for _, t in act.params)), []).append(act)
+        groups.setdefault((act.name, len(act.params)), []).append(act)
     out: list[ActionSchema] = []
-    names: dict[str, int] = {}
+    used: dict[str, int] = {}
     for (name, _), acts in groups.items():
+        used[name] = used.get(name, 0) + 1
+        unique = name if used[name] == 1 else f"{name}_{used[name]}"  # same skill name, other arity
         first = acts[0]
-        pre = set(first.precondition)
-        add = set(first.add)
-        dele = set(first.delete)
+        types = dict(first.params)
+        pre, add, dele = set(first.precondition), set(first.add), set(first.delete)
         for other in acts[1:]:
-            pre &= set(other.precondition)
-            add &= set(other.add)
-            dele &= set(other.delete)
-        k = names.get(name, 0)
-        names[name] = k + 1
+            mapping = _aligned(first, other) or {}
+            for var, typ in other.params:
+                target = mapping.get(var, var)
+                types[target] = _common_type(types[target], typ, parents)
+            pre &= {l.substitute(mapping) for l in other.precondition}
+            add &= {a.substitute(mapping) for a in other.add}
+            dele &= {a.substitute(mapping) for a in other.delete}
         origin = f"learned from {len(acts)} demonstration(s): " + "; ".join(a.origin or "" for a in acts[:3])
-        out.append(ActionSchema(name if k == 0 else f"{name}_{k + 1}", first.params, tuple(sorted(pre)),
-                                tuple(sorted(add)), tuple(sorted(dele)), origin))
+        params = tuple((v, types[v]) for v, _ in first.params)
+        out.append(ActionSchema(unique, params, tuple(sorted(pre)), tuple(sorted(add)), tuple(sorted(dele)), origin))
     return out
 
 
@@ -169,7 +209,7 @@ def learn_domain(documents: list[tuple[str, dict]], prior: Domain | None = None,
     for source, doc in documents:
         types.update(doc.get("objects", {}))
         lifted += [lift(a, doc.get("objects", {})) for a in ground_actions(doc, source)]
-    learned = generalise(lifted)
+    learned = generalise(lifted, prior.types if prior is not None else None)
     predicates: dict[str, Predicate] = {}
     for act in learned:
         ptypes = dict(act.params)
