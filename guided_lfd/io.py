@@ -29,12 +29,8 @@ def write_text(path: str | Path, text: str) -> None:
     if name == "-":
         _write_stdout(text)
         return
-    if name.endswith(("/", os.sep)) or not Path(name).name:
-        raise OutputError("expected a file name, got a folder", Location(name))
-    target = Path(os.path.realpath(name))
+    target = _output_target(name)
     try:
-        if target.is_dir():
-            raise OutputError("is a directory, expected a file name", Location(name))
         if target.exists() and not target.is_file():
             with open(target, "w", encoding="utf-8") as fh:  # device or FIFO: write in place
                 fh.write(text)
@@ -62,6 +58,16 @@ def write_text(path: str | Path, text: str) -> None:
         raise
 
 
+def _output_target(name: str) -> Path:
+    """The file an output name stands for (links followed); refuses folders."""
+    if name.endswith(("/", os.sep)) or not Path(name).name:
+        raise OutputError("expected a file name, got a folder", Location(name))
+    target = Path(os.path.realpath(name))
+    if target.is_dir():
+        raise OutputError("is a directory, expected a file name", Location(name))
+    return target
+
+
 def _default_mode() -> int:
     umask = os.umask(0)
     os.umask(umask)
@@ -87,11 +93,7 @@ def check_writable(path: str | Path) -> None:
     name = str(path)
     if name == "-":
         return
-    if name.endswith(("/", os.sep)) or not Path(name).name:
-        raise OutputError("expected a file name, got a folder", Location(name))
-    target = Path(os.path.realpath(name))
-    if target.is_dir():
-        raise OutputError("is a directory, expected a file name", Location(name))
+    target = _output_target(name)
     if not target.parent.is_dir():
         raise OutputError("its folder does not exist", Location(name))
     if len(target.name) > 200:

@@ -23,13 +23,12 @@ from __future__ import annotations
 
 from dataclasses import dataclass, replace
 
+from guided_lfd.demonstration.trace import HAND_PREDICATES
 from guided_lfd.errors import Location, TraceError
 from guided_lfd.pddl.model import ActionSchema, Atom, Domain, Literal, Predicate
 
 #: Activities that are never planning actions.
 SKIPPED = ("Idle",)
-#: Fluents of the hand: derived from what the trace says the hand holds.
-HAND_PREDICATES = ("in_hand", "hand_free")
 
 
 @dataclass(frozen=True)

@@ -20,11 +20,10 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from guided_lfd.demonstration.trace import HAND_PREDICATES
 from guided_lfd.pddl.model import Atom
 
 Vec = tuple[float, float, float]
-#: Fluents of the hand, derived from the trace's ``in_hand`` column.
-HAND_PREDICATES = ("in_hand", "hand_free")
 
 
 @dataclass
@@ -230,8 +229,8 @@ def script_for_plan(plan: list[tuple[str, tuple[str, ...]]], domain, state: set[
         binding = {v: a for (v, _), a in zip(schema.params, args)}
         adds = {a.substitute(binding) for a in schema.add}
         dels = {a.substitute(binding) for a in schema.delete}
-        env = [(a, True) for a in sorted(adds - current) if a.predicate not in ("in_hand", "hand_free")]
-        env += [(a, False) for a in sorted(dels & current) if a.predicate not in ("in_hand", "hand_free")]
+        env = [(a, True) for a in sorted(adds - current) if a.predicate not in HAND_PREDICATES]
+        env += [(a, False) for a in sorted(dels & current) if a.predicate not in HAND_PREDICATES]
         taken = [a.args[0] for a in adds if a.predicate == "in_hand"]
         given = [a.args[0] for a in dels if a.predicate == "in_hand"]
         opened = [a for a, _ in env if a.predicate == "open"]

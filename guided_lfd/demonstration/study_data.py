@@ -17,10 +17,9 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from guided_lfd.demonstration.render import Noise, Scene, Step, render, script_for_plan
-from guided_lfd.grounding import ground
 from guided_lfd.pddl.model import Atom, Literal
 from guided_lfd.pddl.reader import parse_task
-from guided_lfd.planning import find_plan
+from guided_lfd.planning import plan_task
 
 DEMONSTRATORS = ("P1", "P2", "P3", "P4", "P5")
 #: Table I: demonstration time in seconds (excuse, complete) per kitchen.
@@ -63,9 +62,7 @@ class RenderedDemo:
 def _plan_to(domain, problem, goal: list[Atom]) -> list[tuple[str, tuple[str, ...]]]:
     from dataclasses import replace
 
-    target = replace(problem, goal=tuple(Literal(a) for a in goal))
-    task = ground(domain, target, fixed=domain.predicates)
-    result = find_plan(task)
+    _, result = plan_task(domain, replace(problem, goal=tuple(Literal(a) for a in goal)))
     if result.plan is None:
         raise RuntimeError(f"the human cannot reach {goal}")
     return [(a.schema, a.args) for a in result.plan]

@@ -48,6 +48,9 @@ from guided_lfd.pddl.source import read_text
 TRACE_COLUMNS = ("time", "hand", "x", "y", "z", "grip", "in_hand", "act_on")
 STATE_COLUMNS = ("time", "fluent", "value")
 HANDS = ("left", "right")
+#: Fluents of the hand: derived from the trace's ``in_hand`` column, never part
+#: of the environment state.
+HAND_PREDICATES = ("in_hand", "hand_free")
 #: Speed above which a hand counts as moving (m/s).
 MOVE_THRESHOLD_M_S = 0.10
 #: Window over which the speed is measured (s), centred on the frame.
@@ -240,4 +243,4 @@ def hand_move(frame: pd.DataFrame) -> np.ndarray:
 
 
 __all__ = ["Demonstration", "load_demonstration", "load_state", "parse_fluent", "hand_move",
-           "TRACE_COLUMNS", "STATE_COLUMNS", "MOVE_THRESHOLD_M_S", "MOVE_WINDOW_S"]
+           "TRACE_COLUMNS", "STATE_COLUMNS", "HAND_PREDICATES", "MOVE_THRESHOLD_M_S", "MOVE_WINDOW_S"]

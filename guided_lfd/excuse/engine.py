@@ -16,7 +16,9 @@ from typing import Any
 from guided_lfd.errors import SearchTimeout
 from guided_lfd.excuse.check import Change, check_excuse, excuse_state
 from guided_lfd.excuse.reach import ReachabilityOracle, relaxed_reachable
-from guided_lfd.excuse.space import ChangeSpace, MutexGroup, Semantics, build_space
+from guided_lfd.excuse.space import (
+    ChangeSpace, MutexGroup, Semantics, build_space, check_cost_predicates, check_fixed,
+)
 from guided_lfd.excuse.strategies import DEFAULT_STRATEGY, STRATEGIES, Progress, SearchLimits
 from guided_lfd.grounding import GroundAction, GroundTask, bits, ground
 from guided_lfd.pddl.model import Atom, Domain, Literal, Problem, pretty_atom
@@ -89,20 +91,8 @@ class ExcuseReport:
 
 def check_option_names(domain: Domain, options: ExcuseOptions) -> None:
     """Reject unknown predicates in --fixed and --cost before any expensive work."""
-    from guided_lfd.errors import OptionError
-
-    for pred in options.fixed:
-        if pred.lower() not in domain.predicates:
-            raise OptionError(
-                f"--fixed '{pred}': unknown predicate (expected one of: {', '.join(sorted(domain.predicates))})"
-            )
-    for spec in options.costs:
-        head = spec.split("=", 1)[0].strip()
-        if head and not head.startswith("(") and head.lower() not in domain.predicates:
-            raise OptionError(
-                f"--cost '{spec}': unknown predicate '{head}' "
-                f"(expected one of: {', '.join(sorted(domain.predicates))})"
-            )
+    check_fixed(options.fixed, domain)
+    check_cost_predicates(options.costs, domain)
 
 
 def unachievable_goals(task: GroundTask) -> list[Literal]:

@@ -20,7 +20,7 @@ from enum import Enum
 
 from guided_lfd.errors import OptionError
 from guided_lfd.grounding import GroundAction, GroundTask, bits
-from guided_lfd.pddl.model import Atom
+from guided_lfd.pddl.model import Atom, Domain
 
 
 class Semantics(str, Enum):
@@ -156,13 +156,8 @@ def parse_costs(specs: list[str], task: GroundTask) -> dict[int, int]:
                 raise OptionError(f"--cost '{spec}': {target} is not a ground atom of this task")
             atom_costs[task.index[atom]] = number
         else:
-            pred = target.lower()
-            if pred not in task.domain.predicates:
-                raise OptionError(
-                    f"--cost '{spec}': unknown predicate '{target}' "
-                    f"(expected one of: {', '.join(sorted(task.domain.predicates))})"
-                )
-            pred_costs[pred] = number
+            _check_cost_predicate(spec, target, task.domain)
+            pred_costs[target.lower()] = number
     costs: dict[int, int] = {}
     for i, atom in enumerate(task.atoms):
         if atom.predicate in pred_costs:
@@ -171,14 +166,29 @@ def parse_costs(specs: list[str], task: GroundTask) -> dict[int, int]:
     return {i: c for i, c in costs.items() if c != 1}
 
 
-def check_fixed(fixed: list[str], task: GroundTask) -> list[str]:
+def _check_cost_predicate(spec: str, target: str, domain: Domain) -> None:
+    if target.lower() not in domain.predicates:
+        raise OptionError(
+            f"--cost '{spec}': unknown predicate '{target}' (expected one of: {', '.join(sorted(domain.predicates))})"
+        )
+
+
+def check_cost_predicates(specs: list[str], domain: Domain) -> None:
+    """Reject ``--cost PRED=N`` naming an unknown predicate (cheap: no grounding needed)."""
+    for spec in specs:
+        match = _COST.match(spec)
+        if match and not match.group(1).startswith("("):
+            _check_cost_predicate(spec, match.group(1), domain)
+
+
+def check_fixed(fixed: list[str], domain: Domain) -> list[str]:
     """Validate ``--fixed`` predicate names; returns them lower-cased."""
     out = []
     for pred in fixed:
         name = pred.lower()
-        if name not in task.domain.predicates:
+        if name not in domain.predicates:
             raise OptionError(
-                f"--fixed '{pred}': unknown predicate (expected one of: {', '.join(sorted(task.domain.predicates))})"
+                f"--fixed '{pred}': unknown predicate (expected one of: {', '.join(sorted(domain.predicates))})"
             )
         out.append(name)
     return out
@@ -192,7 +202,7 @@ def build_space(
     groups: list[MutexGroup] | None = None,
 ) -> ChangeSpace:
     """Assemble the change space of a ground task."""
-    fixed_preds = set(check_fixed(list(fixed), task))
+    fixed_preds = set(check_fixed(list(fixed), task.domain))
     changeable = 0
     for i, atom in enumerate(task.atoms):
         if atom.predicate not in fixed_preds and atom.predicate in task.domain.predicates:

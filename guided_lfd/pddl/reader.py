@@ -116,16 +116,24 @@ def _lists(src: SourceMap):
 _TARSKI_POS = re.compile(r"line (\d+):(\d+) (.*)")
 
 
+@contextmanager
+def _temp_pddl(text: str) -> Iterator[str]:
+    """A temporary file holding ``text``: tarski reads files, we have text (stdin too)."""
+    fd, tmp = tempfile.mkstemp(suffix=".pddl", text=True)
+    try:
+        with os.fdopen(fd, "w", encoding="utf-8") as fh:
+            fh.write(text)
+        yield tmp
+    finally:
+        os.unlink(tmp)
+
+
 def _tarski_parse(reader, kind: str, src: SourceMap) -> None:
     """Run tarski on the text of ``src`` and translate its errors."""
     from tarski import errors as terr
 
-    # Tarski wants a file name; give it the text we already read (stdin too).
-    fd, tmp = tempfile.mkstemp(suffix=".pddl", text=True)
     try:
-        with os.fdopen(fd, "w", encoding="utf-8") as fh:
-            fh.write(src.text_with_types_parents_first())
-        with _quiet_tarski():
+        with _temp_pddl(src.text_with_types_parents_first()) as tmp, _quiet_tarski():
             if kind == "domain":
                 reader.parse_domain(tmp)
             else:
@@ -185,8 +193,6 @@ def _tarski_parse(reader, kind: str, src: SourceMap) -> None:
             line, col, rest = int(match.group(1)), int(match.group(2)) + 1, match.group(3)
             raise PddlSyntaxError(f"{rest} (expected a well-formed PDDL {kind})", src.location(line, col)) from None
         raise PddlSyntaxError(f"cannot parse {kind}: {text}", src.location(src.define().line, src.define().col)) from None
-    finally:
-        os.unlink(tmp)
 
 
 def _element_name(exc: Exception) -> str:
@@ -350,24 +356,18 @@ def _source_map(path: str, kind: str) -> SourceMap:
 def _tarski_syntax_error(text: str, kind: str, path: str) -> PddlSyntaxError | None:
     from tarski.io import PDDLReader
 
-    fd, tmp = tempfile.mkstemp(suffix=".pddl", text=True)
-    try:
-        with os.fdopen(fd, "w", encoding="utf-8") as fh:
-            fh.write(text)
-        reader = PDDLReader(raise_on_error=True, strict_with_requirements=False)
-        with _quiet_tarski():
-            try:
-                reader.parser.parse_file(tmp, kind)
-            except Exception as exc:  # tarski's ParsingError
-                match = _TARSKI_POS.search(str(exc).splitlines()[0] if str(exc) else "")
-                if match:
-                    return PddlSyntaxError(
-                        f"{match.group(3)} (expected a well-formed PDDL {kind})",
-                        Location(path, int(match.group(1)), int(match.group(2)) + 1),
-                    )
-        return None
-    finally:
-        os.unlink(tmp)
+    reader = PDDLReader(raise_on_error=True, strict_with_requirements=False)
+    with _temp_pddl(text) as tmp, _quiet_tarski():
+        try:
+            reader.parser.parse_file(tmp, kind)
+        except Exception as exc:  # tarski's ParsingError
+            match = _TARSKI_POS.search(str(exc).splitlines()[0] if str(exc) else "")
+            if match:
+                return PddlSyntaxError(
+                    f"{match.group(3)} (expected a well-formed PDDL {kind})",
+                    Location(path, int(match.group(1)), int(match.group(2)) + 1),
+                )
+    return None
 
 
 def parse_domain(path: str | Path) -> Domain:
