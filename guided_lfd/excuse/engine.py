@@ -15,7 +15,8 @@ from typing import Any
 
 from guided_lfd.errors import SearchTimeout
 from guided_lfd.excuse.check import Change, check_excuse, excuse_state
-from guided_lfd.excuse.reach import ReachabilityOracle, relaxed_reachable
+from guided_lfd.excuse.lmcut import RelaxedExcuseTask
+from guided_lfd.excuse.reach import ReachabilityOracle
 from guided_lfd.excuse.space import (
     ChangeSpace, MutexGroup, Semantics, build_space, check_cost_predicates, check_fixed,
 )
@@ -178,10 +179,13 @@ def find_excuses(
         return ExcuseReport(status, excuses, options.semantics, options.strategy, stats, unachievable,
                             space.groups, robot_plan, _group_atoms(space))
 
-    # Already solvable: no excuse needed.
+    # Already solvable: no excuse needed.  The compiled relaxed task and the
+    # oracle are built once here and handed to the search, which reuses the
+    # oracle's memory of dead states.
+    relaxed = RelaxedExcuseTask(space)
     oracle = ReachabilityOracle(space, deadline)
     plan0 = None
-    if relaxed_reachable(space, task.init):  # else unsolvable without a search
+    if relaxed.reaches_goal_unchanged(task.init):  # else unsolvable without a search
         try:
             plan0 = oracle.solve(task.init)
         except SearchTimeout:
@@ -193,9 +197,9 @@ def find_excuses(
 
     limits = SearchLimits(all_minimal=options.all_minimal, max_size=options.max_size, deadline=deadline)
     search_start = time.monotonic()
-    stats["setup_time_s"] = round(search_start - start, 4)
-    outcome = STRATEGIES[options.strategy].search(space, limits, progress)
-    stats["search_time_s"] = round(time.monotonic() - search_start, 4)
+    stats["setup_time_s"] = round(search_start - start, 6)
+    outcome = STRATEGIES[options.strategy].search(space, limits, progress, oracle=oracle, relaxed=relaxed)
+    stats["search_time_s"] = round(time.monotonic() - search_start, 6)
     excuses: list[Excuse] = []
     for changes in outcome.solutions:
         state = task.init ^ changes

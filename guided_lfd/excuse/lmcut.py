@@ -94,11 +94,18 @@ class RelaxedExcuseTask:
         add: list[list[int]] = []
         for act in space.relevant_actions:
             pre.append([pos_id[i] for i in bits(act.pre_pos)] + [neg_id[i] for i in bits(act.pre_neg)])
-            e = [pos_id[i] for i in bits(act.add) if i in pos_id]
-            e += [neg_id[i] for i in bits(act.delete & ~act.add) if i in neg_id]
+            e = [pos_id[i] for i in bits(act.add & space.relevant_atoms)]
+            e += [neg_id[i] for i in bits(act.delete & ~act.add & space.negation_needed)]
             add.append(e)
         n_actions = len(pre)
         self.n_actions = n_actions
+        # The same actions as bitmasks (positive and "not p" facts), for the
+        # zero-change closure below.
+        neg_mask = space.negation_needed
+        self._closure = [(a.pre_pos, a.pre_neg, a.add & space.relevant_atoms, a.delete & ~a.add & neg_mask)
+                         for a in space.relevant_actions]
+        self._relevant = space.relevant_atoms
+        self._goal_pos, self._goal_neg = task.goal_pos, task.goal_neg
         prec_of: list[list[int]] = [[] for _ in range(self.n_facts)]
         achievers: list[list[int]] = [[] for _ in range(self.n_facts)]
         for ai, p in enumerate(pre):
@@ -138,11 +145,9 @@ class RelaxedExcuseTask:
         self.membership = membership
         self.group_facts = [np.array([pos_id[i] for i in bits(mask) if i in pos_id], dtype=np.int64)
                             for mask in self.groups]
-        weights = np.zeros(self.n_atoms, dtype=np.float64)
-        for i, w in space.weights.items():
-            weights[i] = w * self.scale
-        self.atom_weight = weights
-        self.fact_weight = weights[self.fact_atom]
+        # Only the facts' weights matter (the task may have many irrelevant atoms).
+        self.fact_weight = np.array([space.weights.get(a, 0) * self.scale for a in self.fact_atom_list],
+                                    dtype=np.float64)
 
     def _initial(self, state: int, changes: int) -> tuple[np.ndarray, np.ndarray]:
         """Facts true in ``state`` and the change cost of each other fact (INF = not changeable)."""
@@ -163,7 +168,7 @@ class RelaxedExcuseTask:
             elif not (self.neg_mask >> q) & 1:
                 # Only when "not q" is no relaxed fact of its own: its change
                 # already costs w(q), and a relaxed plan may use both.
-                cost[facts] += self.atom_weight[q] / self.membership[q]
+                cost[facts] += self.space.weights[q] * self.scale / self.membership[q]
         return true, cost
 
     def _hmax(self, true: np.ndarray, cost: np.ndarray) -> np.ndarray:
@@ -217,6 +222,29 @@ class RelaxedExcuseTask:
             chosen = np.minimum.reduceat(pos, starts)
         pcf[self.nonempty] = self.pre_flat[chosen]
         return pcf
+
+    def reaches_goal_unchanged(self, state: int) -> bool:
+        """Whether the relaxed task reaches the goal from ``state`` with no change (LM-cut h = 0).
+
+        A closure over bitmasks, much cheaper than an h^max pass.
+        """
+        pos = state & self._relevant
+        neg = ~state & self.neg_mask
+        goal_pos, goal_neg = self._goal_pos, self._goal_neg
+        pending = self._closure
+        while True:
+            if not (goal_pos & ~pos) and not (goal_neg & ~neg):
+                return True
+            remaining = []
+            for act in pending:
+                if not (act[0] & ~pos) and not (act[1] & ~neg):
+                    pos |= act[2]
+                    neg |= act[3]
+                else:
+                    remaining.append(act)
+            if len(remaining) == len(pending):
+                return False
+            pending = remaining
 
     def bound(self, state: int, changes: int) -> Bound:
         """LM-cut value and landmarks (as atom indices to flip) for excuses extending ``changes``.
@@ -279,43 +307,35 @@ class RelaxedExcuseTask:
             shares.append(int(m))
 
     # -- the same LM-cut on plain lists, for small tasks ------------------------
-    def _hmax_lists(self, true: list[bool], cost: list[float], last: bool) -> tuple[list[float], list[int]]:
-        """h^max (generalised Dijkstra) and the precondition choice function."""
-        import heapq
+    def _hmax_lists(self, true: list[bool], cost: list[float]) -> list[float]:
+        """h^max of every fact, by thresholded closures (as :meth:`_hmax`, on lists).
 
-        h = [0.0 if t else c for t, c in zip(true, cost)]
-        heap = [(v, f) for f, v in enumerate(h) if v != INF]
-        heapq.heapify(heap)
-        unsat = [len(p) for p in self.pre_lists]
-        pcf = [-1] * len(unsat)
+        Robot actions cost 0, so h^max is a bottleneck value taken from the few
+        distinct change costs: one linear closure per cost level, no heap.
+        """
         adds = self.add_lists
+        unsat = [len(p) for p in self.pre_lists]
+        seed = [0.0 if t else c for t, c in zip(true, cost)]
         for ai, n in enumerate(unsat):
             if n == 0:
                 for q in adds[ai]:
-                    if h[q] > 0:
-                        h[q] = 0.0
-                        heapq.heappush(heap, (0.0, q))
-        done = [False] * len(h)
+                    seed[q] = 0.0
+        h = [INF] * len(seed)
         prec_of = self.prec_of_lists
-        while heap:
-            c, f = heapq.heappop(heap)
-            if done[f] or c > h[f]:
-                continue
-            done[f] = True
-            for ai in prec_of[f]:
-                unsat[ai] -= 1
-                if unsat[ai] == 0:
-                    for q in adds[ai]:
-                        if c < h[q]:
-                            h[q] = c
-                            heapq.heappush(heap, (c, q))
-        pre = self.pre_lists
-        for ai, p in enumerate(pre):
-            if p:
-                best = max(h[f] for f in p)
-                chosen = [f for f in p if h[f] == best]
-                pcf[ai] = chosen[-1] if last else chosen[0]
-        return h, pcf
+        for level in sorted({v for v in seed if v != INF}):
+            queue = [f for f, v in enumerate(seed) if v <= level and h[f] == INF]
+            for f in queue:
+                h[f] = level
+            while queue:
+                f = queue.pop()
+                for ai in prec_of[f]:
+                    unsat[ai] -= 1
+                    if unsat[ai] == 0:
+                        for q in adds[ai]:
+                            if h[q] == INF:
+                                h[q] = level
+                                queue.append(q)
+        return h
 
     def _lmcut_lists(self, true: list[bool], cost: list[float], last: bool) -> Bound:
         total = 0.0
@@ -323,19 +343,29 @@ class RelaxedExcuseTask:
         shares: list[int] = []
         goal = self.goal_list
         while True:
-            h, pcf = self._hmax_lists(true, cost, last)
+            h = self._hmax_lists(true, cost)
             goal_fact = max(goal, key=lambda g: h[g])  # first maximum, as np.argmax
             if h[goal_fact] == INF:
                 return Bound(INF, [], [])
             if h[goal_fact] == 0:
                 return Bound(total, landmarks, shares)
+            # The precondition choice function, only for the achievers the
+            # goal zone meets (most actions are never looked at).
+            pre = self.pre_lists
             zone = {goal_fact}
             stack = [goal_fact]
             while stack:
                 q = stack.pop()
                 for ai in self.achiever_lists[q]:
-                    f = pcf[ai]
-                    if f >= 0 and f not in zone and h[f] > 0:
+                    p = pre[ai]
+                    if not p:
+                        continue
+                    best = max(h[x] for x in p)
+                    if last:
+                        f = next(x for x in reversed(p) if h[x] == best)
+                    else:
+                        f = next(x for x in p if h[x] == best)
+                    if f not in zone and h[f] > 0:
                         zone.add(f)
                         stack.append(f)
             cut = sorted(f for f in zone if cost[f] > 0 and cost[f] != INF)

@@ -138,24 +138,3 @@ class ReachabilityOracle:
             plan.append(act)
         return plan
 
-
-def relaxed_reachable(space: ChangeSpace, state: int) -> bool:
-    """Whether the goal's positive atoms are reachable ignoring deletes and negative conditions.
-
-    An over-approximation of reachability: ``False`` proves the goal
-    unreachable from ``state`` without a search.
-    """
-    reached = state
-    pending = list(space.relevant_actions)
-    while True:
-        remaining = []
-        for act in pending:
-            if (reached & act.pre_pos) == act.pre_pos:
-                reached |= act.add
-            else:
-                remaining.append(act)
-        if len(remaining) == len(pending):
-            break
-        pending = remaining
-    goal = space.task.goal_pos
-    return (reached & goal) == goal

@@ -15,7 +15,7 @@ from dataclasses import dataclass, field
 from typing import Callable, Protocol
 
 from guided_lfd.errors import SearchTimeout
-from guided_lfd.excuse.lmcut import INF, RelaxedExcuseTask
+from guided_lfd.excuse.lmcut import INF, Bound, RelaxedExcuseTask
 from guided_lfd.excuse.reach import ReachabilityOracle
 from guided_lfd.excuse.space import ChangeSpace
 from guided_lfd.grounding import GroundAction, bits
@@ -57,7 +57,13 @@ class Strategy(Protocol):
     name: str
     description: str
 
-    def search(self, space: ChangeSpace, limits: SearchLimits, progress: Progress | None = None) -> SearchOutcome:
+    def search(self, space: ChangeSpace, limits: SearchLimits, progress: Progress | None = None,
+               oracle: ReachabilityOracle | None = None, relaxed: RelaxedExcuseTask | None = None) -> SearchOutcome:
+        """Minimal change sets for ``space``.
+
+        ``oracle`` (with its memory of earlier calls) and ``relaxed`` (the
+        compiled relaxed task) may be passed in when the caller built them.
+        """
         ...
 
 
@@ -92,11 +98,16 @@ class LandmarkSearch:
     name = "landmark"
     description = "A* over change sets with LM-cut bounds and landmark branching (default)"
 
-    def search(self, space: ChangeSpace, limits: SearchLimits, progress: Progress | None = None) -> SearchOutcome:
-        relaxed = RelaxedExcuseTask(space)
-        oracle = ReachabilityOracle(space, limits.deadline)
+    def search(self, space: ChangeSpace, limits: SearchLimits, progress: Progress | None = None,
+               oracle: ReachabilityOracle | None = None, relaxed: RelaxedExcuseTask | None = None) -> SearchOutcome:
+        """A* over change sets; ``oracle`` and ``relaxed`` are reused when given."""
+        relaxed = relaxed or RelaxedExcuseTask(space)
+        # Reusing the caller's oracle keeps the dead states its "already
+        # solvable?" search found: most candidates' searches run into them.
+        oracle = oracle or ReachabilityOracle(space, limits.deadline)
         task = space.task
         weights = space.weights
+        cheapest = min(weights.values(), default=0)
         relevant_changes = space.relevant_atoms & space.changeable
         goal_atoms = (task.goal_pos | task.goal_neg) & space.changeable
         # Heap entries: (f, -g, tie, changes); per node its inherited landmarks
@@ -122,7 +133,20 @@ class LandmarkSearch:
                 landmarks = inherited.pop(changes)
                 if not landmarks:
                     evaluations += 1
-                    bound = relaxed.bound(state, changes)
+                    # A node whose inherited landmarks are all hit is usually
+                    # relaxed-solvable: a closure proves h = 0 without LM-cut.
+                    if landmarks is not None:
+                        if relaxed.reaches_goal_unchanged(state):
+                            bound = Bound(0, [], [])
+                        else:
+                            # h >= the cheapest change: requeue with that bound
+                            # and pay for LM-cut only if the node comes up again.
+                            counter += 1
+                            inherited[changes] = None
+                            heapq.heappush(heap, (max(f, g + cheapest), neg_g, counter, changes))
+                            continue
+                    else:
+                        bound = relaxed.bound(state, changes)
                     if bound.h == INF:
                         continue
                     landmarks = [(_mask(l), m) for l, m in zip(bound.landmarks, bound.costs)]
@@ -206,7 +230,9 @@ class BaselineSearch:
     name = "baseline"
     description = "breadth-first over change sets, one pyperplan call per candidate (the paper's method)"
 
-    def search(self, space: ChangeSpace, limits: SearchLimits, progress: Progress | None = None) -> SearchOutcome:
+    def search(self, space: ChangeSpace, limits: SearchLimits, progress: Progress | None = None,
+               oracle: ReachabilityOracle | None = None, relaxed: RelaxedExcuseTask | None = None) -> SearchOutcome:
+        """Breadth-first over change sets; ``oracle`` and ``relaxed`` are unused (a planner call per candidate)."""
         from guided_lfd.planning import find_plan
 
         task = space.task
