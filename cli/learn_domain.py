@@ -2,17 +2,15 @@
 
 from __future__ import annotations
 
-import json
 from typing import Annotated
 
 import typer
 
 from cli.common import OutputOption, QuietOption, check_inputs, command, ui
 from guided_lfd.demonstration.learn import learn_domain as learn
-from guided_lfd.errors import Location, TraceError
+from guided_lfd.demonstration.learn import load_segments
 from guided_lfd.io import check_writable, write_text
 from guided_lfd.pddl.reader import parse_domain
-from guided_lfd.pddl.source import read_text
 from guided_lfd.pddl.writer import domain_to_pddl
 
 
@@ -29,17 +27,7 @@ def learn_domain(
     """Turn demonstrated hand activities into lifted PDDL actions (nodes of interest, generalised)."""
     check_inputs(*segments, *([prior] if prior else []))
     check_writable(output)
-    documents = []
-    for path in segments:
-        text = read_text(path)
-        try:
-            doc = json.loads(text)
-        except json.JSONDecodeError as exc:
-            raise TraceError(f"not JSON ({exc.msg}), expected a guided-lfd/segments document",
-                             Location(path, exc.lineno, exc.colno)) from None
-        if not isinstance(doc, dict) or doc.get("format") != "guided-lfd/segments":
-            raise TraceError("expected a guided-lfd/segments document (from `guided-lfd segment`)", Location(path, 1))
-        documents.append((path, doc))
+    documents = [(path, load_segments(path)) for path in segments]
     domain = learn(documents, parse_domain(prior) if prior else None, name=name.lower())
     header = "Learned by guided-lfd learn-domain from: " + ", ".join(segments)
     write_text(output, domain_to_pddl(domain, header=header))

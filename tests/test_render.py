@@ -168,3 +168,77 @@ def test_generalise_aligns_repeats_and_keeps_names_unique():
     merged = out[0]
     assert merged.add == (Atom("blocking", ("?o1", "?o2")),) and merged.delete == (Atom("blocking", ("?o1", "?o3")),)
     assert dict(merged.params)["?o3"] == "furniture"  # drawer and surface generalise to furniture
+
+
+# Both hands at once: the left hand fetches the plate while the right hand
+# opens the drawer, then puts the plate in once the drawer is open.
+TWO_HANDED = [
+    Step("Idle", duration=0.4),
+    Step("Reach", "redplate", duration=1.0, hand="left", parallel=True),
+    Step("Take", "redplate", duration=0.5, hand="left", parallel=True,
+         changes=[(Atom("on_top", ("redplate", "table")), False)]),
+    Step("Reach", "pinkdrawer", duration=1.0, parallel=True),
+    Step("Open", "pinkdrawer", duration=0.8, parallel=True, changes=[(Atom("open", ("pinkdrawer",)), True)]),
+    Step("Release", duration=0.6, parallel=True),
+    Step("Put", "redplate", "pinkdrawer", duration=1.2, hand="left"),
+    Step("Release", duration=0.6, hand="left", changes=[(Atom("inside", ("redplate", "pinkdrawer")), True)]),
+    Step("Idle", duration=0.5),
+]
+
+
+def test_schedule_runs_parallel_steps_alongside_the_other_hand():
+    from guided_lfd.demonstration.render import schedule
+
+    times = schedule(TWO_HANDED)
+    assert times[1] == (0.0, 1.0)  # the left hand starts at once
+    assert times[3] == (0.4, 1.4)  # the right hand after its pause, meanwhile
+    put = times[6]
+    assert put[0] == pytest.approx(2.8)  # waits until the right hand is done (the drawer is open)
+    assert schedule(COMPLETE)[-1][1] == pytest.approx(sum(s.duration for s in COMPLETE))  # sequential
+
+
+@pytest.mark.parametrize("seed", [0, 1, 2])
+def test_two_handed_demonstration_segments_per_hand(tmp_path, seed):
+    import csv
+    import io
+
+    rendering = render(TWO_HANDED, SCENE, INITIAL, noise=Noise(seed=seed))
+    demo = write(tmp_path, rendering)
+    # The waiting left hand holds the plate: grip closed, labelled Take (the activity model's holding still).
+    labels = {(r["time"], r["hand"]): r["activity"] for r in csv.DictReader(io.StringIO(rendering.labels_csv))}
+    assert labels[("2.0000", "left")] == "Take"
+    waiting = demo.frames[(demo.frames["hand"] == "left") & demo.frames["time"].between(1.6, 2.7)]
+    assert (waiting["in_hand"] == "redplate").all() and waiting["grip_closed"].mean() > 0.9
+    segments = segment(demo)
+    acts = {h: [s.activity for s in segments if s.hand == h and s.activity != "Idle"] for h in ("left", "right")}
+    assert acts == {"left": ["Reach", "Take", "Put", "Release"], "right": ["Reach", "Open", "Release"]}
+    truth, predicted = predicted_labels(demo, segments, rendering.labels_csv)
+    assert frame_f1(truth, predicted) >= 0.95
+    # Each change belongs to the hand that caused it, although the left hand's
+    # Take is in progress while the right hand opens the drawer.
+    changes = {(s.hand, s.activity): (s.added, s.deleted) for s in segments if s.added or s.deleted}
+    assert changes == {
+        ("left", "Take"): (frozenset(), {Atom("on_top", ("redplate", "table"))}),
+        ("right", "Open"): ({Atom("open", ("pinkdrawer",))}, frozenset()),
+        ("left", "Put"): ({Atom("inside", ("redplate", "pinkdrawer"))}, frozenset()),
+    }
+    put = next(s for s in segments if s.activity == "Put")
+    assert Atom("open", ("pinkdrawer",)) in put.before  # the world as the left hand found it
+
+
+def test_two_handed_demonstration_teaches_the_same_skills(tmp_path):
+    from guided_lfd.demonstration.learn import learn_domain
+    from guided_lfd.demonstration.segment import segments_document
+    from guided_lfd.pddl.model import Literal
+
+    sequential = write(tmp_path, render(COMPLETE, SCENE, INITIAL, noise=Noise(seed=4)))
+    one = learn_domain([("one", segments_document(sequential, segment(sequential), ""))])
+    (tmp_path / "two").mkdir()
+    parallel = write(tmp_path / "two", render(TWO_HANDED, SCENE, INITIAL, noise=Noise(seed=4)))
+    two = learn_domain([("two", segments_document(parallel, segment(parallel), ""))])
+    def skills(domain):
+        return {a.name: (a.params, a.precondition, a.add, a.delete) for a in domain.actions}
+
+    assert skills(two) == skills(one)
+    # taking the plate with the left hand needs that hand free, whatever the right hand holds
+    assert Literal(Atom("hand_free")) in two.action("take_item").precondition

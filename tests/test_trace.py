@@ -108,3 +108,49 @@ def test_segment_cli_json_and_errors(runner, app, tmp_path):
     result = runner.invoke(app, ["segment", bad])
     assert result.exit_code == 36
     assert result.stderr.strip().endswith("t.csv:6:6: trace error: column 'grip': expected open or closed, got 'half'")
+
+
+def _frames(rows):
+    import pandas as pd
+
+    frame = pd.DataFrame(rows, columns=["hand_move", "in_hand", "act_on", "grip_closed"])
+    return frame
+
+
+def test_decision_tree_names_a_put_by_where_the_hand_goes():
+    from guided_lfd.demonstration.segment import frame_labels
+
+    objects = {"redplate": "item", "blueplate": "item", "pinkdrawer": "drawer"}
+    labels = frame_labels(_frames([
+        (False, "redplate", "redplate", True),    # grasping, still: Take
+        (False, "redplate", "", True),            # holding still: Take
+        (False, "redplate", "pinkdrawer", True),  # the transport's slow start or end: still a Put
+        (True, "redplate", "pinkdrawer", True),   # carrying toward the drawer: Put
+        (True, "redplate", "redplate", True),     # moving while grasping: Put, not Stack onto itself
+        (False, "redplate", "blueplate", True),   # toward an item of its own type: Stack
+        (False, "", "pinkdrawer", False),         # Reach, moving or not
+        (True, "", "", False),                    # withdrawing: Release
+        (False, "", "", False),                   # Idle
+    ]), objects)
+    assert list(labels) == ["Take", "Take", "Put", "Put", "Put", "Stack", "Reach", "Release", "Idle"]
+
+
+def _debounced(pattern, rate=90.0):
+    import numpy as np
+
+    from guided_lfd.demonstration.segment import _debounce, _runs
+
+    labels = np.array([label for label, n in pattern for _ in range(n)], dtype=object)
+    times = np.arange(len(labels)) / rate
+    return [(label, last - first + 1) for label, first, last in _debounce(times, _runs(times, labels))]
+
+
+def test_debouncing_keeps_a_short_pause_between_two_activities():
+    # Kitchen I, P3's excuse demonstration: a 0.13 s pause between withdrawing
+    # the hand and reaching again is an activity of its own, not jitter ...
+    assert _debounced([("Release", 20), ("Idle", 12), ("Reach", 30)]) == [("Release", 20), ("Idle", 12), ("Reach", 30)]
+    # ... but the same run splitting one activity is absorbed ...
+    assert _debounced([("Reach", 20), ("Idle", 12), ("Reach", 30)]) == [("Reach", 62)]
+    # ... and a few frames are jitter anywhere (into the longer neighbour).
+    assert _debounced([("Open", 40), ("Idle", 4), ("Release", 30)]) == [("Open", 44), ("Release", 30)]
+    assert _debounced([("Take", 2), ("Put", 40)]) == [("Put", 42)]

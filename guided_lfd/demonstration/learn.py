@@ -16,13 +16,17 @@ holds) is a demonstrated action:
 * a Put (or Stack) and the Release that ends it are one skill;
 * objects are lifted to typed parameters; repeated demonstrations of a skill
   (same name and parameter types) are generalised by intersecting their
-  preconditions and effects.
+  preconditions and effects;
+* a negative precondition ``(not p)`` is dropped when a positive one ``q``
+  implies it through a mutex proven by invariant synthesis (the plate in the
+  hand is in no drawer), see :mod:`guided_lfd.demonstration.mutex`.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
 
+from guided_lfd.demonstration.mutex import drop_implied_negative_preconditions, proven_invariants
 from guided_lfd.demonstration.trace import HAND_PREDICATES
 from guided_lfd.errors import Location, TraceError
 from guided_lfd.pddl.model import ActionSchema, Atom, Domain, Literal, Predicate
@@ -60,7 +64,12 @@ def skill_segments(segments: list[dict]) -> list[dict]:
             continue
         prev = last.get(seg["hand"])
         if seg["activity"] == "Release" and prev is not None and prev["activity"] in ("Put", "Stack"):
-            merged = dict(prev, end=seg["end"], after=seg["after"], held_after=seg.get("held_after", ""))
+            # The skill's changes are the Put's and the Release's own, not
+            # what the other hand changed in between.
+            own_add = set(seg["after"]) - set(seg["before"])
+            own_del = set(seg["before"]) - set(seg["after"])
+            after = sorted((set(prev["after"]) - own_del) | own_add)
+            merged = dict(prev, end=seg["end"], after=after, held_after=seg.get("held_after", ""))
             out[out.index(prev)] = merged
             last[seg["hand"]] = merged
             continue
@@ -105,6 +114,23 @@ def ground_actions(document: dict, source: str = "segments") -> list[Demonstrate
         out.append(DemonstratedAction(name, objects, frozenset(pre), frozenset(add), frozenset(delete),
                                       f"{source} segment {seg['index']} ({seg['activity']} {' '.join(roles)})"))
     return out
+
+
+def load_segments(path: str) -> dict:
+    """Read a ``guided-lfd/segments`` JSON document (``-`` = stdin); TraceError if it is not one."""
+    import json
+
+    from guided_lfd.pddl.source import read_text
+
+    text = read_text(path)
+    try:
+        doc = json.loads(text)
+    except json.JSONDecodeError as exc:
+        raise TraceError(f"not JSON ({exc.msg}), expected a guided-lfd/segments document",
+                         Location(path, exc.lineno, exc.colno)) from None
+    if not isinstance(doc, dict) or doc.get("format") != "guided-lfd/segments":
+        raise TraceError("expected a guided-lfd/segments document (from `guided-lfd segment`)", Location(path, 1))
+    return doc
 
 
 def _atom(text: str, source: str) -> Atom:
@@ -223,13 +249,30 @@ def learn_domain(documents: list[tuple[str, dict]], prior: Domain | None = None,
                 predicates[atom.predicate] = Predicate(atom.predicate, merged)
     if prior is not None:
         known = {a.name for a in prior.actions}
-        renamed = [a if a.name not in known else replace(a, name=f"{a.name}_demo") for a in learned]
+        learned = [a if a.name not in known else replace(a, name=f"{a.name}_demo") for a in learned]
         reqs = tuple(dict.fromkeys([*prior.requirements, ":negative-preconditions"]))
-        return replace(prior, requirements=reqs, predicates={**predicates, **prior.predicates},
-                       actions=[*prior.actions, *renamed], path="<learned>")
-    type_decl: dict[str, str | None] = {"object": None}
-    for t in sorted(set(types.values())):
-        type_decl[t] = "object"
-    return Domain(name=name, requirements=(":strips", ":typing", ":negative-preconditions"), types=type_decl,
-                  constants={},
-                  predicates=predicates, actions=learned, path="<learned>")
+        domain = replace(prior, requirements=reqs, predicates={**predicates, **prior.predicates},
+                         actions=[*prior.actions, *learned], path="<learned>")
+    else:
+        type_decl: dict[str, str | None] = {"object": None}
+        for t in sorted(set(types.values())):
+            type_decl[t] = "object"
+        domain = Domain(name=name, requirements=(":strips", ":typing", ":negative-preconditions"), types=type_decl,
+                        constants={}, predicates=predicates, actions=learned, path="<learned>")
+    # Mutexes are proven on the whole domain (the prior's actions too): a
+    # prior action that broke one would make the dropped precondition matter.
+    invariants = proven_invariants(domain, types, observed_states(documents))
+    return drop_implied_negative_preconditions(domain, {a.name for a in learned}, invariants)
+
+
+def observed_states(documents: list[tuple[str, dict]]) -> list[frozenset[Atom]]:
+    """Every state the demonstrations show, as the learner sees it (the acting hand's fluents included)."""
+    states: list[frozenset[Atom]] = []
+    for source, doc in documents:
+        states.append(frozenset(_atom(x, source) for x in doc.get("initial", [])))
+        for seg in skill_segments(doc.get("segments", [])):
+            for fluents, held in ((seg["before"], seg.get("held_before", "")),
+                                  (seg["after"], seg.get("held_after", ""))):
+                env = {a for a in (_atom(x, source) for x in fluents) if a.predicate not in HAND_PREDICATES}
+                states.append(frozenset(env | _hand_fluents(held)))
+    return states

@@ -5,7 +5,8 @@ a script of hand activities in a scene becomes a trace in the format of
 :mod:`guided_lfd.demonstration.trace`, with the environment state and
 per-frame ground-truth labels beside it.  Rendered, not recorded:
 
-* 90 Hz (configurable) frames for both hands; the idle hand rests;
+* 90 Hz (configurable) frames for both hands; the idle hand rests, or holds
+  still what it holds; both hands may act at once (``Step.parallel``);
 * reach, transport, pull and push motions follow minimum-jerk profiles
   (Flash & Hogan 1985), the standard model of human point-to-point motion;
 * Gaussian position noise, dropped frames and single-frame grip flicker, as
@@ -32,6 +33,10 @@ class Step:
 
     ``changes`` are the fluent changes the activity causes, registered at its
     end (``Release`` registers where the object now is at its start).
+
+    A step starts once every earlier step, of either hand, has ended; a
+    ``parallel`` step only waits for its own hand, so it runs alongside what
+    the other hand is doing (both hands at once).
     """
 
     activity: str  # Idle, Reach, Take, Put, Release, Open, Close, Push
@@ -40,6 +45,7 @@ class Step:
     duration: float = 1.0
     changes: list[tuple[Atom, bool]] = field(default_factory=list)
     hand: str = "right"
+    parallel: bool = False
 
 
 @dataclass
@@ -79,26 +85,49 @@ def minimum_jerk(p0: np.ndarray, p1: np.ndarray, s: np.ndarray) -> np.ndarray:
     return p0 + (p1 - p0) * shape[:, None]
 
 
+def schedule(steps: list[Step]) -> list[tuple[float, float]]:
+    """(start, end) of every step in seconds, as :func:`render` plays them."""
+    clock = {"left": 0.0, "right": 0.0}
+    out = []
+    for step in steps:
+        start = clock[step.hand] if step.parallel else max(clock.values())
+        clock[step.hand] = start + step.duration
+        out.append((start, start + step.duration))
+    return out
+
+
 def render(steps: list[Step], scene: Scene, initial: set[Atom], rate_hz: float = 90.0,
            noise: Noise | None = None) -> Rendering:
-    """Render ``steps`` (one after the other) into trace, state and label CSVs."""
+    """Render ``steps`` (scheduled as :func:`schedule` says) into trace, state and label CSVs.
+
+    A hand without a step of its own waits where it is: holding an object
+    still, which the activity model calls Take, or idle.
+    """
     noise = noise or Noise()
     rng = np.random.default_rng(noise.seed)
     dt = 1.0 / rate_hz
     hand_pos = {h: np.array(p, dtype=float) for h, p in scene.rest.items()}
     held: dict[str, str] = {"right": "", "left": ""}
-    rows: list[tuple] = []  # (time, hand, pos, grip, in_hand, act_on, label)
+    # Per hand, frame index -> (pos, grip, in_hand, act_on, label).
+    tracks: dict[str, dict[int, tuple]] = {"right": {}, "left": {}}
     events: list[tuple[float, Atom, bool]] = []
-    t = 0.0
-    ideal = 0.0  # frames are counted on the cumulative time, so rounding never accumulates
-    frame = 0
+    # Each hand's clock: seconds of its steps so far and frames rendered for
+    # them; frames are counted on the cumulative time, so rounding never accumulates.
+    ideal = {"right": 0.0, "left": 0.0}
+    frames = {"right": 0, "left": 0}
     for step in steps:
-        ideal += step.duration
-        n = max(2, int(round(ideal * rate_hz)) - frame)
-        frame += n
-        times = t + dt * np.arange(n)
-        s = np.linspace(0.0, 1.0, n)
         hand = step.hand
+        if not step.parallel:
+            # Wait for both hands: start where the hand furthest on stands.
+            ahead = max(frames, key=lambda h: (frames[h], ideal[h]))
+            _wait(tracks[hand], frames[hand], frames[ahead], hand_pos[hand], held[hand])
+            ideal[hand], frames[hand] = ideal[ahead], frames[ahead]
+        ideal[hand] += step.duration
+        first = frames[hand]
+        n = max(2, int(round(ideal[hand] * rate_hz)) - first)
+        frames[hand] = first + n
+        times = dt * np.arange(first, first + n)
+        s = np.linspace(0.0, 1.0, n)
         start = hand_pos[hand].copy()
         grip, in_hand, act_on = False, "", step.obj
         label = step.activity
@@ -141,15 +170,23 @@ def render(steps: list[Step], scene: Scene, initial: set[Atom], rate_hz: float =
         else:
             events += [(float(times[-1]), atom, value) for atom, value in step.changes]
         for k in range(n):
-            rows.append((float(times[k]), hand, path[k], grip, in_hand, act_on, label))
+            tracks[hand][first + k] = (path[k], grip, in_hand, act_on, label)
         hand_pos[hand] = path[-1]
-        # The other hand rests.
-        other = "left" if hand == "right" else "right"
-        for k in range(n):
-            rows.append((float(times[k]), other, hand_pos[other], False, held[other], "", "Idle"))
-        t = float(times[-1]) + dt
+    end = max(frames.values())
+    for hand in ("right", "left"):
+        _wait(tracks[hand], frames[hand], end, hand_pos[hand], held[hand])
+    rows: list[tuple] = []  # (time, hand, pos, grip, in_hand, act_on, label)
+    for hand, track in tracks.items():
+        rows += [(float(dt * k), hand, *track[k]) for k in range(end)]
     return Rendering(_trace_csv(rows, scene, noise, rng), _state_csv(scene, initial, events),
                      _labels_csv(rows), steps)
+
+
+def _wait(track: dict[int, tuple], first: int, last: int, pos: np.ndarray, held: str) -> None:
+    """Frames ``first`` to ``last - 1`` of a hand waiting for the other one."""
+    for k in range(first, last):
+        # Holding an object still is a Take in the activity model; an empty hand idles.
+        track[k] = (pos, bool(held), held, "", "Take" if held else "Idle")
 
 
 def _name(scene: Scene, obj: str) -> str:

@@ -5,16 +5,30 @@ Following the semantic activity recognition the paper's LfD system uses
 labelled by a small decision tree over ``hand_move``, ``in_hand``, ``act_on``
 and the grip:
 
-* object in hand:            moving -> ``Put`` (``Stack`` onto an item), still -> ``Take``
+* object in hand, acting on another object (carried toward it): ``Put``
+  (``Stack`` onto an item of the same type); otherwise moving -> ``Put``,
+  still -> ``Take``.  Like Reach, a Put is named by where the hand goes, so
+  the slow start and end of the transport are not read as holding still.
 * no object, grip closed on ``act_on`` (a handle, a chair): ``Manipulate``,
   named at segment level after what it changes (``Open``, ``Close``, ``Push``)
 * no object, moving toward ``act_on``: ``Reach``; moving, nothing targeted: ``Release``
   (the hand withdrawing), still: ``Idle`` (still at a target: ``Reach``)
 
-Frames are then merged into segments per hand, with debouncing: runs shorter
-than :data:`MIN_SEGMENT_S` (sensor jitter, a flickering grip) are absorbed by
-their neighbours, and gaps up to :data:`MAX_GAP_S` (dropped frames) do not
-split a segment.  Each segment carries the fluents before and after it.
+Frames are then merged into segments, for each hand on its own, with
+debouncing: runs shorter than :data:`JITTER_S` (a flickering grip, the hand's
+speed crossing the threshold) are absorbed by their neighbours, and so are
+runs shorter than :data:`MIN_SEGMENT_S` that split one activity (the same
+label on both sides); a short run between two different activities is a
+short activity of its own (a brief pause between a Release and the next
+Reach).  Gaps up to :data:`MAX_GAP_S` (dropped frames) do not split a segment.
+
+Both hands may act at once.  Every change of the environment state is
+attributed to the hand that caused it: to the segment, among the segments
+of each hand in progress at that moment, that handles the objects the change
+is about (a change and the changes at the same instant that share objects
+with it go together: the chair leaves the drawer, the drawer is clear).
+Each segment carries the fluents just before it acts and, after it, the same
+fluents with only its own changes applied.
 """
 
 from __future__ import annotations
@@ -27,7 +41,11 @@ from guided_lfd.demonstration.trace import Demonstration
 from guided_lfd.pddl.model import Atom
 
 ACTIVITIES = ("Idle", "Reach", "Take", "Put", "Stack", "Release", "Open", "Close", "Push", "Manipulate")
-#: Runs shorter than this are jitter and merge into their neighbours (s).
+#: Runs shorter than this are sensor jitter wherever they occur (s): a few
+#: frames, as a flickering grip or the speed crossing its threshold produce.
+JITTER_S = 0.06
+#: Runs shorter than this between two runs of the same activity split that
+#: activity and merge with it; also the shortest activity at either end of a trace (s).
 MIN_SEGMENT_S = 0.15
 #: Frame gaps up to this long (dropped frames) do not split a segment (s).
 MAX_GAP_S = 0.5
@@ -48,6 +66,8 @@ class Segment:
     end: float
     object: str
     target: str
+    # The environment just before the segment acts, and that state with the
+    # segment's own changes applied (never the other hand's).
     before: frozenset[Atom] = field(default_factory=frozenset)
     after: frozenset[Atom] = field(default_factory=frozenset)
     held_before: str = ""  # what the hand held just before the segment
@@ -69,15 +89,17 @@ def frame_labels(frames, objects: dict[str, str]) -> np.ndarray:
     target = frames["act_on"].to_numpy()
     targeted = target != ""
     grip = frames["grip_closed"].to_numpy(dtype=bool)
-    onto_item = np.array([objects.get(t, "") == objects.get(h, "#") and t != "" for t, h in
-                          zip(target, frames["in_hand"].to_numpy())])
+    in_hand = frames["in_hand"].to_numpy()
+    # Carrying toward somewhere: the hand acts on an object other than the one it holds.
+    toward = targeted & (target != in_hand)
+    onto_item = toward & np.array([objects.get(t, "") == objects.get(h, "#") for t, h in zip(target, in_hand)])
     labels = np.full(len(frames), "Idle", dtype=object)
     labels[~held & ~grip & targeted] = "Reach"
     labels[~held & ~grip & ~targeted & moving] = "Release"
     labels[~held & grip & targeted] = "Manipulate"
-    labels[held & ~moving] = "Take"
-    labels[held & moving] = "Put"
-    labels[held & moving & onto_item] = "Stack"
+    labels[held & ~moving & ~toward] = "Take"
+    labels[held & (moving | toward)] = "Put"
+    labels[held & (moving | toward) & onto_item] = "Stack"
     return labels
 
 
@@ -93,16 +115,25 @@ def _runs(times: np.ndarray, labels: np.ndarray) -> list[list]:
 
 
 def _debounce(times: np.ndarray, runs: list[list]) -> list[list]:
-    """Absorb runs shorter than :data:`MIN_SEGMENT_S` into a neighbour, shortest first."""
-    def length(r):
-        return times[r[2]] - times[r[1]] + (times[1] - times[0] if len(times) > 1 else 0)
+    """Absorb jitter runs into their neighbours, shortest first (see the module docstring)."""
+    frame = float(np.median(np.diff(times))) if len(times) > 1 else 0.0
 
-    changed = True
-    while changed and len(runs) > 1:
-        changed = False
-        k = min(range(len(runs)), key=lambda j: length(runs[j]))
-        if length(runs[k]) >= MIN_SEGMENT_S:
+    def length(r: list) -> float:
+        return float(times[r[2]] - times[r[1]]) + frame
+
+    def noise(k: int) -> bool:
+        n = length(runs[k])
+        if n < JITTER_S:
+            return True
+        if k == 0 or k == len(runs) - 1:
+            return n < MIN_SEGMENT_S  # cut off by the trace's start or end
+        return n < MIN_SEGMENT_S and runs[k - 1][0] == runs[k + 1][0]
+
+    while len(runs) > 1:
+        candidates = [k for k in range(len(runs)) if noise(k)]
+        if not candidates:
             break
+        k = min(candidates, key=lambda j: (length(runs[j]), j))
         if k == 0:
             runs[1][1] = runs[0][1]
             del runs[0]
@@ -120,37 +151,107 @@ def _debounce(times: np.ndarray, runs: list[list]) -> list[list]:
             else:
                 merged.append(r)
         runs = merged
-        changed = True
     return runs
+
+
+def _hand_segments(demo: Demonstration, labels: np.ndarray, hand: str) -> list[Segment]:
+    """One hand's segments, without fluents yet."""
+    frames = demo.frames
+    idx = np.flatnonzero((frames["hand"] == hand).to_numpy())
+    if idx.size == 0:
+        return []
+    times = frames["time"].to_numpy()[idx]
+    runs = _debounce(times, _runs(times, labels[idx]))
+    held = frames["in_hand"].to_numpy()[idx]
+    target = frames["act_on"].to_numpy()[idx]
+    out = []
+    for label, first, last in runs:
+        obj, tgt = _roles(label, held[first:last + 1], target[first:last + 1])
+        # Boundaries move by a few frames with jitter and debouncing: read
+        # the hand's state over a few frames, not one.
+        held_before = _most_common(held[max(0, first - BOUNDARY_FRAMES):first]) if first > 0 else ""
+        held_after = _most_common(held[max(first, last - BOUNDARY_FRAMES + 1):last + 1])
+        out.append(Segment(0, hand, label, float(times[first]), float(times[last]), obj, tgt,
+                           held_before=held_before, held_after=held_after))
+    return out
+
+
+def _handled(seg: Segment) -> set[str]:
+    return {o for o in (seg.object, seg.target, seg.held_before, seg.held_after) if o}
+
+
+def _attribute(demo: Demonstration, per_hand: dict[str, list[Segment]]) -> dict[int, list[tuple[float, Atom, bool]]]:
+    """The environment changes each segment caused, keyed by ``id(segment)``.
+
+    Each hand's effect windows (start + :data:`EFFECT_DELAY_S`, next start +
+    :data:`EFFECT_DELAY_S`] tile the timeline, so at any moment exactly one
+    segment of each hand is in progress.  Changes at the same instant that
+    share objects are one event; it goes to the segment that handles most of
+    its objects, else to a segment that is not Idle, else (no way to tell)
+    to all of them.
+    """
+    windows = {}
+    for hand, segs in per_hand.items():
+        windows[hand] = np.array([s.start + EFFECT_DELAY_S for s in segs[1:]])
+    caused: dict[int, list[tuple[float, Atom, bool]]] = {id(s): [] for segs in per_hand.values() for s in segs}
+    by_time: dict[float, list[tuple[Atom, bool]]] = {}
+    for when, atom, value in demo.events:
+        by_time.setdefault(when, []).append((atom, value))
+    for when, changes in by_time.items():
+        candidates = [segs[int(np.searchsorted(windows[hand], when, side="left"))]
+                      for hand, segs in per_hand.items() if segs]
+        for event in _linked(changes):
+            objects = {a for atom, _ in event for a in atom.args}
+            scored = [(len(objects & _handled(s)), s.activity != "Idle") for s in candidates]
+            best = max(scored)
+            for seg, score in zip(candidates, scored):
+                if score == best:
+                    caused[id(seg)] += [(when, atom, value) for atom, value in event]
+    return caused
+
+
+def _linked(changes: list[tuple[Atom, bool]]) -> list[list[tuple[Atom, bool]]]:
+    """Changes grouped into connected components by shared arguments."""
+    groups: list[list[tuple[Atom, bool]]] = []
+    for change in changes:
+        args = set(change[0].args)
+        joined = [g for g in groups if any(args & set(a.args) for a, _ in g)]
+        merged = [change] + [c for g in joined for c in g]
+        groups = [g for g in groups if g not in joined] + [merged]
+    return groups
+
+
+def _state_before(demo: Demonstration, t: float) -> set[Atom]:
+    """The true fluents just before ``t`` (changes at ``t`` excluded)."""
+    state = set(demo.initial)
+    for when, atom, value in demo.events:
+        if when >= t:
+            break
+        (state.add if value else state.discard)(atom)
+    return state
 
 
 def segment(demo: Demonstration) -> list[Segment]:
     """Segments of both hands, in time order, Idle included."""
-    frames = demo.frames
-    labels = frame_labels(frames, demo.objects)
+    labels = frame_labels(demo.frames, demo.objects)
+    per_hand = {hand: _hand_segments(demo, labels, hand) for hand in ("left", "right")}
+    caused = _attribute(demo, per_hand)
     out: list[Segment] = []
-    for hand in ("left", "right"):
-        idx = np.flatnonzero((frames["hand"] == hand).to_numpy())
-        if idx.size == 0:
-            continue
-        times = frames["time"].to_numpy()[idx]
-        runs = _debounce(times, _runs(times, labels[idx]))
-        held = frames["in_hand"].to_numpy()[idx]
-        target = frames["act_on"].to_numpy()[idx]
-        for label, first, last in runs:
-            start, end = float(times[first]), float(times[last])
-            obj, tgt = _roles(label, held[first:last + 1], target[first:last + 1])
-            # Effect windows (start + delay, end + delay] tile the timeline, so
-            # every change belongs to exactly one segment of the hand.
-            before = demo.state_at(start + EFFECT_DELAY_S)
-            after = demo.state_at(end + EFFECT_DELAY_S)
-            if label == "Manipulate":
-                label = _name_manipulation(obj, before, after)
-            # Boundaries move by a few frames with jitter and debouncing: read
-            # the hand's state over a few frames, not one.
-            held_before = _most_common(held[max(0, first - BOUNDARY_FRAMES):first]) if first > 0 else ""
-            held_after = _most_common(held[max(first, last - BOUNDARY_FRAMES + 1):last + 1])
-            out.append(Segment(0, hand, label, start, end, obj, tgt, before, after, held_before, held_after))
+    for segs in per_hand.values():
+        for k, seg in enumerate(segs):
+            own = sorted(caused[id(seg)], key=lambda c: c[0])
+            # The world just before the segment acts: at its first own change,
+            # or where its effect window opens (the other hand's changes until
+            # then included).
+            when = own[0][0] if own else (seg.start + EFFECT_DELAY_S if k else float("-inf"))
+            before = _state_before(demo, when) if own else demo.state_at(when) if k else set(demo.initial)
+            after = set(before)
+            for _, atom, value in own:
+                (after.add if value else after.discard)(atom)
+            seg.before, seg.after = frozenset(before), frozenset(after)
+            if seg.activity == "Manipulate":
+                seg.activity = _name_manipulation(seg.object, seg.before, seg.after)
+            out.append(seg)
     out.sort(key=lambda s: (s.start, s.hand))
     for i, seg in enumerate(out):
         seg.index = i

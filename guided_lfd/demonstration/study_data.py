@@ -8,18 +8,20 @@ re-opening a drawer, pushing the chair away and back, opening another
 drawer) until it has the number of demonstrated actions the paper observed
 (Table II, O columns), and rendered over the demonstration time the paper
 measured (Table I).  P3's complete demonstrations used both hands at once,
-which the paper's LfD tool could not process; they are rendered that way.
+which the paper's LfD tool could not process; they are rendered that way: the
+left hand fetches the plate while the right hand prepares the drawer.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 
-from guided_lfd.demonstration.render import Noise, Scene, Step, render, script_for_plan
+from guided_lfd.demonstration.render import Noise, Scene, Step, render, schedule, script_for_plan
 from guided_lfd.pddl.model import Atom, Literal
 from guided_lfd.pddl.reader import parse_task
 from guided_lfd.planning import plan_task
+from guided_lfd.validate import PlanStep, validate_plan
 
 DEMONSTRATORS = ("P1", "P2", "P3", "P4", "P5")
 #: Table I: demonstration time in seconds (excuse, complete) per kitchen.
@@ -34,6 +36,10 @@ TABLE_II_OBSERVED = {
 }
 #: The minimal excuse of each kitchen (what the excuse demonstration reaches).
 EXCUSE = {"kitchen-1": [Atom("open", ("pinkdrawer",))], "kitchen-2": [Atom("clear", ("pinkdrawer",))]}
+#: Where the demonstrators leave things: the chair pushed away from PinkDrawer
+#: goes into the corner, not in front of BlueDrawer (which the planner, caring
+#: only for the goal, might choose, blocking the drawer the padding opens).
+TIDY = {"kitchen-1": [], "kitchen-2": [Atom("blocking", ("chair", "corner"))]}
 #: Redundant skills a demonstrator may add: (pair that undoes itself, single).
 PADDING = {
     "kitchen-1": ([("close_drawer", ("pinkdrawer",)), ("open_drawer", ("pinkdrawer",))],
@@ -60,8 +66,6 @@ class RenderedDemo:
 
 
 def _plan_to(domain, problem, goal: list[Atom]) -> list[tuple[str, tuple[str, ...]]]:
-    from dataclasses import replace
-
     _, result = plan_task(domain, replace(problem, goal=tuple(Literal(a) for a in goal)))
     if result.plan is None:
         raise RuntimeError(f"the human cannot reach {goal}")
@@ -80,19 +84,33 @@ def padded_plan(kitchen: str, base: list[tuple[str, tuple[str, ...]]], size: int
     return plan
 
 
+def check_executable(plan: list[tuple[str, tuple[str, ...]]], domain, state: set[Atom]) -> None:
+    """Raise ValueError unless every action of ``plan`` is applicable in turn from ``state``.
+
+    The renderer writes whatever a script says; an inapplicable padding skill
+    would show the chair teleporting and teach the learner wrong actions.
+    """
+    report = validate_plan(domain, frozenset(state), (), [PlanStep(name, args) for name, args in plan])
+    failure = report.first_failure
+    if failure is not None:
+        raise ValueError(f"step {failure.index} {failure.step} is not applicable: "
+                         f"{' '.join(str(l) for l in failure.failed)} does not hold")
+
+
 def render_study(domains_root: Path, out_root: Path, rate_hz: float = 90.0) -> list[RenderedDemo]:
     """Render every demonstration of the study into ``out_root/<kitchen>/``."""
     out: list[RenderedDemo] = []
     for kitchen in ("kitchen-1", "kitchen-2"):
         human, problem = parse_task(domains_root / kitchen / "human.pddl", domains_root / kitchen / "problem.pddl")
         scene = Scene(positions=SCENE_POSITIONS, types=dict(problem.objects), spellings=problem.spellings)
-        base = {"excuse": _plan_to(human, problem, EXCUSE[kitchen]),
-                "complete": _plan_to(human, problem, [l.atom for l in problem.goal])}
+        base = {"excuse": _plan_to(human, problem, EXCUSE[kitchen] + TIDY[kitchen]),
+                "complete": _plan_to(human, problem, [l.atom for l in problem.goal] + TIDY[kitchen])}
         for kind in ("excuse", "complete"):
             for k, who in enumerate(DEMONSTRATORS):
                 size = TABLE_II_OBSERVED[kitchen][kind][k]
                 parallel = size is None
                 plan = padded_plan(kitchen, base[kind], len(base[kind]) if parallel else size)
+                check_executable(plan, human, set(problem.init))
                 steps = script_for_plan(plan, human, set(problem.init))
                 if parallel:
                     steps = _parallel(steps)
@@ -112,28 +130,33 @@ def render_study(domains_root: Path, out_root: Path, rate_hz: float = 90.0) -> l
 
 
 def _scaled(steps: list[Step], seconds: float) -> list[Step]:
-    """Stretch or shrink step durations so the demonstration lasts ``seconds``."""
-    total = sum(s.duration for s in steps)
+    """Stretch or shrink step durations so the demonstration lasts ``seconds``.
+
+    The length is the schedule's (steps of the two hands may overlap), not
+    the sum of the durations.
+    """
+    total = max(end for _, end in schedule(steps))
     factor = seconds / total
-    return [Step(s.activity, s.obj, s.target, max(0.12, s.duration * factor), s.changes, s.hand) for s in steps]
+    return [replace(s, duration=max(0.12, s.duration * factor)) for s in steps]
 
 
 def _parallel(steps: list[Step]) -> list[Step]:
-    """The first Reach and Take (the plate) done by the left hand: two hands at once.
+    """Both hands at once: the left hand fetches the first item taken.
 
-    The renderer plays steps one after the other, so this marks the hand only;
-    the paper's tool could not process such demonstrations, and the study
-    excludes them the same way.
+    The Reach and Take of the first item move to the left hand and run in
+    parallel with the right hand's earlier steps (after the opening pause);
+    the left hand then puts the item (Put and Release) once the right hand
+    is done, since the Put may need what the right hand prepared (an open
+    drawer).  Everything else stays with the right hand.
     """
-    out = []
-    moved = 0
-    for s in steps:
-        if s.activity in ("Reach", "Take") and s.obj == "redplate" and moved < 2:
-            out.append(Step(s.activity, s.obj, s.target, s.duration, s.changes, hand="left"))
-            moved += 1
-        else:
-            out.append(s)
-    return out
+    take = next(i for i, s in enumerate(steps) if s.activity == "Take")
+    reach, put, release = take - 1, take + 1, take + 2
+    if steps[reach].activity != "Reach" or steps[put].activity not in ("Put", "Stack") \
+            or steps[release].activity != "Release":
+        raise ValueError("expected Reach, Take, Put, Release of the first item taken")
+    left = [replace(s, hand="left") for s in steps[reach:release + 1]]
+    first, earlier = steps[:1], [replace(s, parallel=True) for s in steps[1:reach]]
+    return first + [replace(s, parallel=True) for s in left[:2]] + earlier + left[2:] + steps[release + 1:]
 
 
 def main(argv: list[str] | None = None) -> int:

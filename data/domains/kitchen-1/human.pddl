@@ -40,10 +40,11 @@
     :precondition (and (clear ?d) (hand_free) (not (open ?d)))
     :effect (open ?d))
 
-  ;; Close an open drawer.
+  ;; Close an open drawer that nothing blocks (closing needs the drawer as
+  ;; accessible as opening it does).
   (:action close_drawer
     :parameters (?d - drawer)
-    :precondition (and (open ?d) (hand_free))
+    :precondition (and (open ?d) (clear ?d) (hand_free))
     :effect (not (open ?d)))
 
   ;; Take an item out of an open drawer.

@@ -32,7 +32,7 @@
 
   (:action close_drawer
     :parameters (?d - drawer)
-    :precondition (and (open ?d) (hand_free))
+    :precondition (and (open ?d) (clear ?d) (hand_free))
     :effect (not (open ?d)))
 
   (:action take_from_drawer

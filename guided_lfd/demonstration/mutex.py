@@ -1,0 +1,96 @@
+"""Negative preconditions a learned action need not state: implied through a mutex.
+
+A learned action says what was false before it made something true (the
+drawer was closed before it was opened), so a Put learns ``(not (inside ?i
+?d))`` next to ``(in_hand ?i)``.  When ``p`` and ``q`` can never both be true
+(a *mutex*: the plate is either in the hand, in a drawer or on a surface), a
+positive precondition ``q`` already implies ``(not p)``; stating it again only
+makes the action model wordier than the one a person would write.
+
+The mutexes are Fast Downward's lifted invariants (Helmert 2009, invariant
+synthesis), found by :func:`guided_lfd.excuse.invariants.lifted_invariants` on
+the domain the learned actions end up in (with the prior's actions, if any,
+and the reverse of every action).  An invariant only says "at most one atom of
+each group is true" for states reachable from states where that already holds,
+so it is kept only when no observed state of the demonstrations violates it.
+Dropping ``(not p)`` is then sound: in every state the actions can reach from
+such states, ``q`` true means ``p`` false, and the action applies exactly
+when it did before.  When synthesis fails nothing is dropped.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from dataclasses import replace
+
+from guided_lfd.errors import MismatchError
+from guided_lfd.pddl.model import EQUALITY, ActionSchema, Atom, Domain, Problem
+
+
+def proven_invariants(domain: Domain, objects: dict[str, str], states: Iterable[frozenset[Atom]]) -> list:
+    """Fast Downward's lifted invariants of ``domain`` that every state in ``states`` satisfies."""
+    from guided_lfd.excuse.invariants import lifted_invariants
+
+    problem = Problem("learned-invariants", domain.name, dict(objects), frozenset(), ())
+    try:
+        found = lifted_invariants(domain, problem)
+    except MismatchError:
+        return []
+    observed = list(states)
+    return [inv for inv in found if all(_holds(inv, state) for state in observed)]
+
+
+def _key(part, atom: Atom) -> tuple[str, ...] | None:
+    """The group instance ``atom`` belongs to under invariant part ``part`` (None: it does not)."""
+    if part.predicate != atom.predicate or len(part.args) != len(atom.args):
+        return None
+    return tuple(atom.args[pos] for index in range(part.arity()) for pos, arg in enumerate(part.args) if arg == index)
+
+
+def _holds(inv, state: frozenset[Atom]) -> bool:
+    """Whether at most one atom of each of ``inv``'s groups is true in ``state``."""
+    seen: set[tuple[str, ...]] = set()
+    for atom in state:
+        for part in inv.parts:
+            key = _key(part, atom)
+            if key is None:
+                continue
+            if key in seen:
+                return False
+            seen.add(key)
+    return True
+
+
+def mutex(p: Atom, q: Atom, invariants: list) -> object | None:
+    """An invariant under which lifted atoms ``p`` and ``q`` are never both true, else None.
+
+    Both must fall into the same group for every binding of their variables
+    (the same group key, variable for variable).  Atoms of one predicate are
+    never reported: under a binding that makes them equal, "not both" fails.
+    """
+    if p.predicate == q.predicate:
+        return None
+    for inv in invariants:
+        keys_p = {_key(part, p) for part in inv.parts} - {None}
+        keys_q = {_key(part, q) for part in inv.parts} - {None}
+        if keys_p & keys_q:
+            return inv
+    return None
+
+
+def drop_implied_negative_preconditions(domain: Domain, names: set[str], invariants: list) -> Domain:
+    """``domain`` with each ``(not p)`` of the actions in ``names`` dropped when a positive precondition implies it."""
+    actions: list[ActionSchema] = []
+    for action in domain.actions:
+        if action.name in names:
+            positives = [l.atom for l in action.precondition if l.positive and l.atom.predicate != EQUALITY]
+            kept = tuple(l for l in action.precondition
+                         if l.positive or l.atom.predicate == EQUALITY
+                         or not any(mutex(l.atom, q, invariants) for q in positives))
+            if kept != action.precondition:
+                action = replace(action, precondition=kept)
+        actions.append(action)
+    return replace(domain, actions=actions)
+
+
+__all__ = ["proven_invariants", "mutex", "drop_implied_negative_preconditions"]
