@@ -6,7 +6,7 @@ VENV   ?= .venv
 BIN     = $(VENV)/bin
 JOBS   ?= 2
 
-.PHONY: setup demo demos test test-slow clean
+.PHONY: setup demo demos reproduce-study test test-slow clean
 
 $(BIN)/guided-lfd: pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -26,6 +26,10 @@ demo: setup
 
 demos: setup
 	$(BIN)/python -m guided_lfd.demonstration.study_data data/demos
+
+# The paper's user study from the shipped data: results/study.md, CSVs, PNGs.
+reproduce-study: setup
+	$(BIN)/python -m guided_lfd.study --root . --out results
 
 test: setup
 	$(BIN)/python -m pytest -q -n $(JOBS)

@@ -7,8 +7,10 @@ from typing import Annotated
 
 import typer
 
+from cli.evaluate import evaluate
 from cli.excuse import excuse
 from cli.learn_domain import learn_domain
+from cli.merge import merge
 from cli.plan import plan
 from cli.segment import segment
 from cli.validate import validate
@@ -62,6 +64,8 @@ app.command("excuse")(excuse)
 app.command("plan")(plan)
 app.command("segment")(segment)
 app.command("learn-domain")(learn_domain)
+app.command("merge")(merge)
+app.command("evaluate")(evaluate)
 app.command("validate")(validate)
 
 

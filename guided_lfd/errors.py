@@ -23,7 +23,7 @@ code  meaning
 31    PDDL syntax error
 32    PDDL semantic error (unknown object, predicate, type, arity)
 33    unsupported PDDL requirement or construct
-34    domain and problem do not belong together
+34    inputs do not belong together (domain and problem, domains to merge)
 35    plan file error (unknown action, wrong arity, syntax)
 36    demonstration trace / segments error
 37    bad option value (cost specification, fixed predicate, ...)
@@ -69,7 +69,7 @@ EXIT_CODES: dict[int, str] = {
     EXIT_PDDL_SYNTAX: "PDDL syntax error",
     EXIT_PDDL_SEMANTIC: "PDDL semantic error",
     EXIT_UNSUPPORTED: "unsupported PDDL requirement or construct",
-    EXIT_MISMATCH: "domain and problem do not belong together",
+    EXIT_MISMATCH: "inputs do not belong together (domain and problem, domains to merge)",
     EXIT_PLAN_FILE: "plan file error",
     EXIT_TRACE: "demonstration trace or segments error",
     EXIT_BAD_OPTION: "bad option value",
@@ -142,6 +142,10 @@ class MismatchError(GuidedLfdError):
 
     exit_code = EXIT_MISMATCH
     kind = "mismatch"
+
+
+class MergeError(MismatchError):
+    """Domains to merge declare the same name incompatibly."""
 
 
 class PlanFileError(GuidedLfdError):

@@ -24,6 +24,46 @@ class Change:
         return f"{'+' if self.added else '-'}{self.atom}"
 
 
+def read_excuse(path: str, domain: Domain, problem: Problem) -> list[Change]:
+    """The first excuse of a ``guided-lfd/excuse`` JSON document (``guided-lfd excuse --json``).
+
+    Atoms must be ground atoms of the domain's predicates over the problem's
+    objects (or the domain's constants); anything else is an
+    :class:`~guided_lfd.errors.InputFileError` naming the file.
+    """
+    import json
+
+    from guided_lfd.errors import InputFileError, Location
+    from guided_lfd.pddl.source import read_text
+
+    text = read_text(path)
+    try:
+        doc = json.loads(text)
+    except json.JSONDecodeError as exc:
+        raise InputFileError(f"not JSON ({exc.msg}), expected a guided-lfd/excuse document",
+                             Location(path, exc.lineno, exc.colno)) from None
+    excuse = doc.get("excuse") if isinstance(doc, dict) and doc.get("format") == "guided-lfd/excuse" else None
+    if not isinstance(excuse, dict) or not isinstance(excuse.get("changes"), list):
+        raise InputFileError("expected a guided-lfd/excuse document with an excuse "
+                             "(from `guided-lfd excuse --json`)", Location(path, 1))
+    changes = []
+    for item in excuse["changes"]:
+        words = str(item.get("atom", "") if isinstance(item, dict) else "").strip().strip("()").lower().split()
+        op = item.get("op") if isinstance(item, dict) else None
+        if not words or op not in ("add", "delete"):
+            raise InputFileError(f"excuse change {item!r}: expected {{\"op\": \"add\"|\"delete\", "
+                                 f"\"atom\": \"(pred obj ...)\"}}", Location(path, 1))
+        if words[0] not in domain.predicates:
+            raise InputFileError(f"excuse change {item.get('change', item)!s}: unknown predicate {words[0]} "
+                                 f"(expected a predicate of {domain.path})", Location(path, 1))
+        unknown = [o for o in words[1:] if o not in problem.objects and o not in domain.constants]
+        if unknown:
+            raise InputFileError(f"excuse change {item.get('change', item)!s}: unknown object {unknown[0]} "
+                                 f"(expected an object of {problem.path})", Location(path, 1))
+        changes.append(Change(Atom(words[0], tuple(words[1:])), op == "add"))
+    return changes
+
+
 def excuse_state(init: frozenset[Atom], changes: list[Change]) -> frozenset[Atom]:
     """I' = I Δ E."""
     state = set(init)

@@ -10,6 +10,9 @@ was first written (``PinkDrawer``) for messages meant for people.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import Any
+
+from guided_lfd.errors import Location
 
 #: The PDDL requirements guided-lfd accepts.
 SUPPORTED_REQUIREMENTS = (":strips", ":typing", ":negative-preconditions", ":equality")
@@ -110,6 +113,14 @@ class Domain:
     actions: list[ActionSchema]
     path: str = "<domain>"
     spellings: dict[str, str] = field(default_factory=dict)
+    #: The parsed file's source map (positions for error messages), if read from a file.
+    source: Any = field(default=None, repr=False, compare=False)
+
+    def locate(self, name: str, *sections: str) -> Location:
+        """Where ``name`` is written in the domain file (searched in ``sections`` first)."""
+        if self.source is None:
+            return Location(self.path)
+        return self.source.locate(name, *sections)
 
     def action(self, name: str) -> ActionSchema:
         """The action schema called ``name`` (KeyError if there is none)."""

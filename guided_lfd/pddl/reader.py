@@ -324,6 +324,7 @@ def _domain_from_tarski(reader, src: SourceMap, path: str) -> Domain:
         actions=actions,
         path=path,
         spellings=src.spellings(),
+        source=src,
     )
 
 

@@ -1,0 +1,90 @@
+"""``guided-lfd evaluate``: the paper's measures of a guided demonstration."""
+
+from __future__ import annotations
+
+import csv
+import io
+from typing import Annotated
+
+import typer
+
+from cli.common import JsonOption, OutputOption, QuietOption, check_inputs, command, ui
+from guided_lfd.demonstration.learn import ground_actions, load_segments
+from guided_lfd.errors import OptionError
+from guided_lfd.evaluate import DEFAULT_EXPLORATION_BOUND, Demonstration, evaluate as run_evaluation, report_rows
+from guided_lfd.excuse.check import read_excuse
+from guided_lfd.excuse.engine import find_excuses
+from guided_lfd.io import check_writable, json_document, write_text
+from guided_lfd.pddl.reader import parse_domain, parse_task
+
+
+@command
+def evaluate(
+    robot: Annotated[str, typer.Argument(help="The robot's prior domain (the one the excuse is for).")],
+    problem: Annotated[str, typer.Argument(help="The robot's task.")],
+    human: Annotated[str, typer.Option("--human", metavar="DOMAIN",
+                                       help="The demonstrator's domain (human skills), for predicted sizes "
+                                            "and misdirected guidance.")],
+    excuse: Annotated[str | None, typer.Option("--excuse", metavar="JSON",
+                                               help="Excuse from `guided-lfd excuse --json` (default: compute "
+                                                    "the minimal excuse).")] = None,
+    nonminimal: Annotated[str | None, typer.Option(
+        "--nonminimal-excuse", metavar="JSON",
+        help="A non-minimal excuse to predict a demonstration size for (default: the last excuse state on "
+             "the human's full plan).")] = None,
+    demonstration: Annotated[list[str] | None, typer.Option(
+        "--demonstration", "-d", metavar="SEGMENTS",
+        help="Segments of a demonstration (from `guided-lfd segment`); repeatable. Gives the fraction of "
+             "useful demonstration.")] = None,
+    merged: Annotated[str | None, typer.Option("--merged", metavar="DOMAIN",
+                                               help="Prior + learned domain (from `guided-lfd merge`): is the "
+                                                    "task solvable after the demonstration?")] = None,
+    bound: Annotated[int, typer.Option("--bound", help="Most human states explored for misdirected guidance.")]
+    = DEFAULT_EXPLORATION_BOUND,
+    csv_out: Annotated[bool, typer.Option("--csv", help="Write CSV rows (measure,value,detail).")] = False,
+    output: OutputOption = "-",
+    json_out: JsonOption = False,
+    quiet: QuietOption = False,
+) -> None:
+    """F1 savings, predicted sizes, useful fraction, misdirected guidance, solvability after demonstration."""
+    if bound < 1:
+        raise OptionError(f"--bound {bound}: expected a number of states >= 1")
+    if csv_out and json_out:
+        raise OptionError("--csv and --json: choose one output format")
+    demos = demonstration or []
+    check_inputs(robot, problem, human, *[p for p in (excuse, nonminimal, merged) if p], *demos)
+    check_writable(output)
+    robot_domain, task = parse_task(robot, problem)
+    human_domain = parse_domain(human)
+    if excuse is not None:
+        changes = read_excuse(excuse, robot_domain, task)
+        source = excuse
+    else:
+        report = find_excuses(robot_domain, task)
+        if report.excuse is None:
+            raise OptionError(f"the task has no excuse to evaluate ({report.status}); see `guided-lfd excuse`")
+        changes, source = report.excuse.changes, "computed (guided-lfd excuse defaults)"
+    other = read_excuse(nonminimal, robot_domain, task) if nonminimal else None
+    documents = []
+    for path in demos:
+        doc = load_segments(path)
+        documents.append(Demonstration(path, ground_actions(doc, path), doc.get("objects", {})))
+    merged_domain = parse_domain(merged) if merged else None
+    ui.info("[dim]evaluating: planning on the human domain, exploring its states ...[/]")
+    result = run_evaluation(robot_domain, task, human_domain, changes, documents, merged_domain, other, bound)
+    result = {"robot": robot, "problem": problem, "human": human, "excuse_source": source,
+              "merged": merged, **result}
+    rows = report_rows(result)
+    if json_out:
+        text = json_document("evaluation", result)
+    elif csv_out:
+        buf = io.StringIO()
+        writer = csv.writer(buf, lineterminator="\n")
+        writer.writerow(["measure", "value", "detail"])
+        writer.writerows(rows)
+        text = buf.getvalue()
+    else:
+        width = max(len(m) for m, _, _ in rows)
+        vwidth = max(len(v) for _, v, _ in rows)
+        text = "".join(f"{m:<{width}}  {v:>{vwidth}}  {d}\n" for m, v, d in rows)
+    write_text(output, text)

@@ -1,0 +1,66 @@
+"""``guided-lfd merge``: the robot's prior domain + learned domains -> one merged domain."""
+
+from __future__ import annotations
+
+from typing import Annotated
+
+import typer
+
+from cli.common import JsonOption, OutputOption, QuietOption, check_inputs, command, ui
+from guided_lfd.errors import OptionError
+from guided_lfd.io import check_writable, json_document, write_text
+from guided_lfd.merge import merge_domains
+from guided_lfd.pddl.compile import compile_negative_preconditions
+from guided_lfd.pddl.reader import parse_domain, parse_task
+from guided_lfd.pddl.writer import domain_to_pddl, problem_to_pddl
+
+
+@command
+def merge(
+    prior: Annotated[str, typer.Argument(help="The robot's prior domain ('-' = stdin).")],
+    learned: Annotated[list[str], typer.Argument(help="Learned domains to merge into it ('-' = stdin).")],
+    name: Annotated[str | None, typer.Option("--name", help="Name of the merged domain (default: the prior's).")] = None,
+    positive_for: Annotated[str | None, typer.Option(
+        "--positive-for", metavar="PROBLEM",
+        help="Compile negative preconditions away (complement predicates not_p) for STRIPS-only tools such as "
+             "pyperplan's parser; PROBLEM, with the complements added, goes to --problem-output.")] = None,
+    problem_output: Annotated[str | None, typer.Option(
+        "--problem-output", metavar="FILE", help="Where --positive-for writes the compiled problem.")] = None,
+    output: OutputOption = "-",
+    json_out: JsonOption = False,
+    quiet: QuietOption = False,
+) -> None:
+    """Unite domains: equal actions kept once, name clashes renamed, every action's origin as a comment."""
+    if (positive_for is None) != (problem_output is None):
+        raise OptionError("--positive-for and --problem-output go together")
+    if problem_output is not None and problem_output == output:
+        raise OptionError("--problem-output must differ from --output")
+    check_inputs(prior, *learned, *([positive_for] if positive_for else []))
+    check_writable(output)
+    if problem_output is not None:
+        check_writable(problem_output)
+    domains = [parse_domain(path) for path in (prior, *learned)]
+    result = merge_domains(domains, name.lower() if name else None)
+    header = "Merged by guided-lfd merge from: " + ", ".join((prior, *learned))
+    if result.notes:
+        header += "\n" + "\n".join(result.notes)
+    merged = result.domain
+    problem_text = None
+    if positive_for is not None:
+        _, problem = parse_task(prior, positive_for)
+        merged, problem = compile_negative_preconditions(merged, problem)
+        header += "\nNegative preconditions compiled into complement predicates (not_...) for " + positive_for
+        problem_text = problem_to_pddl(problem, header=f"{positive_for} with complement atoms for the merged domain")
+    text = domain_to_pddl(merged, header=header)
+    if json_out:
+        text = json_document("merge", {
+            "inputs": [prior, *learned], "domain": text,
+            "actions": [a.name for a in merged.actions],
+            "duplicates": result.duplicates, "renamed": result.renamed, "refined": result.refined,
+        })
+    if problem_text is not None and problem_output is not None:
+        write_text(problem_output, problem_text)
+    write_text(output, text)
+    for note in result.notes:
+        ui.info(f"[dim]{note}[/]")
+    ui.info(f"[dim]{len(merged.actions)} action(s) after merging {len(domains)} domain(s)[/]")

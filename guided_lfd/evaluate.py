@@ -1,0 +1,421 @@
+"""The paper's measures of guided demonstration (section III-A).
+
+* **Demonstration size savings** ``F1 = |pi'_H| / |pi_H|``: the human plan
+  from the excuse state to the goal over the one from I to the goal, both
+  found by an optimal planner on the human's domain; with the predicted sizes
+  of the demonstrations for the minimal excuse, a non-minimal excuse and the
+  full goal (the P columns of the paper's Table II).
+* **Fraction of useful demonstration**: the demonstrated actions the robot
+  did not already have, over all demonstrated actions.
+* **Misdirected guidance**: over the states a demonstrator can reach with the
+  human domain (breadth-first, up to a bound) in which the excuse holds, the
+  fraction from which the robot still cannot reach the goal, and how they
+  differ from the intended excuse state.
+* **Plan solvability after demonstration**: whether the merged domain (prior
+  + demonstrated actions) solves the original task; the plan is validated.
+
+Every plan behind a number is validated with the lifted validator.
+"""
+
+from __future__ import annotations
+
+import itertools
+from collections import Counter, deque
+from dataclasses import dataclass, field, replace
+from typing import Any
+
+from guided_lfd.demonstration.learn import DemonstratedAction
+from guided_lfd.excuse.check import Change, excuse_state
+from guided_lfd.excuse.reach import ReachabilityOracle
+from guided_lfd.excuse.space import Semantics, build_space
+from guided_lfd.grounding import GroundTask, ground
+from guided_lfd.pddl.model import Atom, Domain, Literal, Problem
+from guided_lfd.planning import plan_task
+from guided_lfd.validate import PlanStep, validate_plan
+
+#: Default bound on the states explored for misdirected guidance.
+DEFAULT_EXPLORATION_BOUND = 20_000
+#: How many distinct kinds of misdirected state a report lists.
+MAX_MISDIRECTION_EXAMPLES = 5
+#: Largest set of differences tried when explaining a misdirected state.
+MAX_CULPRIT_SIZE = 3
+
+
+def excuse_goal(changes: list[Change]) -> tuple[Literal, ...]:
+    """The excuse as a goal: every change holds (``+p``: p true, ``-p``: p false)."""
+    return tuple(Literal(c.atom, c.added) for c in changes)
+
+
+def holds(goal: tuple[Literal, ...], state: frozenset[Atom] | set[Atom]) -> bool:
+    """Whether ``state`` satisfies the conjunction ``goal``."""
+    return all((lit.atom in state) == lit.positive for lit in goal)
+
+
+def optimal_plan(domain: Domain, problem: Problem, goal: tuple[Literal, ...] | None = None,
+                 init: frozenset[Atom] | None = None, time_limit: float | None = None) -> list[PlanStep] | None:
+    """An optimal, validated plan for ``problem`` with another goal or initial state; None if unsolvable."""
+    task_problem = replace(problem, goal=problem.goal if goal is None else goal,
+                           init=problem.init if init is None else init)
+    if holds(task_problem.goal, task_problem.init):
+        return []
+    _, result = plan_task(domain, task_problem, "astar-lmcut", time_limit)
+    if result.plan is None:
+        return None
+    steps = [PlanStep(a.schema, a.args) for a in result.plan]
+    if not validate_plan(domain, task_problem.init, task_problem.goal, steps).valid:
+        raise RuntimeError("internal check failed: a predicted demonstration plan does not validate")
+    return steps
+
+
+# -- F1 and the predicted demonstration sizes ------------------------------------
+
+@dataclass
+class PredictedSizes:
+    """Predicted demonstration sizes (plan lengths on the human domain); None = unreachable."""
+
+    minimal_excuse: int | None
+    nonminimal_excuse: int | None
+    goal: int | None
+    remaining_after_excuse: int | None
+    nonminimal_changes: list[str] = field(default_factory=list)
+    plans: dict[str, list[str] | None] = field(default_factory=dict)
+
+    @property
+    def f1(self) -> float | None:
+        """|pi'_H| / |pi_H|: the share of the full demonstration the excuse saves."""
+        if self.remaining_after_excuse is None or not self.goal:
+            return None
+        return self.remaining_after_excuse / self.goal
+
+
+def latest_excuse_on_plan(robot_can_reach: "RobotReachability", human: Domain, problem: Problem,
+                          plan: list[PlanStep]) -> list[Change] | None:
+    """A non-minimal excuse: the last state on the human's full plan from which the robot can finish.
+
+    Demonstrating up to it is asking for all of the demonstration but the
+    robot's last steps; it is an excuse (it does not satisfy the goal and the
+    robot reaches the goal from it) but usually far from minimal.
+    """
+    states = [problem.init]
+    for step in plan:
+        states.append(_apply(human, step, states[-1]))
+    for state in reversed(states[1:-1]):
+        if not holds(problem.goal, state) and robot_can_reach(state):
+            return sorted([Change(a, True) for a in state - problem.init]
+                          + [Change(a, False) for a in problem.init - state], key=str)
+    return None
+
+
+def _apply(domain: Domain, step: PlanStep, state: frozenset[Atom]) -> frozenset[Atom]:
+    schema = domain.action(step.action)
+    binding = {v: o for (v, _), o in zip(schema.params, step.args)}
+    return frozenset((state - {a.substitute(binding) for a in schema.delete})
+                     | {a.substitute(binding) for a in schema.add})
+
+
+def predicted_sizes(human: Domain, problem: Problem, excuse: list[Change],
+                    robot_can_reach: "RobotReachability | None" = None,
+                    nonminimal: list[Change] | None = None) -> PredictedSizes:
+    """The P columns: plans on ``human`` to the minimal excuse, a non-minimal excuse and the goal."""
+    to_goal = optimal_plan(human, problem)
+    to_excuse = optimal_plan(human, problem, goal=excuse_goal(excuse))
+    remaining = optimal_plan(human, problem, init=excuse_state(problem.init, excuse))
+    if nonminimal is None and to_goal is not None and robot_can_reach is not None:
+        nonminimal = latest_excuse_on_plan(robot_can_reach, human, problem, to_goal)
+    to_nonminimal = optimal_plan(human, problem, goal=excuse_goal(nonminimal)) if nonminimal else None
+
+    def size(plan: list[PlanStep] | None) -> int | None:
+        return None if plan is None else len(plan)
+
+    def text(plan: list[PlanStep] | None) -> list[str] | None:
+        return None if plan is None else [str(s) for s in plan]
+
+    return PredictedSizes(
+        minimal_excuse=size(to_excuse), nonminimal_excuse=size(to_nonminimal), goal=size(to_goal),
+        remaining_after_excuse=size(remaining), nonminimal_changes=[str(c) for c in nonminimal or []],
+        plans={"minimal_excuse": text(to_excuse), "nonminimal_excuse": text(to_nonminimal),
+               "goal": text(to_goal), "remaining_after_excuse": text(remaining)},
+    )
+
+
+# -- robot reachability from arbitrary states --------------------------------------
+
+class RobotReachability:
+    """Whether the robot reaches its goal from a given state (memoised across states)."""
+
+    def __init__(self, robot: Domain, problem: Problem) -> None:
+        self.task: GroundTask = ground(robot, problem)  # no pruning: any atom may change
+        self.oracle = ReachabilityOracle(build_space(self.task, Semantics.LITERAL))
+
+    def __call__(self, state: frozenset[Atom] | set[Atom]) -> bool:
+        bits = 0
+        index = self.task.index
+        for atom in state:
+            i = index.get(atom)
+            if i is not None:  # atoms the robot's domain does not know cannot matter to it
+                bits |= 1 << i
+        return self.oracle.solve(bits) is not None
+
+
+# -- misdirected guidance ----------------------------------------------------------
+
+@dataclass
+class Misdirection:
+    """States a demonstrator may leave behind when negating the excuse."""
+
+    bound: int
+    explored: int
+    complete: bool  # the whole reachable space fit in the bound
+    excuse_states: int
+    misdirected: int
+    examples: list[dict[str, Any]] = field(default_factory=list)
+
+    @property
+    def fraction(self) -> float | None:
+        """Misdirected over excuse states (None when no excuse state was reached)."""
+        return self.misdirected / self.excuse_states if self.excuse_states else None
+
+
+def misdirected_guidance(human: Domain, robot: Domain, problem: Problem, excuse: list[Change],
+                         bound: int = DEFAULT_EXPLORATION_BOUND,
+                         robot_can_reach: RobotReachability | None = None) -> Misdirection:
+    """Explore the human's reachable states breadth-first (at most ``bound``) and test each excuse state."""
+    task = ground(human, problem)
+    goal = excuse_goal(excuse)
+    intended = excuse_state(problem.init, excuse)
+    reach = robot_can_reach or RobotReachability(robot, problem)
+    seen = {task.init}
+    queue = deque([task.init])
+    explored = 0
+    excuse_states = misdirected = 0
+    kinds: Counter[tuple[str, ...]] = Counter()
+    first_seen: dict[tuple[str, ...], int] = {}
+    example: dict[tuple[str, ...], list[str]] = {}
+    while queue and explored < bound:
+        state_bits = queue.popleft()
+        explored += 1
+        state = frozenset(task.atoms[i] for i in range(len(task.atoms)) if (state_bits >> i) & 1)
+        if holds(goal, state) and not holds(problem.goal, state):
+            excuse_states += 1
+            if not reach(state):
+                misdirected += 1
+                cause = tuple(str(c) for c in _culprit(state, intended, reach))
+                kinds[cause] += 1
+                if cause not in first_seen:
+                    first_seen[cause] = explored
+                    example[cause] = sorted([f"+{a}" for a in state - intended] + [f"-{a}" for a in intended - state])
+        for act in task.actions:
+            if act.applicable(state_bits):
+                nxt = act.apply(state_bits)
+                if nxt not in seen:
+                    seen.add(nxt)
+                    queue.append(nxt)
+    examples = [{"cause": list(cause), "states": n, "example_difference": example[cause]}
+                for cause, n in sorted(kinds.items(), key=lambda kv: (-kv[1], first_seen[kv[0]]))]
+    return Misdirection(bound, explored, not queue, excuse_states, misdirected,
+                        examples[:MAX_MISDIRECTION_EXAMPLES])
+
+
+def _culprit(state: frozenset[Atom], intended: frozenset[Atom], reach: RobotReachability) -> list[Change]:
+    """The fewest differences from the intended excuse state that, undone, let the robot succeed.
+
+    E.g. ``+(blocking chair table) -(clear table)``: the chair now blocks the
+    plate.  Subsets are tried by size up to :data:`MAX_CULPRIT_SIZE`; beyond it
+    the whole difference is reported.
+    """
+    diff = sorted([Change(a, True) for a in state - intended] + [Change(a, False) for a in intended - state], key=str)
+    for size in range(1, min(len(diff), MAX_CULPRIT_SIZE) + 1):
+        for subset in itertools.combinations(diff, size):
+            undone = set(state)
+            for change in subset:
+                if change.added:
+                    undone.discard(change.atom)
+                else:
+                    undone.add(change.atom)
+            if reach(frozenset(undone)):
+                return list(subset)
+    return diff
+
+
+# -- fraction of useful demonstration ----------------------------------------------
+
+def known_skill(step: DemonstratedAction, robot: Domain, types: dict[str, str]) -> str | None:
+    """The robot action making exactly the step's changes (M(a) in A_R), as ``(name args)``, or None.
+
+    A demonstrated step is a skill the robot already has when one of its
+    actions, bound to the step's objects, adds and deletes exactly what the
+    step added and deleted.  Preconditions are not compared: a learned action
+    carries extra nodes-of-interest preconditions and is still the same skill.
+    """
+    subtypes = robot.subtypes()
+    objects = sorted({o for a in (*step.add, *step.delete) for o in a.args})
+    for schema in robot.actions:
+        if len(schema.add) != len(step.add) or len(schema.delete) != len(step.delete):
+            continue
+        in_effects = [v for v, _ in schema.params if any(v in a.args for a in (*schema.add, *schema.delete))]
+        ptype = dict(schema.params)
+        for combo in itertools.product(objects, repeat=len(in_effects)):
+            if any(types.get(o, "object") not in subtypes.get(ptype[v], {ptype[v]}) for v, o in zip(in_effects, combo)):
+                continue
+            binding = dict(zip(in_effects, combo))
+            if ({a.substitute(binding) for a in schema.add} == set(step.add)
+                    and {a.substitute(binding) for a in schema.delete} == set(step.delete)):
+                args = [binding.get(v, v) for v, _ in schema.params]
+                return "(" + " ".join([schema.name, *args]) + ")"
+    return None
+
+
+@dataclass
+class Usefulness:
+    """Which demonstrated actions taught the robot something new."""
+
+    steps: list[dict[str, Any]]
+
+    @property
+    def demonstrated(self) -> int:
+        """Number of demonstrated actions (the paper's observed size O)."""
+        return len(self.steps)
+
+    @property
+    def useful(self) -> int:
+        """Demonstrated actions the robot did not already have."""
+        return sum(1 for s in self.steps if s["known_as"] is None)
+
+    @property
+    def fraction(self) -> float | None:
+        """Useful over demonstrated (None for an empty demonstration)."""
+        return self.useful / self.demonstrated if self.steps else None
+
+
+def usefulness(steps: list[DemonstratedAction], robot: Domain, types: dict[str, str]) -> Usefulness:
+    """The fraction of useful demonstration over the demonstrated ``steps``."""
+    return Usefulness([{"step": s.source, "action": s.name, "objects": list(s.objects),
+                        "known_as": known_skill(s, robot, types)} for s in steps])
+
+
+# -- solvability after demonstration -----------------------------------------------
+
+@dataclass
+class Solvability:
+    """Whether the merged domain solves the original task."""
+
+    solvable: bool
+    plan: list[str] | None
+    demonstrated_actions_used: list[str]
+
+
+def solvability_after(merged: Domain, problem: Problem, prior: Domain | None = None,
+                      time_limit: float | None = None) -> Solvability:
+    """Plan the original task on ``merged`` (validated); which plan steps were not in ``prior``."""
+    plan = optimal_plan(merged, problem, time_limit=time_limit)
+    if plan is None:
+        return Solvability(False, None, [])
+    known = _prior_names(prior)
+    return Solvability(True, [str(s) for s in plan], [str(s) for s in plan if s.action not in known])
+
+
+def _prior_names(prior: Domain | None) -> set[str]:
+    return set() if prior is None else {a.name for a in prior.actions}
+
+
+
+# -- the whole report ----------------------------------------------------------------
+
+@dataclass
+class Demonstration:
+    """One demonstration to evaluate: its source and its demonstrated actions."""
+
+    source: str
+    steps: list[DemonstratedAction]
+    types: dict[str, str]
+
+
+def evaluate(robot: Domain, problem: Problem, human: Domain, excuse: list[Change],
+             demonstrations: list[Demonstration] = (),  # type: ignore[assignment]
+             merged: Domain | None = None, nonminimal: list[Change] | None = None,
+             bound: int = DEFAULT_EXPLORATION_BOUND) -> dict[str, Any]:
+    """All measures as one JSON-ready dictionary (see the module docstring)."""
+    reach = RobotReachability(robot, problem)
+    sizes = predicted_sizes(human, problem, excuse, reach, nonminimal)
+    misdirection = misdirected_guidance(human, robot, problem, excuse, bound, reach)
+    report: dict[str, Any] = {
+        "excuse": [str(c) for c in excuse],
+        "demonstration_size": {
+            "f1": _round(sizes.f1),
+            "predicted": {
+                "minimal_excuse": sizes.minimal_excuse,
+                "nonminimal_excuse": sizes.nonminimal_excuse,
+                "goal": sizes.goal,
+                "remaining_after_excuse": sizes.remaining_after_excuse,
+            },
+            "nonminimal_excuse": sizes.nonminimal_changes,
+            "plans": sizes.plans,
+        },
+        "misdirected_guidance": {
+            "fraction": _round(misdirection.fraction),
+            "excuse_states": misdirection.excuse_states,
+            "misdirected_states": misdirection.misdirected,
+            "explored_states": misdirection.explored,
+            "bound": misdirection.bound,
+            "exhaustive": misdirection.complete,
+            "causes": misdirection.examples,
+        },
+        "demonstrations": [],
+        "solvability_after_demonstration": None,
+    }
+    for demo in demonstrations:
+        useful = usefulness(demo.steps, robot, demo.types)
+        report["demonstrations"].append({
+            "source": demo.source, "demonstrated_actions": useful.demonstrated, "useful_actions": useful.useful,
+            "useful_fraction": _round(useful.fraction), "steps": useful.steps,
+        })
+    if merged is not None:
+        solv = solvability_after(merged, problem, robot)
+        report["solvability_after_demonstration"] = {
+            "solvable": solv.solvable, "plan": solv.plan, "demonstrated_actions_used": solv.demonstrated_actions_used,
+        }
+    return report
+
+
+def _round(value: float | None) -> float | None:
+    return None if value is None else round(value, 4)
+
+
+def report_rows(report: dict[str, Any]) -> list[tuple[str, str, str]]:
+    """The report as (measure, value, detail) rows, for the table and the CSV."""
+    size = report["demonstration_size"]
+    pred = size["predicted"]
+    mis = report["misdirected_guidance"]
+    rows = [
+        ("excuse", " ".join(report["excuse"]), f"{len(report['excuse'])} change(s)"),
+        ("f1_savings", _fmt(size["f1"]), "|pi'_H| / |pi_H|: human plan from the excuse state over the full one"),
+        ("predicted_size_minimal_excuse", _fmt(pred["minimal_excuse"]), "human plan to the minimal excuse"),
+        ("predicted_size_nonminimal_excuse", _fmt(pred["nonminimal_excuse"]),
+         "human plan to " + (" ".join(size["nonminimal_excuse"]) or "-")),
+        ("predicted_size_goal", _fmt(pred["goal"]), "human plan to the goal"),
+        ("predicted_size_remaining", _fmt(pred["remaining_after_excuse"]), "human plan from the excuse state"),
+        ("misdirected_guidance", _fmt(mis["fraction"]),
+         f"{mis['misdirected_states']} of {mis['excuse_states']} excuse states; "
+         f"{mis['explored_states']} states explored (bound {mis['bound']}"
+         + (", exhaustive)" if mis["exhaustive"] else ", not exhaustive)")),
+    ]
+    for cause in mis["causes"]:
+        rows.append(("misdirection_cause", str(cause["states"]),
+                     " ".join(cause["cause"]) + "  (e.g. " + " ".join(cause["example_difference"]) + ")"))
+    for demo in report["demonstrations"]:
+        rows.append(("useful_fraction", _fmt(demo["useful_fraction"]),
+                     f"{demo['useful_actions']} of {demo['demonstrated_actions']} demonstrated actions new "
+                     f"({demo['source']})"))
+    solv = report["solvability_after_demonstration"]
+    if solv is not None:
+        rows.append(("solvable_after_demonstration", "yes" if solv["solvable"] else "no",
+                     " ".join(solv["plan"]) if solv["plan"] else "no plan on the merged domain"))
+    return rows
+
+
+def _fmt(value: Any) -> str:
+    if value is None:
+        return "-"
+    if isinstance(value, float):
+        return f"{value:.3f}"
+    return str(value)

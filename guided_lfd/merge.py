@@ -1,0 +1,209 @@
+"""Merging demonstrated knowledge into the robot's domain (``guided-lfd merge``).
+
+The robot's prior domain and one or more learned domains become one domain:
+
+* types, constants and predicates are united.  A learned domain that only
+  knows ``drawer - object`` refines nothing: where one domain gives a type a
+  more specific parent (``drawer - furniture``) that parent is kept.  Truly
+  contradictory declarations (two different specific parents, a predicate
+  with two arities) cannot be merged and raise :class:`MergeError`.
+* actions equal up to a renaming (and reordering) of their parameters are
+  kept once, under the first name; the later copy is reported as a duplicate.
+* two different actions with the same name are both kept: the later one is
+  renamed (``open_drawer_2``) and the clash reported.
+* every action keeps a comment saying which file (and which action there) it
+  came from, so a merged domain can be traced back to the demonstrations.
+"""
+
+from __future__ import annotations
+
+import itertools
+from dataclasses import dataclass, field, replace
+
+from guided_lfd.errors import MergeError
+from guided_lfd.pddl.model import ActionSchema, Domain, Predicate
+
+#: Actions with more parameters than this are compared by position only
+#: (all orderings of 8 parameters would be 40320 comparisons per pair).
+MAX_PERMUTED_PARAMETERS = 7
+
+
+@dataclass
+class MergeResult:
+    """The merged domain and what the merge did, one line per decision."""
+
+    domain: Domain
+    duplicates: list[str] = field(default_factory=list)
+    renamed: list[str] = field(default_factory=list)
+    refined: list[str] = field(default_factory=list)
+
+    @property
+    def notes(self) -> list[str]:
+        """Every decision, in the order: refinements, duplicates, renames."""
+        return [*self.refined, *self.duplicates, *self.renamed]
+
+
+def _ancestors(types: dict[str, str | None], t: str) -> list[str]:
+    """``t``, its parent, grandparent, ... up to ``object``."""
+    out = [t]
+    seen = {t}
+    while True:
+        parent = types.get(out[-1])
+        if parent is None or parent in seen:
+            break
+        out.append(parent)
+        seen.add(parent)
+    if out[-1] != "object":
+        out.append("object")
+    return out
+
+
+def _common_supertype(types: dict[str, str | None], a: str, b: str) -> str:
+    """The closest type both ``a`` and ``b`` belong to."""
+    up = _ancestors(types, b)
+    return next((t for t in _ancestors(types, a) if t in up), "object")
+
+
+def _merge_types(merged: dict[str, str | None], domain: Domain, result: MergeResult) -> None:
+    for t, parent in domain.types.items():
+        parent = parent or ("object" if t != "object" else None)
+        if t not in merged:
+            merged[t] = parent
+            continue
+        old = merged[t] or ("object" if t != "object" else None)
+        if old == parent or parent in (None, "object"):
+            continue  # the other domain says no more than "some object"
+        if old in (None, "object") or old in _ancestors(merged, parent):
+            merged[t] = parent
+            result.refined.append(f"type {t}: parent {old} refined to {parent} (from {domain.path})")
+            continue
+        if parent in _ancestors(merged, old):
+            continue  # already more specific
+        raise MergeError(f"type {t} is declared under {old} and under {parent} ({domain.path}); "
+                         "expected one type hierarchy", domain.locate(t, ":types"))
+
+
+def _merge_predicates(merged: dict[str, Predicate], types: dict[str, str | None], domain: Domain,
+                      result: MergeResult) -> None:
+    for name, pred in domain.predicates.items():
+        if name not in merged:
+            merged[name] = pred
+            continue
+        old = merged[name]
+        if old.arity != pred.arity:
+            raise MergeError(f"predicate {name} has {old.arity} argument(s) in one domain and {pred.arity} "
+                             f"in {domain.path}; expected the same arity", domain.locate(name, ":predicates"))
+        params = tuple((v, _common_supertype(types, t, u)) for (v, t), (_, u) in zip(old.params, pred.params))
+        if params != old.params:
+            result.refined.append(
+                f"predicate {name}: argument types widened to "
+                f"({' '.join(t for _, t in params)}) to cover {domain.path}")
+            merged[name] = Predicate(name, params)
+
+
+def _key(action: ActionSchema, order: tuple[int, ...]) -> tuple:
+    """The action's content with its parameters renamed positionally in ``order``."""
+    binding = {action.params[i][0]: f"?p{k}" for k, i in enumerate(order)}
+    return (
+        tuple(action.params[i][1] for i in order),
+        frozenset(l.substitute(binding) for l in action.precondition),
+        frozenset(a.substitute(binding) for a in action.add),
+        frozenset(a.substitute(binding) for a in action.delete),
+    )
+
+
+def same_up_to_renaming(a: ActionSchema, b: ActionSchema) -> bool:
+    """Whether ``b`` is ``a`` with its parameters renamed (and possibly reordered)."""
+    if (len(a.params), len(a.precondition), len(a.add), len(a.delete)) != (
+            len(b.params), len(b.precondition), len(b.add), len(b.delete)):
+        return False
+    if sorted(t for _, t in a.params) != sorted(t for _, t in b.params):
+        return False
+    target = _key(a, tuple(range(len(a.params))))
+    n = len(b.params)
+    orders = itertools.permutations(range(n)) if n <= MAX_PERMUTED_PARAMETERS else [tuple(range(n))]
+    return any(_key(b, order) == target for order in orders)
+
+
+def _comments_above(domain: Domain, name: str) -> list[str]:
+    """The comment lines written right above ``(:action name`` in the domain file."""
+    source = domain.source
+    expr = source.action(name) if source is not None else None
+    if expr is None:
+        return []
+    lines = source.text.splitlines()[: expr.line - 1]
+    out: list[str] = []
+    for line in reversed(lines):
+        stripped = line.strip()
+        if not stripped.startswith(";"):
+            break
+        out.append(stripped.lstrip(";").strip())
+    return [c for c in reversed(out) if c]
+
+
+def _origin(action: ActionSchema, domain: Domain) -> str:
+    where = f"from {domain.path} (action {action.name})"
+    notes = ([action.origin] if action.origin else []) + _comments_above(domain, action.name)
+    return where + "".join(f"\n  {n}" for n in notes)
+
+
+def merge_domains(domains: list[Domain], name: str | None = None) -> MergeResult:
+    """Merge ``domains`` (the prior first) into one; see the module docstring for the rules."""
+    if not domains:
+        raise ValueError("merge_domains needs at least one domain")
+    result = MergeResult(domains[0])
+    requirements: dict[str, None] = {}
+    types: dict[str, str | None] = {}
+    constants: dict[str, str] = {}
+    predicates: dict[str, Predicate] = {}
+    spellings: dict[str, str] = {}
+    actions: list[ActionSchema] = []
+    for domain in domains:
+        requirements.update(dict.fromkeys(domain.requirements))
+        _merge_types(types, domain, result)
+        for spelled_lower, spelled in domain.spellings.items():
+            spellings.setdefault(spelled_lower, spelled)
+    for domain in domains:
+        for const, t in domain.constants.items():
+            if const not in constants:
+                constants[const] = t
+            elif constants[const] != t:
+                if constants[const] in _ancestors(types, t):
+                    constants[const] = t
+                elif t not in _ancestors(types, constants[const]):
+                    raise MergeError(f"constant {const} is of type {constants[const]} and of type {t} "
+                                     f"({domain.path}); expected one type", domain.locate(const, ":constants"))
+        _merge_predicates(predicates, types, domain, result)
+    taken: set[str] = set()
+    for domain in domains:
+        for action in domain.actions:
+            twin = next((kept for kept in actions if same_up_to_renaming(kept, action)), None)
+            if twin is not None:
+                result.duplicates.append(
+                    f"{action.name} ({domain.path}) equals {twin.name} up to parameter renaming: kept once")
+                extra = _origin(action, domain)
+                actions[actions.index(twin)] = replace(twin, origin=f"{twin.origin}\nalso {extra}")
+                continue
+            new_name, k = action.name, 1
+            while new_name in taken:
+                k += 1
+                new_name = f"{action.name}_{k}"
+            if new_name != action.name:
+                result.renamed.append(
+                    f"{action.name} ({domain.path}) differs from the {action.name} already merged: "
+                    f"renamed to {new_name}")
+            taken.add(new_name)
+            actions.append(replace(action, name=new_name, origin=_origin(action, domain)))
+    merged = Domain(
+        name=name or domains[0].name,
+        requirements=tuple(requirements),
+        types=types,
+        constants=constants,
+        predicates=predicates,
+        actions=actions,
+        path="<merged>",
+        spellings=spellings,
+    )
+    result.domain = merged
+    return result
+

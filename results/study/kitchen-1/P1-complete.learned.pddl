@@ -1,0 +1,36 @@
+;; Learned by guided-lfd from data/demos/kitchen-1/P1-complete.csv
+(define (domain learned-kitchen-1-p1-complete)
+  (:requirements :strips :typing :negative-preconditions)
+  (:types drawer furniture item obstacle surface - object)
+  (:predicates (clear ?x0 - object)
+               (graspable ?x0 - item)
+               (hand_free)
+               (in_hand ?x0 - item)
+               (inside ?x0 - item ?x1 - drawer)
+               (on_top ?x0 - item ?x1 - surface)
+               (open ?x0 - drawer))
+
+  ;; learned from 4 demonstration(s): kitchen-1/P1-complete segment 3 (Open pinkdrawer); kitchen-1/P1-complete segment 16 (Open pinkdrawer); kitchen-1/P1-complete segment 24 (Open pinkdrawer)
+  (:action open_drawer
+    :parameters (?o1 - drawer)
+    :precondition (and (clear ?o1) (hand_free) (not (open ?o1)))
+    :effect (open ?o1))
+
+  ;; learned from 1 demonstration(s): kitchen-1/P1-complete segment 7 (Take redplate)
+  (:action take_item
+    :parameters (?o1 - item ?o2 - surface)
+    :precondition (and (clear ?o2) (graspable ?o1) (hand_free) (on_top ?o1 ?o2))
+    :effect (and (in_hand ?o1) (not (hand_free)) (not (on_top ?o1 ?o2))))
+
+  ;; learned from 1 demonstration(s): kitchen-1/P1-complete segment 8 (Put redplate pinkdrawer)
+  (:action put_item_drawer
+    :parameters (?o1 - item ?o2 - drawer)
+    :precondition (and (clear ?o2) (graspable ?o1) (in_hand ?o1) (open ?o2))
+    :effect (and (hand_free) (inside ?o1 ?o2) (not (in_hand ?o1))))
+
+  ;; learned from 3 demonstration(s): kitchen-1/P1-complete segment 12 (Close pinkdrawer); kitchen-1/P1-complete segment 20 (Close pinkdrawer); kitchen-1/P1-complete segment 28 (Close pinkdrawer)
+  (:action close_drawer
+    :parameters (?o1 - drawer)
+    :precondition (and (clear ?o1) (hand_free) (open ?o1))
+    :effect (not (open ?o1)))
+)

@@ -1,0 +1,21 @@
+;; Learned by guided-lfd from data/demos/kitchen-2/P2-excuse.csv
+(define (domain learned-kitchen-2-p2-excuse)
+  (:requirements :strips :typing :negative-preconditions)
+  (:types drawer furniture item obstacle surface - object)
+  (:predicates (blocking ?x0 - obstacle ?x1 - object)
+               (clear ?x0 - object)
+               (hand_free)
+               (open ?x0 - drawer))
+
+  ;; learned from 3 demonstration(s): kitchen-2/P2-excuse segment 3 (Push chair); kitchen-2/P2-excuse segment 7 (Push chair); kitchen-2/P2-excuse segment 11 (Push chair)
+  (:action push_obstacle
+    :parameters (?o1 - obstacle ?o2 ?o3 - object)
+    :precondition (and (blocking ?o1 ?o3) (clear ?o2) (hand_free))
+    :effect (and (blocking ?o1 ?o2) (clear ?o3) (not (blocking ?o1 ?o3)) (not (clear ?o2))))
+
+  ;; learned from 1 demonstration(s): kitchen-2/P2-excuse segment 15 (Open bluedrawer)
+  (:action open_drawer
+    :parameters (?o1 - drawer)
+    :precondition (and (clear ?o1) (hand_free) (not (open ?o1)))
+    :effect (open ?o1))
+)

@@ -1,0 +1,5 @@
+(define (problem store-plate)
+  (:domain kitchen)
+  (:objects plate - item table - surface box - drawer)
+  (:init (on_top plate table) (hand_free))
+  (:goal (inside plate box)))

@@ -1,0 +1,84 @@
+"""The reproduced user study: the paper's headline figures, the chain's results, determinism."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from conftest import ROOT
+from guided_lfd.study import headline, load_paper_data, reproduce, size_reduction, time_ratios
+
+
+@pytest.fixture(scope="module")
+def paper():
+    return load_paper_data(ROOT / "data" / "study")
+
+
+def test_headline_figures_from_the_shipped_tables(paper):
+    h = headline(paper)
+    assert h["mean_time_ratio"] == 0.385  # the mean of Table I's printed Ratio row
+    assert round(h["less_time"] * 100) == 61
+    assert h["mean_time_ratio_from_times"] == pytest.approx(0.3843, abs=1e-4)
+    assert round(h["size_reduction_kitchen-1"] * 100) == 68
+    assert round(h["size_reduction_kitchen-2"] * 100) == 77
+
+
+def test_table_one_ratio_row_follows_from_its_times(paper):
+    recomputed = time_ratios(paper.times)
+    for p, printed in paper.printed_ratio.items():
+        assert recomputed[p] == pytest.approx(printed, abs=0.005)
+
+
+def test_size_reduction_excludes_p3():
+    observed = {("k", p): (1, 2) for p in ("P1", "P2", "P4", "P5")}
+    observed[("k", "P3")] = (100, 1)
+    assert size_reduction(observed, "k") == 0.5
+
+
+@pytest.fixture(scope="module")
+def study(tmp_path_factory):
+    out = tmp_path_factory.mktemp("study")
+    paper, kitchens = reproduce(ROOT, out)
+    return out, paper, kitchens
+
+
+def test_solvability_after_demonstration_holds_for_everyone(study):
+    _, _, kitchens = study
+    assert [(k.kitchen, d.demonstrator) for k in kitchens for d in k.demonstrators
+            if not d.solvable_after_excuse_demo] == []
+    assert {d.excuse_on_merged for k in kitchens for d in k.demonstrators} == {"already-solvable"}
+
+
+def test_observed_sizes_are_recovered_and_predictions_are_planned(study):
+    _, paper, kitchens = study
+    for k in kitchens:
+        for d in k.demonstrators:
+            row = paper.sizes[(k.kitchen, d.demonstrator)]
+            assert d.demos["excuse"].demonstrated_actions == row["observed_minimal_excuse"]
+            if row["observed_goal"] is not None:
+                assert d.demos["complete"].demonstrated_actions == row["observed_goal"]
+            # Planned on the learned domains: the excuse is one action away.
+            assert d.predicted["minimal_excuse"] == 1
+    assert [k.excuse for k in kitchens] == [["+(open pinkdrawer)"], ["+(clear pinkdrawer)"]]
+
+
+def test_study_report_and_files(study):
+    out, _, _ = study
+    md = (out / "study.md").read_text()
+    assert "| mean time ratio, guided / complete (Table I) | 0.385 (61% less time) | 0.385" in md
+    assert "holds for every demonstrator and both kitchens" in md
+    for name in ("study-time.csv", "study-size.csv", "study-measures.csv", "study.json"):
+        assert (out / name).stat().st_size > 0
+
+
+def _files(folder: Path) -> dict[str, bytes]:
+    return {str(p.relative_to(folder)): p.read_bytes() for p in sorted(folder.rglob("*")) if p.is_file()}
+
+
+def test_study_is_deterministic(study, tmp_path):
+    out, _, _ = study
+    reproduce(ROOT, tmp_path)
+    first, second = _files(out), _files(tmp_path)
+    assert sorted(first) == sorted(second)
+    assert [name for name in first if first[name] != second[name]] == []
