@@ -10,12 +10,13 @@ import typer
 
 from cli.common import JsonOption, OutputOption, QuietOption, check_inputs, command, ui
 from guided_lfd.demonstration.learn import ground_actions, load_segments
-from guided_lfd.errors import OptionError
-from guided_lfd.evaluate import DEFAULT_EXPLORATION_BOUND, Demonstration, evaluate as run_evaluation, report_rows
+from guided_lfd.errors import EXIT_BAD_OPTION, EXIT_NO_EXCUSE, EXIT_TIME_LIMIT, InputFileError, Location, OptionError
+from guided_lfd.evaluate import DEFAULT_EXPLORATION_BOUND, Demonstration, excuse_problem, report_rows
+from guided_lfd.evaluate import evaluate as run_evaluation
 from guided_lfd.excuse.check import read_excuse
 from guided_lfd.excuse.engine import find_excuses
 from guided_lfd.io import check_writable, json_document, write_text
-from guided_lfd.pddl.reader import parse_domain, parse_task
+from guided_lfd.pddl.reader import parse_domain, parse_problem_for, parse_task
 
 
 @command
@@ -56,20 +57,29 @@ def evaluate(
     check_writable(output)
     robot_domain, task = parse_task(robot, problem)
     human_domain = parse_domain(human)
+    parse_problem_for(human_domain, problem)  # the human's domain must fit the task too
     if excuse is not None:
         changes = read_excuse(excuse, robot_domain, task)
         source = excuse
     else:
         report = find_excuses(robot_domain, task)
         if report.excuse is None:
-            raise OptionError(f"the task has no excuse to evaluate ({report.status}); see `guided-lfd excuse`")
+            codes = {"no-excuse": EXIT_NO_EXCUSE, "timeout": EXIT_TIME_LIMIT}
+            ui.error(f"{problem}: nothing to evaluate: {report.status} (see `guided-lfd excuse`)")
+            raise typer.Exit(codes.get(report.status, EXIT_BAD_OPTION))
         changes, source = report.excuse.changes, "computed (guided-lfd excuse defaults)"
     other = read_excuse(nonminimal, robot_domain, task) if nonminimal else None
+    for path, given in ((excuse, changes), (nonminimal, other)):
+        why = excuse_problem(robot_domain, task, given) if path and given is not None else None
+        if why:
+            raise InputFileError(f"{why} (expected an excuse for {problem})", Location(path))
     documents = []
     for path in demos:
         doc = load_segments(path)
         documents.append(Demonstration(path, ground_actions(doc, path), doc.get("objects", {})))
     merged_domain = parse_domain(merged) if merged else None
+    if merged_domain is not None:
+        parse_problem_for(merged_domain, problem)
     ui.info("[dim]evaluating: planning on the human domain, exploring its states ...[/]")
     result = run_evaluation(robot_domain, task, human_domain, changes, documents, merged_domain, other, bound)
     result = {"robot": robot, "problem": problem, "human": human, "excuse_source": source,

@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+import os
+import re
+from dataclasses import replace
 from typing import Annotated
 
 import typer
@@ -11,8 +14,11 @@ from guided_lfd.errors import OptionError
 from guided_lfd.io import check_writable, json_document, write_text
 from guided_lfd.merge import merge_domains
 from guided_lfd.pddl.compile import compile_negative_preconditions
-from guided_lfd.pddl.reader import parse_domain, parse_task
+from guided_lfd.pddl.reader import parse_domain, parse_problem_for
 from guided_lfd.pddl.writer import domain_to_pddl, problem_to_pddl
+
+#: What a domain name may look like.
+PDDL_NAME = re.compile(r"[A-Za-z][A-Za-z0-9_-]*")
 
 
 @command
@@ -33,8 +39,11 @@ def merge(
     """Unite domains: equal actions kept once, name clashes renamed, every action's origin as a comment."""
     if (positive_for is None) != (problem_output is None):
         raise OptionError("--positive-for and --problem-output go together")
-    if problem_output is not None and problem_output == output:
+    if problem_output is not None and (problem_output == output or (
+            output != "-" and os.path.realpath(problem_output) == os.path.realpath(output))):
         raise OptionError("--problem-output must differ from --output")
+    if name is not None and not PDDL_NAME.fullmatch(name):
+        raise OptionError(f"--name {name!r}: expected a PDDL name (a letter, then letters, digits, '-' or '_')")
     check_inputs(prior, *learned, *([positive_for] if positive_for else []))
     check_writable(output)
     if problem_output is not None:
@@ -47,8 +56,9 @@ def merge(
     merged = result.domain
     problem_text = None
     if positive_for is not None:
-        _, problem = parse_task(prior, positive_for)
-        merged, problem = compile_negative_preconditions(merged, problem)
+        # Read the problem against the merged domain: it may use what only a learned domain declares.
+        problem = replace(parse_problem_for(merged, positive_for), domain_name=merged.name)
+        merged, problem = compile_negative_preconditions(merged, problem, result.locate)
         header += "\nNegative preconditions compiled into complement predicates (not_...) for " + positive_for
         problem_text = problem_to_pddl(problem, header=f"{positive_for} with complement atoms for the merged domain")
     text = domain_to_pddl(merged, header=header)

@@ -32,6 +32,7 @@ from guided_lfd.grounding import GroundTask, ground
 from guided_lfd.pddl.model import Atom, Domain, Literal, Problem
 from guided_lfd.planning import plan_task
 from guided_lfd.validate import PlanStep, validate_plan
+from guided_lfd.validate import holds as literal_holds
 
 #: Default bound on the states explored for misdirected guidance.
 DEFAULT_EXPLORATION_BOUND = 20_000
@@ -48,7 +49,19 @@ def excuse_goal(changes: list[Change]) -> tuple[Literal, ...]:
 
 def holds(goal: tuple[Literal, ...], state: frozenset[Atom] | set[Atom]) -> bool:
     """Whether ``state`` satisfies the conjunction ``goal``."""
-    return all((lit.atom in state) == lit.positive for lit in goal)
+    return all(literal_holds(lit, state) for lit in goal)
+
+
+def excuse_problem(robot: Domain, problem: Problem, excuse: list[Change]) -> str | None:
+    """Why ``excuse`` is not an excuse for the robot's task (Definition 2), or None if it is one."""
+    if not excuse:
+        return "the excuse has no changes"
+    state = excuse_state(problem.init, excuse)
+    if holds(problem.goal, state):
+        return "the changed state already satisfies the goal, so it is not an excuse"
+    if not RobotReachability(robot, problem)(state):
+        return "the robot cannot reach the goal from the changed state, so it is not an excuse"
+    return None
 
 
 def optimal_plan(domain: Domain, problem: Problem, goal: tuple[Literal, ...] | None = None,
@@ -97,20 +110,13 @@ def latest_excuse_on_plan(robot_can_reach: "RobotReachability", human: Domain, p
     robot reaches the goal from it) but usually far from minimal.
     """
     states = [problem.init]
-    for step in plan:
-        states.append(_apply(human, step, states[-1]))
+    for k in range(1, len(plan) + 1):
+        states.append(validate_plan(human, problem.init, (), plan[:k]).final_state)
     for state in reversed(states[1:-1]):
         if not holds(problem.goal, state) and robot_can_reach(state):
             return sorted([Change(a, True) for a in state - problem.init]
                           + [Change(a, False) for a in problem.init - state], key=str)
     return None
-
-
-def _apply(domain: Domain, step: PlanStep, state: frozenset[Atom]) -> frozenset[Atom]:
-    schema = domain.action(step.action)
-    binding = {v: o for (v, _), o in zip(schema.params, step.args)}
-    return frozenset((state - {a.substitute(binding) for a in schema.delete})
-                     | {a.substitute(binding) for a in schema.add})
 
 
 def predicted_sizes(human: Domain, problem: Problem, excuse: list[Change],
@@ -175,6 +181,12 @@ class Misdirection:
         """Misdirected over excuse states (None when no excuse state was reached)."""
         return self.misdirected / self.excuse_states if self.excuse_states else None
 
+    def as_dict(self) -> dict[str, Any]:
+        """The JSON form used by reports."""
+        return {"fraction": _round(self.fraction), "excuse_states": self.excuse_states,
+                "misdirected_states": self.misdirected, "explored_states": self.explored, "bound": self.bound,
+                "exhaustive": self.complete, "causes": self.examples}
+
 
 def misdirected_guidance(human: Domain, robot: Domain, problem: Problem, excuse: list[Change],
                          bound: int = DEFAULT_EXPLORATION_BOUND,
@@ -195,9 +207,10 @@ def misdirected_guidance(human: Domain, robot: Domain, problem: Problem, excuse:
         state_bits = queue.popleft()
         explored += 1
         state = frozenset(task.atoms[i] for i in range(len(task.atoms)) if (state_bits >> i) & 1)
-        if holds(goal, state) and not holds(problem.goal, state):
+        if holds(goal, state):
+            # A state where the goal holds too counts (the robot needs no plan).
             excuse_states += 1
-            if not reach(state):
+            if not holds(problem.goal, state) and not reach(state):
                 misdirected += 1
                 cause = tuple(str(c) for c in _culprit(state, intended, reach))
                 kinds[cause] += 1
@@ -351,15 +364,7 @@ def evaluate(robot: Domain, problem: Problem, human: Domain, excuse: list[Change
             "nonminimal_excuse": sizes.nonminimal_changes,
             "plans": sizes.plans,
         },
-        "misdirected_guidance": {
-            "fraction": _round(misdirection.fraction),
-            "excuse_states": misdirection.excuse_states,
-            "misdirected_states": misdirection.misdirected,
-            "explored_states": misdirection.explored,
-            "bound": misdirection.bound,
-            "exhaustive": misdirection.complete,
-            "causes": misdirection.examples,
-        },
+        "misdirected_guidance": misdirection.as_dict(),
         "demonstrations": [],
         "solvability_after_demonstration": None,
     }

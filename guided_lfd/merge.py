@@ -2,11 +2,13 @@
 
 The robot's prior domain and one or more learned domains become one domain:
 
-* types, constants and predicates are united.  A learned domain that only
-  knows ``drawer - object`` refines nothing: where one domain gives a type a
-  more specific parent (``drawer - furniture``) that parent is kept.  Truly
-  contradictory declarations (two different specific parents, a predicate
-  with two arities) cannot be merged and raise :class:`MergeError`.
+* types, constants and predicates are united.  The prior's type hierarchy
+  is authoritative: a learned domain that only knows ``drawer - object``
+  changes nothing, and one that would move a type the prior declares (so
+  that the prior's actions accept other objects) is refused.  Types the
+  prior does not know may be refined by a later domain.  Contradictions (two
+  specific parents, a cycle, a predicate with two arities) raise
+  :class:`MergeError`.
 * actions equal up to a renaming (and reordering) of their parameters are
   kept once, under the first name; the later copy is reported as a duplicate.
 * two different actions with the same name are both kept: the later one is
@@ -20,8 +22,8 @@ from __future__ import annotations
 import itertools
 from dataclasses import dataclass, field, replace
 
-from guided_lfd.errors import MergeError
-from guided_lfd.pddl.model import ActionSchema, Domain, Predicate
+from guided_lfd.errors import Location, MergeError
+from guided_lfd.pddl.model import ActionSchema, Domain, Predicate, common_supertype, type_ancestors
 
 #: Actions with more parameters than this are compared by position only
 #: (all orderings of 8 parameters would be 40320 comparisons per pair).
@@ -34,8 +36,17 @@ class MergeResult:
 
     domain: Domain
     duplicates: list[str] = field(default_factory=list)
+    #: merged action name -> (the domain it came from, its name there)
+    sources: dict[str, tuple[Domain, str]] = field(default_factory=dict)
     renamed: list[str] = field(default_factory=list)
     refined: list[str] = field(default_factory=list)
+
+    def locate(self, action: str) -> Location:
+        """Where a merged action is written in the file it came from."""
+        domain, name = self.sources[action]
+        source = domain.source
+        expr = source.action(name) if source is not None else None
+        return Location(domain.path) if expr is None else Location(domain.path, expr.line, expr.col)
 
     @property
     def notes(self) -> list[str]:
@@ -43,44 +54,39 @@ class MergeResult:
         return [*self.refined, *self.duplicates, *self.renamed]
 
 
-def _ancestors(types: dict[str, str | None], t: str) -> list[str]:
-    """``t``, its parent, grandparent, ... up to ``object``."""
-    out = [t]
-    seen = {t}
-    while True:
-        parent = types.get(out[-1])
-        if parent is None or parent in seen:
-            break
-        out.append(parent)
-        seen.add(parent)
-    if out[-1] != "object":
-        out.append("object")
-    return out
+def _merge_types(merged: dict[str, str | None], declared_by_prior: set[str], domain: Domain,
+                 result: MergeResult) -> None:
+    """Add ``domain``'s types; the prior's hierarchy is authoritative.
 
-
-def _common_supertype(types: dict[str, str | None], a: str, b: str) -> str:
-    """The closest type both ``a`` and ``b`` belong to."""
-    up = _ancestors(types, b)
-    return next((t for t in _ancestors(types, a) if t in up), "object")
-
-
-def _merge_types(merged: dict[str, str | None], domain: Domain, result: MergeResult) -> None:
+    A later domain may add types and may refine the parent of a type the
+    prior does not declare (``drawer - object`` to ``drawer - furniture``).
+    It may not move a type the prior declares: that would change which
+    objects the prior's actions accept.
+    """
     for t, parent in domain.types.items():
-        parent = parent or ("object" if t != "object" else None)
+        if t == "object":
+            continue
+        parent = parent or "object"
         if t not in merged:
+            if t in type_ancestors(merged, parent):
+                raise MergeError(f"type {t} would be its own ancestor via {parent} ({domain.path}); "
+                                 "expected a type hierarchy without cycles", domain.locate(t, ":types"))
             merged[t] = parent
             continue
-        old = merged[t] or ("object" if t != "object" else None)
-        if old == parent or parent in (None, "object"):
-            continue  # the other domain says no more than "some object"
-        if old in (None, "object") or old in _ancestors(merged, parent):
-            merged[t] = parent
-            result.refined.append(f"type {t}: parent {old} refined to {parent} (from {domain.path})")
-            continue
-        if parent in _ancestors(merged, old):
-            continue  # already more specific
-        raise MergeError(f"type {t} is declared under {old} and under {parent} ({domain.path}); "
-                         "expected one type hierarchy", domain.locate(t, ":types"))
+        old = merged[t] or "object"
+        if parent == old or parent in type_ancestors(merged, old):
+            continue  # the same, or less specific ("some object"): nothing to add
+        if t in declared_by_prior:
+            raise MergeError(f"type {t} is declared under {old} by the prior and under {parent} in "
+                             f"{domain.path}; expected the prior's type hierarchy", domain.locate(t, ":types"))
+        if old not in type_ancestors(merged, parent):
+            raise MergeError(f"type {t} is declared under {old} and under {parent} ({domain.path}); "
+                             "expected one type hierarchy", domain.locate(t, ":types"))
+        if t in type_ancestors(merged, parent):
+            raise MergeError(f"type {t} would be its own ancestor via {parent} ({domain.path}); "
+                             "expected a type hierarchy without cycles", domain.locate(t, ":types"))
+        merged[t] = parent
+        result.refined.append(f"type {t}: parent {old} refined to {parent} (from {domain.path})")
 
 
 def _merge_predicates(merged: dict[str, Predicate], types: dict[str, str | None], domain: Domain,
@@ -93,7 +99,7 @@ def _merge_predicates(merged: dict[str, Predicate], types: dict[str, str | None]
         if old.arity != pred.arity:
             raise MergeError(f"predicate {name} has {old.arity} argument(s) in one domain and {pred.arity} "
                              f"in {domain.path}; expected the same arity", domain.locate(name, ":predicates"))
-        params = tuple((v, _common_supertype(types, t, u)) for (v, t), (_, u) in zip(old.params, pred.params))
+        params = tuple((v, common_supertype(types, t, u)) for (v, t), (_, u) in zip(old.params, pred.params))
         if params != old.params:
             result.refined.append(
                 f"predicate {name}: argument types widened to "
@@ -158,9 +164,10 @@ def merge_domains(domains: list[Domain], name: str | None = None) -> MergeResult
     predicates: dict[str, Predicate] = {}
     spellings: dict[str, str] = {}
     actions: list[ActionSchema] = []
+    prior_types = {t for t in domains[0].types if t != "object"}
     for domain in domains:
         requirements.update(dict.fromkeys(domain.requirements))
-        _merge_types(types, domain, result)
+        _merge_types(types, prior_types, domain, result)
         for spelled_lower, spelled in domain.spellings.items():
             spellings.setdefault(spelled_lower, spelled)
     for domain in domains:
@@ -168,9 +175,9 @@ def merge_domains(domains: list[Domain], name: str | None = None) -> MergeResult
             if const not in constants:
                 constants[const] = t
             elif constants[const] != t:
-                if constants[const] in _ancestors(types, t):
+                if constants[const] in type_ancestors(types, t):
                     constants[const] = t
-                elif t not in _ancestors(types, constants[const]):
+                elif t not in type_ancestors(types, constants[const]):
                     raise MergeError(f"constant {const} is of type {constants[const]} and of type {t} "
                                      f"({domain.path}); expected one type", domain.locate(const, ":constants"))
         _merge_predicates(predicates, types, domain, result)
@@ -193,6 +200,7 @@ def merge_domains(domains: list[Domain], name: str | None = None) -> MergeResult
                     f"{action.name} ({domain.path}) differs from the {action.name} already merged: "
                     f"renamed to {new_name}")
             taken.add(new_name)
+            result.sources[new_name] = (domain, action.name)
             actions.append(replace(action, name=new_name, origin=_origin(action, domain)))
     merged = Domain(
         name=name or domains[0].name,

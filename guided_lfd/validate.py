@@ -127,18 +127,19 @@ def validate_plan(domain: Domain, state: frozenset[Atom] | set[Atom], goal: tupl
         schema = schemas[step.action]
         binding = {v: a for (v, _), a in zip(schema.params, step.args)}
         ground_pre = [lit.substitute(binding) for lit in schema.precondition]
-        failed = [lit for lit in ground_pre if not _holds(lit, current)]
+        failed = [lit for lit in ground_pre if not holds(lit, current)]
         reports.append(StepReport(i, step, failed))
         if failed:
             return ValidationReport(reports, [], frozenset(current))
         adds = {a.substitute(binding) for a in schema.add}
         dels = {a.substitute(binding) for a in schema.delete}
         current = (current - dels) | adds
-    unsatisfied = [lit for lit in goal if not _holds(lit, current)]
+    unsatisfied = [lit for lit in goal if not holds(lit, current)]
     return ValidationReport(reports, unsatisfied, frozenset(current))
 
 
-def _holds(lit: Literal, state: set[Atom]) -> bool:
+def holds(lit: Literal, state: set[Atom] | frozenset[Atom]) -> bool:
+    """Whether the literal (equality included) is true in ``state``."""
     if lit.atom.predicate == EQUALITY:
         value = lit.atom.args[0] == lit.atom.args[1]
     else:

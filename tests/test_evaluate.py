@@ -53,7 +53,8 @@ def test_misdirected_guidance_finds_the_chair_blocking_the_plate():
     robot, problem, human = kitchen(2)
     m = misdirected_guidance(human, robot, problem, CLEAR)
     assert m.complete and m.explored == 100
-    assert (m.misdirected, m.excuse_states) == (24, 64)
+    assert (m.misdirected, m.excuse_states) == (24, 80)  # goal states count as excuse states
+    assert m.fraction == 0.3
     blocking_plate = [c for c in m.examples if c["cause"] == ["-(clear table)"]]
     assert blocking_plate and "+(blocking chair table)" in blocking_plate[0]["example_difference"]
 
@@ -137,7 +138,50 @@ def test_cli_evaluate_bad_excuse_file(runner, app, tmp_path):
     bad.write_text('{"format": "guided-lfd/excuse", "excuse": {"changes": [{"op": "add", "atom": "(open nodrawer)"}]}}')
     result = runner.invoke(app, ["evaluate", *_args(1), "--excuse", str(bad)])
     assert result.exit_code == 30
-    assert f"{bad}:1: input error: excuse change" in result.stderr and "unknown object nodrawer" in result.stderr
+    assert f"{bad}:1:79: input error: excuse change (open nodrawer): unknown object nodrawer" in result.stderr
     bad.write_text("{not json")
     result = runner.invoke(app, ["evaluate", *_args(1), "--excuse", str(bad)])
     assert result.exit_code == 30 and f"{bad}:1:2: input error: not JSON" in result.stderr
+
+
+@pytest.mark.parametrize("changes,message", [
+    ('[{"op": "add", "atom": "(open)"}]', "open takes 1 argument(s), got 0"),
+    ('[{"op": "add", "atom": "(open redplate)"}]', "redplate is a item, open expects a drawer"),
+    ('[]', "the excuse has no changes"),
+    ('[{"op": "add", "atom": "(inside redplate pinkdrawer)"}]', "already satisfies the goal"),
+    ('[{"op": "add", "atom": "(open bluedrawer)"}]', "the robot cannot reach the goal from the changed state"),
+])
+def test_cli_evaluate_checks_the_excuse(runner, app, tmp_path, changes, message):
+    bad = tmp_path / "excuse.json"
+    bad.write_text('{"format": "guided-lfd/excuse", "excuse": {"changes": ' + changes + '}}')
+    result = runner.invoke(app, ["evaluate", *_args(1), "--excuse", str(bad)])
+    assert result.exit_code == 30, result.stderr
+    assert message in result.stderr and result.stderr.startswith(str(bad)) and result.stderr.count("\n") == 1
+
+
+def test_cli_evaluate_refuses_a_human_domain_that_does_not_fit(runner, app):
+    from conftest import DATA
+
+    args = _args(1)
+    args[3] = str(DATA / "merge" / "bad-arity.pddl")
+    result = runner.invoke(app, ["evaluate", *args])
+    assert result.exit_code in (32, 34) and "Traceback" not in result.stderr
+    assert result.stderr.count("\n") == 1
+
+
+def test_cli_evaluate_with_a_demonstration_and_a_nonminimal_excuse(runner, app, tmp_path):
+    base = DOMAINS / "kitchen-2"
+    segments = tmp_path / "s.json"
+    demo = DOMAINS.parent / "demos" / "kitchen-2" / "P1-excuse.csv"
+    assert runner.invoke(app, ["segment", str(demo), "-q", "-o", str(segments)]).exit_code == 0
+    other = tmp_path / "other.json"
+    other.write_text('{"format": "guided-lfd/excuse", "excuse": {"changes": ['
+                     '{"op": "add", "atom": "(clear pinkdrawer)"}, {"op": "add", "atom": "(open pinkdrawer)"}]}}')
+    result = runner.invoke(app, ["evaluate", str(base / "robot.pddl"), str(base / "problem.pddl"), "--human",
+                                 str(base / "human.pddl"), "-d", str(segments), "--nonminimal-excuse", str(other),
+                                 "--json", "-q"])
+    assert result.exit_code == 0, result.stderr
+    doc = json.loads(result.stdout)
+    assert doc["demonstration_size"]["predicted"]["nonminimal_excuse"] == 2
+    [d] = doc["demonstrations"]
+    assert (d["demonstrated_actions"], d["useful_actions"]) == (2, 1)  # the robot can already open drawers

@@ -42,11 +42,13 @@ def test_merge_keeps_duplicates_once_and_renames_clashes():
     assert "also from" in take.origin and "take_item" in take.origin
 
 
-def test_merge_keeps_the_more_specific_type_hierarchy():
-    result = merge_domains([load("learned.pddl"), load("prior.pddl")])
-    assert result.domain.types["drawer"] == "furniture"
+def test_merge_keeps_the_priors_type_hierarchy_and_refines_new_types():
+    result = merge_domains([load("prior.pddl"), load("learned.pddl")])
+    assert result.domain.types["drawer"] == "furniture"  # learned's "drawer - object" adds nothing
     assert result.domain.types["surface"] == "furniture"
-    assert any("type drawer: parent object refined to furniture" in n for n in result.refined)
+    result = merge_domains([load("prior.pddl"), load("cabinet-flat.pddl"), load("cabinet-specific.pddl")])
+    assert result.domain.types["cabinet"] == "furniture"
+    assert result.refined == [f"type cabinet: parent object refined to furniture (from {MERGE / 'cabinet-specific.pddl'})"]
 
 
 def test_merged_domain_solves_what_neither_part_solves():
@@ -60,13 +62,22 @@ def test_merged_domain_solves_what_neither_part_solves():
 
 @pytest.mark.parametrize("name,message", [
     ("bad-arity.pddl", "bad-arity.pddl:4:17: mismatch: predicate open has 1 argument(s) in one domain and 2 in"),
-    ("bad-types.pddl", "bad-types.pddl:4:11: mismatch: type drawer is declared under furniture and under container"),
+    ("bad-types.pddl", "bad-types.pddl:4:11: mismatch: type drawer is declared under furniture by the prior and "
+                       "under container in"),
+    ("moves-prior-type.pddl", "moves-prior-type.pddl:5:50: mismatch: type drawer is declared under furniture by the "
+                              "prior and under surface in"),
 ])
 def test_incompatible_domains_are_refused_with_a_position(name, message):
     with pytest.raises(MergeError) as err:
         merge_domains([load("prior.pddl"), load(name)])
     assert message in str(err.value)
     assert err.value.exit_code == EXIT_MISMATCH
+
+
+def test_a_type_cycle_across_domains_is_refused():
+    with pytest.raises(MergeError) as err:
+        merge_domains([load("prior.pddl"), load("cycle-a.pddl"), load("cycle-b.pddl")])
+    assert "cycle-b.pddl:3:22: mismatch: type y would be its own ancestor via x" in str(err.value)
 
 
 def test_cli_merge_matches_golden_and_reports_on_stderr(runner, app, monkeypatch):
@@ -140,3 +151,29 @@ def test_positive_compilation_keeps_plans(tmp_path):
 def test_positive_compilation_options(runner, app, extra, message):
     result = runner.invoke(app, ["merge", str(MERGE / "prior.pddl"), str(MERGE / "learned.pddl"), *extra])
     assert result.exit_code == 37 and message in result.stderr
+
+
+def test_positive_compilation_refuses_actions_whose_add_may_undo_their_delete(runner, app, tmp_path):
+    result = runner.invoke(app, ["merge", str(MERGE / "codesignation.pddl"), str(MERGE / "prior.pddl"),
+                                 "--positive-for", str(MERGE / "codesignation-problem.pddl"),
+                                 "--problem-output", str(tmp_path / "p.pddl"), "-o", str(tmp_path / "d.pddl")])
+    assert result.exit_code == 33
+    assert "codesignation.pddl:6:3: unsupported: action mv deletes (p ?x) and adds (p ?y)" in result.stderr
+    assert not (tmp_path / "d.pddl").exists() and not (tmp_path / "p.pddl").exists()
+
+
+def test_positive_compilation_reads_the_problem_against_the_merged_domain(runner, app, tmp_path):
+    problem = tmp_path / "problem.pddl"
+    problem.write_text((MERGE / "problem.pddl").read_text().replace("(hand_free))", "(hand_free) (graspable plate))"))
+    result = runner.invoke(app, ["merge", str(MERGE / "prior.pddl"), str(MERGE / "learned.pddl"), "--name", "merged",
+                                 "--positive-for", str(problem), "--problem-output", str(tmp_path / "p.pddl"),
+                                 "-o", str(tmp_path / "d.pddl"), "-q"])
+    assert result.exit_code == 0, result.stderr
+    text = (tmp_path / "p.pddl").read_text()
+    assert "(:domain merged)" in text and "(graspable plate)" in text
+
+
+@pytest.mark.parametrize("name", ["bad name", "", "9lives"])
+def test_merge_refuses_a_name_that_is_not_pddl(runner, app, name):
+    result = runner.invoke(app, ["merge", str(MERGE / "prior.pddl"), str(MERGE / "learned.pddl"), "--name", name])
+    assert result.exit_code == 37 and "expected a PDDL name" in result.stderr

@@ -29,7 +29,7 @@ from dataclasses import dataclass, replace
 from guided_lfd.demonstration.mutex import drop_implied_negative_preconditions, proven_invariants
 from guided_lfd.demonstration.trace import HAND_PREDICATES
 from guided_lfd.errors import Location, TraceError
-from guided_lfd.pddl.model import ActionSchema, Atom, Domain, Literal, Predicate
+from guided_lfd.pddl.model import ActionSchema, Atom, Domain, Literal, Predicate, common_supertype
 
 #: Activities that are never planning actions.
 SKIPPED = ("Idle",)
@@ -177,18 +177,6 @@ def _aligned(base: ActionSchema, other: ActionSchema) -> dict[str, str] | None:
     return best
 
 
-def _common_type(a: str, b: str, parents: dict[str, str | None]) -> str:
-    """The closest common supertype (``object`` without a hierarchy)."""
-    def chain(t: str) -> list[str]:
-        out = [t]
-        while parents.get(out[-1]) is not None and out[-1] != "object":
-            out.append(parents[out[-1]])  # type: ignore[arg-type]
-        return out + ["object"]
-
-    up = chain(b)
-    return next((t for t in chain(a) if t in up), "object")
-
-
 def generalise(actions: list[ActionSchema], parents: dict[str, str | None] | None = None) -> list[ActionSchema]:
     """One schema per skill (name and arity): repeats are aligned and intersected.
 
@@ -213,7 +201,7 @@ def generalise(actions: list[ActionSchema], parents: dict[str, str | None] | Non
             mapping = _aligned(first, other) or {}
             for var, typ in other.params:
                 target = mapping.get(var, var)
-                types[target] = _common_type(types[target], typ, parents)
+                types[target] = common_supertype(parents, types[target], typ)
             pre &= {l.substitute(mapping) for l in other.precondition}
             add &= {a.substitute(mapping) for a in other.add}
             dele &= {a.substitute(mapping) for a in other.delete}

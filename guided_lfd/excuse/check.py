@@ -7,9 +7,12 @@ mistakes.  Every excuse guided-lfd prints has passed this check.
 
 from __future__ import annotations
 
+import json
 from dataclasses import dataclass
 
+from guided_lfd.errors import InputFileError, Location
 from guided_lfd.pddl.model import Atom, Domain, Literal, Problem
+from guided_lfd.pddl.source import read_text
 from guided_lfd.validate import PlanStep, validate_plan
 
 
@@ -31,11 +34,6 @@ def read_excuse(path: str, domain: Domain, problem: Problem) -> list[Change]:
     objects (or the domain's constants); anything else is an
     :class:`~guided_lfd.errors.InputFileError` naming the file.
     """
-    import json
-
-    from guided_lfd.errors import InputFileError, Location
-    from guided_lfd.pddl.source import read_text
-
     text = read_text(path)
     try:
         doc = json.loads(text)
@@ -46,22 +44,44 @@ def read_excuse(path: str, domain: Domain, problem: Problem) -> list[Change]:
     if not isinstance(excuse, dict) or not isinstance(excuse.get("changes"), list):
         raise InputFileError("expected a guided-lfd/excuse document with an excuse "
                              "(from `guided-lfd excuse --json`)", Location(path, 1))
+    if not excuse["changes"]:
+        raise InputFileError("the excuse has no changes (expected at least one)", _position(text, path, '"changes"'))
+    objects = {**domain.constants, **problem.objects}
+    subtypes = domain.subtypes()
     changes = []
     for item in excuse["changes"]:
-        words = str(item.get("atom", "") if isinstance(item, dict) else "").strip().strip("()").lower().split()
+        atom_text = str(item.get("atom", "")) if isinstance(item, dict) else ""
+        where = _position(text, path, atom_text or str(item))
+        words = atom_text.strip().strip("()").lower().split()
         op = item.get("op") if isinstance(item, dict) else None
         if not words or op not in ("add", "delete"):
             raise InputFileError(f"excuse change {item!r}: expected {{\"op\": \"add\"|\"delete\", "
-                                 f"\"atom\": \"(pred obj ...)\"}}", Location(path, 1))
-        if words[0] not in domain.predicates:
-            raise InputFileError(f"excuse change {item.get('change', item)!s}: unknown predicate {words[0]} "
-                                 f"(expected a predicate of {domain.path})", Location(path, 1))
-        unknown = [o for o in words[1:] if o not in problem.objects and o not in domain.constants]
-        if unknown:
-            raise InputFileError(f"excuse change {item.get('change', item)!s}: unknown object {unknown[0]} "
-                                 f"(expected an object of {problem.path})", Location(path, 1))
+                                 f"\"atom\": \"(pred obj ...)\"}}", where)
+        pred = domain.predicates.get(words[0])
+        if pred is None:
+            raise InputFileError(f"excuse change {atom_text}: unknown predicate {words[0]} "
+                                 f"(expected a predicate of {domain.path})", where)
+        if len(words) - 1 != pred.arity:
+            raise InputFileError(f"excuse change {atom_text}: {words[0]} takes {pred.arity} argument(s), "
+                                 f"got {len(words) - 1}", where)
+        for obj, (_, ptype) in zip(words[1:], pred.params):
+            if obj not in objects:
+                raise InputFileError(f"excuse change {atom_text}: unknown object {obj} "
+                                     f"(expected an object of {problem.path})", where)
+            if objects[obj] not in subtypes.get(ptype, {ptype}):
+                raise InputFileError(f"excuse change {atom_text}: {obj} is a {objects[obj]}, {words[0]} expects "
+                                     f"a {ptype}", where)
         changes.append(Change(Atom(words[0], tuple(words[1:])), op == "add"))
     return changes
+
+
+def _position(text: str, path: str, needle: str) -> Location:
+    """Where ``needle`` first appears in ``text`` (line 1 if it does not)."""
+    at = text.find(needle) if needle else -1
+    if at < 0:
+        return Location(path, 1)
+    line = text.count("\n", 0, at) + 1
+    return Location(path, line, at - (text.rfind("\n", 0, at) + 1) + 1)
 
 
 def excuse_state(init: frozenset[Atom], changes: list[Change]) -> frozenset[Atom]:

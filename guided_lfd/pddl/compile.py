@@ -10,9 +10,11 @@ type-correct atom ``p`` it does not contain.  Plans are unchanged.
 
 from __future__ import annotations
 
+import itertools
 from dataclasses import replace
+from typing import Callable
 
-from guided_lfd.errors import UnsupportedFeatureError
+from guided_lfd.errors import Location, UnsupportedFeatureError
 from guided_lfd.pddl.model import EQUALITY, ActionSchema, Atom, Domain, Literal, Predicate, Problem, objects_by_type
 
 
@@ -32,16 +34,56 @@ def negated_predicates(domain: Domain, problem: Problem | None = None) -> list[s
     return sorted(used - {EQUALITY})
 
 
-def compile_negative_preconditions(domain: Domain, problem: Problem) -> tuple[Domain, Problem]:
-    """An equivalent domain and problem without negative preconditions or goals."""
-    if any(l.atom.predicate == EQUALITY for a in domain.actions for l in a.precondition):
-        raise UnsupportedFeatureError("equality preconditions cannot be compiled for STRIPS-only planners",
-                                      domain.locate("=", ":action"))
+def _may_corefer(a: Atom, b: Atom, params: dict[str, str], constants: dict[str, str],
+                 subtypes: dict[str, set[str]]) -> bool:
+    """Whether some binding of the action's parameters makes ``a`` and ``b`` the same ground atom."""
+    if a.predicate != b.predicate or len(a.args) != len(b.args):
+        return False
+    for x, y in zip(a.args, b.args):
+        if x == y:
+            continue
+        tx, ty = params.get(x, constants.get(x, "object")), params.get(y, constants.get(y, "object"))
+        if x not in params and y not in params:
+            return False  # two different constants
+        if tx not in subtypes.get(ty, {ty}) and ty not in subtypes.get(tx, {tx}):
+            return False  # no object has both types
+    return True
+
+
+def compile_negative_preconditions(domain: Domain, problem: Problem,
+                                   locate: Callable[[str], Location] | None = None) -> tuple[Domain, Problem]:
+    """An equivalent domain and problem without negative preconditions or goals.
+
+    ``locate`` maps an action name to where it is written, for errors.  An
+    action that deletes one atom of a complemented predicate and adds another
+    that may be the same atom (``(not (p ?x)) (p ?y)`` with ``?x = ?y``) is
+    refused: PDDL lets the add win, which complement atoms cannot express
+    without conditional effects.
+    """
+    def where(name: str) -> Location:
+        return locate(name) if locate is not None else Location(domain.path)
+
+    for act in domain.actions:
+        if any(l.atom.predicate == EQUALITY for l in act.precondition):
+            raise UnsupportedFeatureError(
+                f"action {act.name} has an equality precondition, which STRIPS-only planners lack", where(act.name))
     taken = set(domain.predicates)
     complement: dict[str, str] = {}
     for pred in negated_predicates(domain, problem):
         complement[pred] = _complement_name(pred, taken)
         taken.add(complement[pred])
+    subtypes = domain.subtypes()
+    for act in domain.actions:
+        params = dict(act.params)
+        for d in act.delete:
+            if d.predicate not in complement or d in act.add:
+                continue
+            clash = next((a for a in act.add if _may_corefer(d, a, params, domain.constants, subtypes)), None)
+            if clash is not None:
+                raise UnsupportedFeatureError(
+                    f"action {act.name} deletes {d} and adds {clash}, which may be the same atom; complement "
+                    f"predicates cannot express that the add wins (expected actions whose deleted and added "
+                    f"{d.predicate} atoms differ)", where(act.name))
 
     def flip(atom: Atom) -> Atom:
         return Atom(complement[atom.predicate], atom.args)
@@ -73,7 +115,5 @@ def compile_negative_preconditions(domain: Domain, problem: Problem) -> tuple[Do
 
 
 def _ground_atoms(pred: Predicate, by_type: dict[str, list[str]]) -> list[Atom]:
-    import itertools
-
     pools = [by_type.get(t, []) for _, t in pred.params]
     return [Atom(pred.name, tuple(args)) for args in itertools.product(*pools)]

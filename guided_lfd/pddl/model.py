@@ -160,6 +160,25 @@ class Problem:
     spellings: dict[str, str] = field(default_factory=dict)
 
 
+def type_ancestors(types: dict[str, str | None], t: str) -> list[str]:
+    """``t``, its parent, grandparent, ... ending with ``object`` (cycles cut)."""
+    out = [t]
+    while True:
+        parent = types.get(out[-1])
+        if parent is None or parent in out:
+            break
+        out.append(parent)
+    if out[-1] != "object":
+        out.append("object")
+    return out
+
+
+def common_supertype(types: dict[str, str | None], a: str, b: str) -> str:
+    """The closest type both ``a`` and ``b`` belong to (``object`` at worst)."""
+    up = type_ancestors(types, b)
+    return next((t for t in type_ancestors(types, a) if t in up), "object")
+
+
 def objects_by_type(domain: Domain, problem: Problem) -> dict[str, list[str]]:
     """All objects (constants included) of each type, subtypes included, sorted."""
     every = {**domain.constants, **problem.objects}

@@ -448,3 +448,24 @@ def _problem_from_tarski(reader, src: SourceMap, path: str, domain_constants: di
         path=path,
         spellings=src.spellings(),
     )
+
+
+def parse_problem_for(domain: Domain, problem_path: str | Path) -> Problem:
+    """Parse a problem against an in-memory domain (e.g. a merged one)."""
+    from dataclasses import replace
+
+    from guided_lfd.pddl.writer import domain_to_pddl
+
+    # Written under the name the problem expects: only the content must match.
+    declared = SourceMap(str(problem_path), read_text(problem_path)).section(":domain")
+    if declared is not None and len(declared.items) > 1 and isinstance(declared.items[1], Token):
+        domain = replace(domain, name=declared.items[1].lower)
+    with _temp_pddl(domain_to_pddl(domain)) as tmp:
+        try:
+            _, problem = parse_task(tmp, problem_path)
+        except GuidedLfdError as exc:
+            if exc.location is not None and exc.location.path == tmp:
+                raise type(exc)(f"{exc.message} (in the domain {domain.path})", Location(domain.path)) from None
+            raise
+    return problem
+

@@ -1,0 +1,5 @@
+(define (problem one)
+  (:domain kitchen)
+  (:objects a - item)
+  (:init (p a))
+  (:goal (done)))
