@@ -214,8 +214,9 @@ def generalise(actions: list[ActionSchema], parents: dict[str, str | None] | Non
 def learn_domain(documents: list[tuple[str, dict]], prior: Domain | None = None, name: str = "learned") -> Domain:
     """A domain of the skills demonstrated in ``documents`` (source, segments document).
 
-    With ``prior``, its types and predicate declarations are used and its
-    actions are kept (a minimal merge; ``guided-lfd merge`` does the full one).
+    With ``prior``, its type hierarchy generalises repeats and the result is
+    the prior merged with the learned skills by :func:`guided_lfd.merge.merge_domains`
+    (skills the prior already has are kept once, name clashes renamed).
     """
     types: dict[str, str] = {}
     lifted: list[ActionSchema] = []
@@ -235,22 +236,31 @@ def learn_domain(documents: list[tuple[str, dict]], prior: Domain | None = None,
                 merged = tuple((v, t if t == ptypes.get(a, "object") else "object")
                                for (v, t), a in zip(old.params, atom.args))
                 predicates[atom.predicate] = Predicate(atom.predicate, merged)
-    if prior is not None:
-        known = {a.name for a in prior.actions}
-        learned = [a if a.name not in known else replace(a, name=f"{a.name}_demo") for a in learned]
-        reqs = tuple(dict.fromkeys([*prior.requirements, ":negative-preconditions"]))
-        domain = replace(prior, requirements=reqs, predicates={**predicates, **prior.predicates},
-                         actions=[*prior.actions, *learned], path="<learned>")
-    else:
-        type_decl: dict[str, str | None] = {"object": None}
-        for t in sorted(set(types.values())):
-            type_decl[t] = "object"
+    type_decl: dict[str, str | None] = {"object": None}
+    for t in sorted(set(types.values())):
+        type_decl[t] = "object"
+    if prior is None:
         domain = Domain(name=name, requirements=(":strips", ":typing", ":negative-preconditions"), types=type_decl,
                         constants={}, predicates=predicates, actions=learned, path="<learned>")
+        invariants = proven_invariants(domain, types, observed_states(documents))
+        return drop_implied_negative_preconditions(domain, {a.name for a in learned}, invariants)
     # Mutexes are proven on the whole domain (the prior's actions too): a
     # prior action that broke one would make the dropped precondition matter.
-    invariants = proven_invariants(domain, types, observed_states(documents))
-    return drop_implied_negative_preconditions(domain, {a.name for a in learned}, invariants)
+    # Learned actions get provisional unique names for the proof only.
+    from guided_lfd.merge import merge_domains
+
+    provisional = {f"{a.name}__learned": a.name for a in learned}
+    reqs = tuple(dict.fromkeys([*prior.requirements, ":negative-preconditions"]))
+    combined = replace(prior, requirements=reqs, predicates={**predicates, **prior.predicates},
+                       actions=[*prior.actions, *(replace(a, name=f"{a.name}__learned") for a in learned)],
+                       path="<learned>")
+    invariants = proven_invariants(combined, types, observed_states(documents))
+    simplified = drop_implied_negative_preconditions(combined, set(provisional), invariants)
+    learned = [replace(a, name=provisional[a.name]) for a in simplified.actions if a.name in provisional]
+    alone = Domain(name=name, requirements=reqs, types=type_decl, constants={}, predicates=predicates,
+                   actions=learned, path="<learned>")
+    # The same rules as `guided-lfd merge`: equal skills once, clashes renamed.
+    return replace(merge_domains([prior, alone], name=prior.name).domain, path="<learned>")
 
 
 def observed_states(documents: list[tuple[str, dict]]) -> list[frozenset[Atom]]:
