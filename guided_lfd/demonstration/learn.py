@@ -122,7 +122,7 @@ def load_segments(path: str) -> dict:
 
     from guided_lfd.pddl.source import read_text
 
-    text = read_text(path)
+    text = read_text(path, "a guided-lfd/segments document (from `guided-lfd segment`)")
     try:
         doc = json.loads(text)
     except json.JSONDecodeError as exc:

@@ -34,7 +34,7 @@ def read_excuse(path: str, domain: Domain, problem: Problem) -> list[Change]:
     objects (or the domain's constants); anything else is an
     :class:`~guided_lfd.errors.InputFileError` naming the file.
     """
-    text = read_text(path)
+    text = read_text(path, "a guided-lfd/excuse document (from `guided-lfd excuse --json`)")
     try:
         doc = json.loads(text)
     except json.JSONDecodeError as exc:

@@ -25,8 +25,10 @@ MAX_INPUT_BYTES = 64 * 1024 * 1024
 MAX_DEPTH = 64
 
 
-def read_text(path: str | Path) -> str:
+def read_text(path: str | Path, expected: str = "PDDL") -> str:
     """Return the text of ``path`` (``-`` reads stdin), tolerating a BOM.
+
+    ``expected`` names what the file should hold, for error messages.
 
     Raises :class:`InputFileError` for missing, unreadable, binary or empty
     files, so that no caller ever sees an ``OSError``.
@@ -50,7 +52,7 @@ def read_text(path: str | Path) -> str:
     except OSError as exc:
         raise InputFileError(f"cannot read file ({exc.strerror})", Location(name)) from None
     if len(data) > MAX_INPUT_BYTES:
-        raise InputFileError(f"larger than {MAX_INPUT_BYTES // (1024 * 1024)} MiB, expected a PDDL file", Location(name))
+        raise InputFileError(f"larger than {MAX_INPUT_BYTES // (1024 * 1024)} MiB, expected {expected}", Location(name))
     if b"\x00" in data:
         raise InputFileError("binary file, expected text", Location(name))
     try:
@@ -59,7 +61,7 @@ def read_text(path: str | Path) -> str:
         line = data[: exc.start].count(b"\n") + 1
         raise InputFileError("not UTF-8 text", Location(name, line)) from None
     if not text.strip():
-        raise InputFileError("empty file, expected PDDL", Location(name))
+        raise InputFileError(f"empty file, expected {expected}", Location(name))
     return text
 
 
