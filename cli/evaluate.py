@@ -64,8 +64,11 @@ def evaluate(
     else:
         report = find_excuses(robot_domain, task)
         if report.excuse is None:
+            why = {"already-solvable": "the robot can already solve the task, so no excuse is needed",
+                   "no-excuse": "no excuse exists (a new skill must be demonstrated)",
+                   "timeout": "the excuse search ran out of time"}.get(report.status, report.status)
             codes = {"no-excuse": EXIT_NO_EXCUSE, "timeout": EXIT_TIME_LIMIT}
-            ui.error(f"{problem}: nothing to evaluate: {report.status} (see `guided-lfd excuse`)")
+            ui.error(f"{problem}: nothing to evaluate: {why} (see `guided-lfd excuse`; or give --excuse)")
             raise typer.Exit(codes.get(report.status, EXIT_BAD_OPTION))
         changes, source = report.excuse.changes, "computed (guided-lfd excuse defaults)"
     other = read_excuse(nonminimal, robot_domain, task) if nonminimal else None

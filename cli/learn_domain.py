@@ -9,6 +9,8 @@ import typer
 from cli.common import OutputOption, QuietOption, check_inputs, command, ui
 from guided_lfd.demonstration.learn import learn_domain as learn
 from guided_lfd.demonstration.learn import load_segments
+from guided_lfd.demonstration.trace import pddl_name_problem
+from guided_lfd.errors import OptionError
 from guided_lfd.io import check_writable, write_text
 from guided_lfd.pddl.reader import parse_domain
 from guided_lfd.pddl.writer import domain_to_pddl
@@ -25,11 +27,17 @@ def learn_domain(
     quiet: QuietOption = False,
 ) -> None:
     """Turn demonstrated hand activities into lifted PDDL actions (nodes of interest, generalised)."""
+    why = pddl_name_problem(name.lower())
+    if why:
+        raise OptionError(f"--name {name!r}: expected {why}")
     check_inputs(*segments, *([prior] if prior else []))
     check_writable(output)
     documents = [(path, load_segments(path)) for path in segments]
-    domain = learn(documents, parse_domain(prior) if prior else None, name=name.lower())
+    prior_domain = parse_domain(prior) if prior else None
+    domain = learn(documents, prior_domain, name=name.lower())
     header = "Learned by guided-lfd learn-domain from: " + ", ".join(segments)
     write_text(output, domain_to_pddl(domain, header=header))
-    learned = [a for a in domain.actions if a.origin and a.origin.startswith("learned")]
+    # With --prior the result keeps the prior's actions under their names; the rest were demonstrated.
+    known = {a.name for a in prior_domain.actions} if prior_domain is not None else set()
+    learned = [a for a in domain.actions if a.name not in known]
     ui.info(f"[dim]{len(learned)} demonstrated skill(s): {', '.join(a.name for a in learned)}[/]")

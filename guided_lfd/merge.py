@@ -89,6 +89,28 @@ def _merge_types(merged: dict[str, str | None], declared_by_prior: set[str], dom
         result.refined.append(f"type {t}: parent {old} refined to {parent} (from {domain.path})")
 
 
+def _check_namespace(domains: list[Domain]) -> None:
+    """A name cannot be both a type and a predicate (PDDL parsers reject the result).
+
+    The domain that introduces the second use of the name is blamed.
+    """
+    first_type: dict[str, int] = {}
+    first_pred: dict[str, int] = {}
+    for k, domain in enumerate(domains):
+        for t in domain.types:
+            first_type.setdefault(t, k)
+        for p in domain.predicates:
+            first_pred.setdefault(p, k)
+    for name in sorted(set(first_type) & set(first_pred)):
+        kt, kp = first_type[name], first_pred[name]
+        if kt >= kp:
+            domain, what, other, section = domains[kt], "type", "predicate", ":types"
+        else:
+            domain, what, other, section = domains[kp], "predicate", "type", ":predicates"
+        raise MergeError(f"{name} is a {what} in {domain.path} and a {other} in {domains[min(kt, kp)].path}; "
+                         "expected distinct names", domain.locate(name, section))
+
+
 def _merge_predicates(merged: dict[str, Predicate], types: dict[str, str | None], domain: Domain,
                       result: MergeResult) -> None:
     for name, pred in domain.predicates.items():
@@ -170,6 +192,7 @@ def merge_domains(domains: list[Domain], name: str | None = None) -> MergeResult
         _merge_types(types, prior_types, domain, result)
         for spelled_lower, spelled in domain.spellings.items():
             spellings.setdefault(spelled_lower, spelled)
+    _check_namespace(domains)
     for domain in domains:
         for const, t in domain.constants.items():
             if const not in constants:

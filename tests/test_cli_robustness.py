@@ -4,11 +4,12 @@ stderr with a documented exit code, and outputs are never damaged."""
 from __future__ import annotations
 
 import os
+import re
 import stat
 
 import pytest
 
-from conftest import BLOCKS, kitchen
+from conftest import BLOCKS, DATA, ROOT, kitchen
 from guided_lfd.io import write_text
 
 DOMAIN, PROBLEM = kitchen(1)
@@ -163,3 +164,154 @@ def test_type_cycle_is_named(runner, app, tmp_path):
     result = runner.invoke(app, ["plan", str(domain), PROBLEM])
     assert result.exit_code == 32
     assert "type hierarchy has a cycle" in one_line(result)
+
+
+# --- segment / learn-domain / evaluate on hand-made demonstrations -------------------------------------------
+
+DEMO = DATA / "demo" / "open-drawer.csv"
+
+
+def _segments(runner, app) -> dict:
+    import json
+
+    result = runner.invoke(app, ["segment", str(DEMO)])
+    assert result.exit_code == 0, result.stderr
+    return json.loads(result.stdout)
+
+
+def test_segment_from_stdin_needs_state(runner, app):
+    result = runner.invoke(app, ["segment", "-"], input=DEMO.read_text())
+    assert result.exit_code == 37
+    assert "expected --state FILE" in one_line(result)
+
+
+def _broken(doc: dict, how: str) -> dict:
+    seg = next(s for s in doc["segments"] if s["added"])
+    if how == "segments-null":
+        doc["segments"] = None
+    elif how == "segment-int":
+        doc["segments"].append(5)
+    elif how == "missing-activity":
+        del seg["activity"]
+    elif how == "before-null":
+        seg["before"] = None
+    elif how == "nested-atom":
+        seg["after"].append("(open (f x))")
+    elif how == "no-parens":
+        seg["after"].append("open pinkdrawer")
+    elif how == "keyword-predicate":
+        seg["after"].append("(and pinkdrawer)")
+    elif how == "arity":
+        seg["after"].append("(open pinkdrawer table)")
+    elif how == "activity":
+        seg["activity"] = "Open Drawer!"
+    elif how == "type":
+        doc["objects"]["pinkdrawer"] = "pink drawer"
+    elif how == "type-null":
+        doc["objects"]["pinkdrawer"] = None
+    elif how == "object-int":
+        seg["object"] = 7
+    return doc
+
+
+@pytest.mark.parametrize("how,message", [
+    ("segments-null", "segments: expected a list of segments, got null"),
+    ("segment-int", "segments[2]: expected a segment"),
+    ("missing-activity", "segments[1]: missing key 'activity'"),
+    ("before-null", "segments[1].before: expected a list of fluents"),
+    ("nested-atom", 'segments[1].after[5]: expected a fluent like "(open pinkdrawer)", got "(open (f x))"'),
+    ("no-parens", "segments[1].after[5]: expected a fluent like"),
+    ("keyword-predicate", 'segments[1].after[5]: predicate "and": expected a name that is not a PDDL keyword'),
+    ("arity", "segments[1].after[5]: open has 2 argument(s) here and 1 elsewhere"),
+    ("activity", "segments[1].activity: expected an activity name"),
+    ("type", "objects.pinkdrawer: type of pinkdrawer: expected a PDDL name"),
+    ("type-null", "objects.pinkdrawer: type of pinkdrawer: expected a string, got null"),
+    ("object-int", 'segments[1].object: expected an object name or "", got 7'),
+])
+def test_hand_edited_segments_are_trace_errors_with_a_position(runner, app, tmp_path, how, message):
+    import json
+
+    bad = tmp_path / "s.json"
+    bad.write_text(json.dumps(_broken(_segments(runner, app), how), indent=2))
+    out = tmp_path / "keep.pddl"
+    out.write_text("precious")
+    result = runner.invoke(app, ["learn-domain", str(bad), "-o", str(out)])
+    assert result.exit_code == 36, result.stderr
+    line = one_line(result)
+    assert re.match(r".*s\.json:\d+:\d+: trace error: ", line) and message in line, line
+    assert out.read_text() == "precious"
+    robot, problem = kitchen(1)
+    result = runner.invoke(app, ["evaluate", robot, problem, "--human", kitchen(1, "human")[0], "-d", str(bad)])
+    assert result.exit_code == 36 and message in one_line(result)
+
+
+def test_deeply_nested_segments_are_a_trace_error(runner, app, tmp_path):
+    bad = tmp_path / "s.json"
+    bad.write_text("[" * 100000 + "]" * 100000)
+    result = runner.invoke(app, ["learn-domain", str(bad)])
+    assert result.exit_code == 36
+    assert "nested too deeply" in one_line(result)
+
+
+@pytest.mark.parametrize("name", ["x y", "lérnt", "a)", "", "and"])
+def test_learn_domain_name_must_be_a_pddl_name(runner, app, tmp_path, name):
+    import json
+
+    segments = tmp_path / "s.json"
+    segments.write_text(json.dumps(_segments(runner, app)))
+    result = runner.invoke(app, ["learn-domain", str(segments), "--name", name])
+    assert result.exit_code == 37
+    assert "--name" in one_line(result)
+
+
+def test_learn_domain_with_prior_counts_its_skills_and_refuses_clashes(runner, app, tmp_path):
+    import json
+
+    doc = _segments(runner, app)
+    good = tmp_path / "s.json"
+    good.write_text(json.dumps(doc))
+    result = runner.invoke(app, ["learn-domain", str(good), "--prior", DOMAIN])
+    assert result.exit_code == 0
+    assert "1 demonstrated skill(s): open_drawer" in result.stderr
+    # The demonstration's type 'inside' is the prior's predicate: no parsable domain has both.
+    doc["objects"]["pinkdrawer"] = "inside"
+    clash = tmp_path / "clash.json"
+    clash.write_text(json.dumps(doc))
+    result = runner.invoke(app, ["learn-domain", str(clash), "--prior", DOMAIN])
+    assert result.exit_code == 34
+    assert "clash.json: mismatch: 'inside' is a type in one and a predicate in the other" in one_line(result)
+    # open/2 in the demonstration, open/1 in the prior: named by the segments file, not '<learned>'.
+    arity = tmp_path / "arity.json"
+    arity.write_text(json.dumps(_segments(runner, app)).replace("(open pinkdrawer)", "(open pinkdrawer table)"))
+    result = runner.invoke(app, ["learn-domain", str(arity), "--prior", DOMAIN])
+    assert result.exit_code == 34
+    assert one_line(result).startswith(f"{arity}: mismatch: predicate open has")
+
+
+def test_opposite_changes_under_one_name_are_two_skills(runner, app, tmp_path):
+    import json
+
+    # A fluent other than `open` flips one way, then back: both manipulations
+    # are named Push.  Intersecting them would leave an action with no effect.
+    doc = _segments(runner, app)
+    pushed = next(s for s in doc["segments"] if s["added"])
+    pushed["activity"] = "Push"
+    doc["segments"].append(dict(pushed, index=99, before=pushed["after"], after=pushed["before"]))
+    path = tmp_path / "s.json"
+    path.write_text(json.dumps(doc).replace("(open ", "(at "))
+    result = runner.invoke(app, ["learn-domain", str(path)])
+    assert result.exit_code == 0, result.stderr
+    assert "(:effect ())" not in result.stdout
+    assert "(:action push_drawer\n" in result.stdout and "(:action push_drawer_2\n" in result.stdout
+
+
+def test_segment_refuses_to_write_over_its_own_input(runner, app, tmp_path):
+    import shutil
+
+    demo = ROOT / "data" / "demos" / "kitchen-1" / "P1-excuse"
+    for suffix in (".csv", ".state.csv"):
+        shutil.copy(f"{demo}{suffix}", tmp_path / f"t{suffix}")
+    before = (tmp_path / "t.state.csv").read_bytes()
+    result = runner.invoke(app, ["segment", str(tmp_path / "t.csv"), "-o", str(tmp_path / "t.state.csv")])
+    assert result.exit_code == 37 and "is an input of this run" in result.stderr
+    assert (tmp_path / "t.state.csv").read_bytes() == before

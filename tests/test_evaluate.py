@@ -185,3 +185,12 @@ def test_cli_evaluate_with_a_demonstration_and_a_nonminimal_excuse(runner, app, 
     assert doc["demonstration_size"]["predicted"]["nonminimal_excuse"] == 2
     [d] = doc["demonstrations"]
     assert (d["demonstrated_actions"], d["useful_actions"]) == (2, 1)  # the robot can already open drawers
+
+
+def test_cli_evaluate_on_a_solvable_task_says_there_is_nothing_to_evaluate(runner, app):
+    base = DOMAINS / "kitchen-1"
+    result = runner.invoke(app, ["evaluate", str(base / "human.pddl"), str(base / "problem.pddl"),
+                                 "--human", str(base / "human.pddl")])
+    assert result.exit_code == 37
+    assert "nothing to evaluate: the robot can already solve the task" in result.stderr
+    assert result.stderr.count("\n") == 1

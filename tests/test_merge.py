@@ -64,6 +64,7 @@ def test_merged_domain_solves_what_neither_part_solves():
     ("bad-arity.pddl", "bad-arity.pddl:4:17: mismatch: predicate open has 1 argument(s) in one domain and 2 in"),
     ("bad-types.pddl", "bad-types.pddl:4:11: mismatch: type drawer is declared under furniture by the prior and "
                        "under container in"),
+    ("type-named-like-predicate.pddl", "type-named-like-predicate.pddl:3:11: mismatch: inside is a type in "),
     ("moves-prior-type.pddl", "moves-prior-type.pddl:5:50: mismatch: type drawer is declared under furniture by the "
                               "prior and under surface in"),
 ])

@@ -154,3 +154,84 @@ def test_debouncing_keeps_a_short_pause_between_two_activities():
     # ... and a few frames are jitter anywhere (into the longer neighbour).
     assert _debounced([("Open", 40), ("Idle", 4), ("Release", 30)]) == [("Open", 44), ("Release", 30)]
     assert _debounced([("Take", 2), ("Put", 40)]) == [("Put", 42)]
+
+
+# --- adversarial hunt on segment / learn-domain: regressions -------------------------------------------------
+
+_STATE_HEAD = STATE.read_text()
+
+
+@pytest.mark.parametrize(
+    "extra,message",
+    [
+        # a change no hand can have caused: after the last frame (2.0 s), or before the first
+        ("9.5,\"open(PinkDrawer)\",false\n", "t.state.csv:10:1: trace error: column 'time': a change at 9.5 s, outside the trace"),
+        ("1.2,\"open(PinkDrawer)\",false\n", "t.state.csv:10:3: trace error: column 'value': open(PinkDrawer) is set both true and false at 1.2 s"),
+        ("0,\"clear(Table)\",false\n", "t.state.csv:10:3: trace error: column 'value': clear(Table) is set both true and false at 0 s"),
+        ("0,\"object(TABLE,item)\",true\n", "t.state.csv:10:2: trace error: column 'fluent': object 'table' is declared as surface and as item"),
+        ("0,\"object(Cup,tässe)\",true\n", "t.state.csv:10:2: trace error: column 'fluent': type 'tässe' of cup: expected a PDDL name"),
+        ("0,\"object(Cup,either)\",true\n", "t.state.csv:10:2: trace error: column 'fluent': type 'either' of cup: expected a name that is not a PDDL keyword"),
+        ("0,\"object(Cup,clear)\",true\n", "t.state.csv:10:2: trace error: column 'fluent': type 'clear' is also a predicate"),
+        ("1.0,\"not(PinkDrawer)\",true\n", "t.state.csv:10:2: trace error: column 'fluent': predicate 'not': expected a name that is not a PDDL keyword"),
+        ("1.0,\"klär(Table)\",true\n", "t.state.csv:10:2: trace error: column 'fluent': predicate 'klär': expected a PDDL name"),
+        ("1.0,\"in_hand(RedPlate)\",true\n", "t.state.csv:10:2: trace error: column 'fluent': in_hand is the hand's state"),
+        ("1.0,\"open(PinkDrawer,Table)\",true\n", "t.state.csv:10:2: trace error: column 'fluent': open has 2 argument(s) here and 1 before"),
+    ],
+)
+def test_unusable_state_rows_name_file_row_and_column(tmp_path, extra, message):
+    path = _edit(tmp_path, state_text=_STATE_HEAD + extra)
+    with pytest.raises(TraceError) as info:
+        load_demonstration(path)
+    assert str(info.value).split("/")[-1].startswith(message), str(info.value)
+    assert info.value.exit_code == 36
+
+
+def test_change_before_the_first_frame_is_refused(tmp_path):
+    lines = TRACE.read_text().splitlines()
+    late = [lines[0]] + [line for line in lines[1:] if float(line.split(",")[0]) >= 1.5]
+    with pytest.raises(TraceError, match=r"t.state.csv:9:1: .*a change at 1.2 s, outside the trace \(1.5 s to 2 s\)"):
+        load_demonstration(_edit(tmp_path, trace_lines=late))
+
+
+def test_unterminated_quote_names_its_line_and_empty_files_expect_csv(tmp_path):
+    lines = TRACE.read_text().splitlines()
+    lines[5] += ',"oops'
+    with pytest.raises(TraceError, match=r"t.csv:6: trace error: malformed CSV"):
+        load_demonstration(_edit(tmp_path, trace_lines=lines))
+    (tmp_path / "t.csv").write_text("")
+    with pytest.raises(Exception, match="empty file, expected a hand trace CSV"):
+        load_demonstration(str(tmp_path / "t.csv"))
+
+
+def test_huge_coordinates_warn_nothing(tmp_path):
+    import warnings
+
+    lines = TRACE.read_text().splitlines()
+    cells = lines[5].split(",")
+    cells[2] = "1e308"  # squaring it overflows
+    lines[5] = ",".join(cells)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        demo = load_demonstration(_edit(tmp_path, trace_lines=lines))
+    assert demo.frames["hand_move"].iloc[4]  # an infinite speed: moving
+
+
+def test_a_hand_holding_something_when_the_trace_starts_did_not_pick_it_up(tmp_path):
+    from conftest import ROOT
+    from guided_lfd.demonstration.learn import ground_actions
+    from guided_lfd.demonstration.segment import segment, segments_document
+
+    # Kitchen I, P1's complete demonstration from 1.95 s: the right hand already
+    # holds the plate and puts it into the open drawer.
+    lines = (ROOT / "data/demos/kitchen-1/P1-complete.csv").read_text().splitlines()
+    rows = [lines[0]] + [line for line in lines[1:] if 1.95 <= float(line.split(",")[0]) <= 3.4]
+    state = ('time,fluent,value\n0,"object(RedPlate,item)",true\n0,"object(PinkDrawer,drawer)",true\n'
+             '0,"object(Table,surface)",true\n1.95,"open(PinkDrawer)",true\n1.95,"clear(PinkDrawer)",true\n'
+             '1.95,"graspable(RedPlate)",true\n2.401,"inside(RedPlate,PinkDrawer)",true\n')
+    demo = load_demonstration(_edit(tmp_path, trace_lines=rows, state_text=state))
+    put = next(s for s in segment(demo) if s.hand == "right")
+    assert put.activity == "Put" and put.held_before == "redplate"
+    (action,) = ground_actions(segments_document(demo, segment(demo), ""))
+    assert action.name == "put_item_drawer"
+    assert Atom("in_hand", ("redplate",)) in {lit.atom for lit in action.precondition if lit.positive}
+    assert Atom("in_hand", ("redplate",)) in action.delete and Atom("hand_free") in action.add

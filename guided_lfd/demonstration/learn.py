@@ -24,11 +24,12 @@ holds) is a demonstrated action:
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, replace
 
 from guided_lfd.demonstration.mutex import drop_implied_negative_preconditions, proven_invariants
-from guided_lfd.demonstration.trace import HAND_PREDICATES
-from guided_lfd.errors import Location, TraceError
+from guided_lfd.demonstration.trace import HAND_PREDICATES, pddl_name_problem
+from guided_lfd.errors import Location, MergeError, TraceError
 from guided_lfd.pddl.model import ActionSchema, Atom, Domain, Literal, Predicate, common_supertype
 
 #: Activities that are never planning actions.
@@ -128,9 +129,130 @@ def load_segments(path: str) -> dict:
     except json.JSONDecodeError as exc:
         raise TraceError(f"not JSON ({exc.msg}), expected a guided-lfd/segments document",
                          Location(path, exc.lineno, exc.colno)) from None
+    except RecursionError:
+        raise TraceError("JSON nested too deeply, expected a guided-lfd/segments document", Location(path)) from None
     if not isinstance(doc, dict) or doc.get("format") != "guided-lfd/segments":
         raise TraceError("expected a guided-lfd/segments document (from `guided-lfd segment`)", Location(path, 1))
+    problem = document_problem(doc)
+    if problem is not None:
+        keys, message = problem
+        where = _json_position(text, keys)
+        name = "".join(f"[{k}]" if isinstance(k, int) else f".{k}" for k in keys).lstrip(".")
+        raise TraceError(f"{name}: {message}", Location(path, *where) if where else Location(path))
     return doc
+
+
+#: A fluent as the segments document writes it: ``(pred arg ...)``.
+_ATOM_TEXT = re.compile(r"\(\s*(\S+?)((?:\s+[^\s()]+)*)\s*\)")
+#: An object name in a segment: no blanks or parentheses, not a variable.
+_OBJECT = re.compile(r"[^\s()?][^\s()]*")
+
+
+def document_problem(doc: dict) -> tuple[tuple, str] | None:
+    """The first thing that keeps ``doc`` from being a usable segments document: (JSON path, what was expected)."""
+    def show(value) -> str:
+        import json
+
+        text = json.dumps(value, ensure_ascii=False)
+        return text if len(text) <= 60 else text[:57] + "..."
+
+    arity: dict[str, int] = {}
+
+    def atoms(keys: tuple, value) -> tuple[tuple, str] | None:
+        if not isinstance(value, list):
+            return keys, f"expected a list of fluents like \"(open pinkdrawer)\", got {show(value)}"
+        for k, text in enumerate(value):
+            match = _ATOM_TEXT.fullmatch(text.strip()) if isinstance(text, str) else None
+            if match is None or any(a.startswith("?") for a in match.group(2).split()):
+                return keys + (k,), f"expected a fluent like \"(open pinkdrawer)\", got {show(text)}"
+            why = pddl_name_problem(match.group(1))
+            if why:
+                return keys + (k,), f"predicate {show(match.group(1))}: expected {why}"
+            n = len(match.group(2).split())
+            if arity.setdefault(match.group(1), n) != n:
+                return keys + (k,), (f"{match.group(1)} has {n} argument(s) here and {arity[match.group(1)]} "
+                                     "elsewhere; expected the same number")
+        return None
+
+    objects = doc.get("objects", {})
+    if not isinstance(objects, dict):
+        return ("objects",), f"expected an object mapping object names to types, got {show(objects)}"
+    for obj, kind in objects.items():
+        if not _OBJECT.fullmatch(obj):
+            return ("objects",), f"object name {show(obj)}: expected no blanks or parentheses"
+        why = "a string" if not isinstance(kind, str) else pddl_name_problem(kind) if kind != "object" else None
+        if why:
+            return ("objects", obj), f"type of {obj}: expected {why}, got {show(kind)}"
+    if "initial" in doc:
+        found = atoms(("initial",), doc["initial"])
+        if found:
+            return found
+    segments = doc.get("segments", [])
+    if not isinstance(segments, list):
+        return ("segments",), f"expected a list of segments, got {show(segments)}"
+    for i, seg in enumerate(segments):
+        here = ("segments", i)
+        if not isinstance(seg, dict):
+            return here, f"expected a segment (an object with index, hand, activity, before, after), got {show(seg)}"
+        for key in ("index", "hand", "activity", "before", "after"):
+            if key not in seg:
+                return here, f"missing key '{key}' (expected index, hand, activity, before, after)"
+        if not isinstance(seg["index"], int) or isinstance(seg["index"], bool):
+            return here + ("index",), f"expected a whole number, got {show(seg['index'])}"
+        if not isinstance(seg["hand"], str):
+            return here + ("hand",), f"expected left or right, got {show(seg['hand'])}"
+        activity = seg["activity"]
+        why = "a string" if not isinstance(activity, str) else pddl_name_problem(activity.lower())
+        if why:
+            return here + ("activity",), f"expected an activity name, {why}, got {show(activity)}"
+        for key in ("object", "target", "held_before", "held_after"):
+            value = seg.get(key)
+            if value is not None and not (isinstance(value, str) and (value == "" or _OBJECT.fullmatch(value))):
+                return here + (key,), f"expected an object name or \"\", got {show(value)}"
+        for key in ("before", "after"):
+            found = atoms(here + (key,), seg[key])
+            if found:
+                return found
+    clash = sorted(set(objects.values()) & (set(arity) | set(HAND_PREDICATES)))
+    if clash:
+        return ("objects",), f"type '{clash[0]}' is also a predicate; expected distinct names"
+    return None
+
+
+def _json_position(text: str, keys: tuple) -> tuple[int, int] | None:
+    """1-based line and column of the innermost object or list on ``keys`` in JSON ``text``."""
+    import json
+    import json.decoder
+    import json.scanner
+
+    where: dict[int, int] = {}
+    decoder = json.JSONDecoder()
+
+    def parse_object(s_and_end, *args):
+        value, end = json.decoder.JSONObject(s_and_end, *args)
+        where[id(value)] = s_and_end[1] - 1
+        return value, end
+
+    def parse_array(s_and_end, scan_once):
+        value, end = json.decoder.JSONArray(s_and_end, scan_once)
+        where[id(value)] = s_and_end[1] - 1
+        return value, end
+
+    decoder.parse_object, decoder.parse_array = parse_object, parse_array  # type: ignore[assignment]
+    try:
+        value, _ = json.scanner.py_make_scanner(decoder)(text, json.decoder.WHITESPACE.match(text, 0).end())
+    except (ValueError, StopIteration, RecursionError):
+        return None
+    offset = where.get(id(value))
+    for key in keys:
+        try:
+            value = value[key]
+        except (KeyError, IndexError, TypeError):
+            break
+        offset = where.get(id(value), offset)
+    if offset is None:
+        return None
+    return text.count("\n", 0, offset) + 1, offset - text.rfind("\n", 0, offset)
 
 
 def _atom(text: str, source: str) -> Atom:
@@ -183,7 +305,10 @@ def generalise(actions: list[ActionSchema], parents: dict[str, str | None] | Non
     Each repeat's parameters are renamed to agree best with the first
     demonstration (effects first, then preconditions); preconditions and
     effects are intersected; differing parameter types become their closest
-    common supertype (from ``parents``, else ``object``).
+    common supertype (from ``parents``, else ``object``).  A repeat that
+    shares no effect with the skill so far is another skill of the same name
+    (opposite changes both named Push): intersecting them would leave an
+    action that does nothing.
     """
     parents = parents or {}
     groups: dict[tuple, list[ActionSchema]] = {}
@@ -191,23 +316,34 @@ def generalise(actions: list[ActionSchema], parents: dict[str, str | None] | Non
         groups.setdefault((act.name, len(act.params)), []).append(act)
     out: list[ActionSchema] = []
     used: dict[str, int] = {}
-    for (name, _), acts in groups.items():
-        used[name] = used.get(name, 0) + 1
-        unique = name if used[name] == 1 else f"{name}_{used[name]}"  # same skill name, other arity
-        first = acts[0]
-        types = dict(first.params)
-        pre, add, dele = set(first.precondition), set(first.add), set(first.delete)
-        for other in acts[1:]:
-            mapping = _aligned(first, other) or {}
-            for var, typ in other.params:
-                target = mapping.get(var, var)
-                types[target] = common_supertype(parents, types[target], typ)
-            pre &= {l.substitute(mapping) for l in other.precondition}
-            add &= {a.substitute(mapping) for a in other.add}
-            dele &= {a.substitute(mapping) for a in other.delete}
-        origin = f"learned from {len(acts)} demonstration(s): " + "; ".join(a.origin or "" for a in acts[:3])
-        params = tuple((v, types[v]) for v, _ in first.params)
-        out.append(ActionSchema(unique, params, tuple(sorted(pre)), tuple(sorted(add)), tuple(sorted(dele)), origin))
+    for (name, _), group in groups.items():
+        # Each skill: [first, types, pre, add, delete, repeats].
+        skills: list[list] = []
+        for other in group:
+            for skill in skills:
+                first, types, pre, add, dele, acts = skill
+                mapping = _aligned(first, other) or {}
+                shared_add = add & {a.substitute(mapping) for a in other.add}
+                shared_del = dele & {a.substitute(mapping) for a in other.delete}
+                if not shared_add and not shared_del:
+                    continue
+                for var, typ in other.params:
+                    target = mapping.get(var, var)
+                    types[target] = common_supertype(parents, types[target], typ)
+                skill[2] = pre & {l.substitute(mapping) for l in other.precondition}
+                skill[3], skill[4] = shared_add, shared_del
+                acts.append(other)
+                break
+            else:
+                skills.append([other, dict(other.params), set(other.precondition), set(other.add), set(other.delete),
+                               [other]])
+        for first, types, pre, add, dele, acts in skills:
+            used[name] = used.get(name, 0) + 1
+            unique = name if used[name] == 1 else f"{name}_{used[name]}"  # same skill name, other arity or effects
+            origin = f"learned from {len(acts)} demonstration(s): " + "; ".join(a.origin or "" for a in acts[:3])
+            params = tuple((v, types[v]) for v, _ in first.params)
+            out.append(ActionSchema(unique, params, tuple(sorted(pre)), tuple(sorted(add)), tuple(sorted(dele)),
+                                    origin))
     return out
 
 
@@ -220,7 +356,14 @@ def learn_domain(documents: list[tuple[str, dict]], prior: Domain | None = None,
     """
     types: dict[str, str] = {}
     lifted: list[ActionSchema] = []
+    arity: dict[str, tuple[int, str]] = {}
     for source, doc in documents:
+        for fluents in [doc.get("initial", [])] + [s[k] for s in doc.get("segments", []) for k in ("before", "after")]:
+            for atom in (_atom(x, source) for x in fluents):
+                n, where = arity.setdefault(atom.predicate, (len(atom.args), source))
+                if n != len(atom.args):
+                    raise TraceError(f"{atom.predicate} has {len(atom.args)} argument(s) here and {n} in {where}; "
+                                     "expected the same number", Location(source))
         types.update(doc.get("objects", {}))
         lifted += [lift(a, doc.get("objects", {})) for a in ground_actions(doc, source)]
     learned = generalise(lifted, prior.types if prior is not None else None)
@@ -244,6 +387,11 @@ def learn_domain(documents: list[tuple[str, dict]], prior: Domain | None = None,
                         constants={}, predicates=predicates, actions=learned, path="<learned>")
         invariants = proven_invariants(domain, types, observed_states(documents))
         return drop_implied_negative_preconditions(domain, {a.name for a in learned}, invariants)
+    sources = ", ".join(dict.fromkeys(source for source, _ in documents))
+    clash = sorted((set(types.values()) - {"object"}) & set(prior.predicates) | set(predicates) & set(prior.types))
+    if clash:
+        raise MergeError(f"'{clash[0]}' is a type in one and a predicate in the other of the demonstrations and the "
+                         f"prior {prior.path}; expected distinct names", Location(sources))
     # Mutexes are proven on the whole domain (the prior's actions too): a
     # prior action that broke one would make the dropped precondition matter.
     # Learned actions get provisional unique names for the proof only.
@@ -260,7 +408,15 @@ def learn_domain(documents: list[tuple[str, dict]], prior: Domain | None = None,
     alone = Domain(name=name, requirements=reqs, types=type_decl, constants={}, predicates=predicates,
                    actions=learned, path="<learned>")
     # The same rules as `guided-lfd merge`: equal skills once, clashes renamed.
-    return replace(merge_domains([prior, alone], name=prior.name).domain, path="<learned>")
+    try:
+        merged = merge_domains([prior, alone], name=prior.name).domain
+    except MergeError as exc:
+        if exc.location is not None and exc.location.path != "<learned>":
+            raise
+        # Name the demonstrations, not the in-memory domain learned from them.
+        raise MergeError(exc.message.replace("<learned>", "the demonstrated skills")
+                         + f" (demonstrations that do not fit the prior {prior.path})", Location(sources)) from None
+    return replace(merged, path="<learned>")
 
 
 def observed_states(documents: list[tuple[str, dict]]) -> list[frozenset[Atom]]:

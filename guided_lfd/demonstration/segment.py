@@ -37,7 +37,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from guided_lfd.demonstration.trace import Demonstration
+from guided_lfd.demonstration.trace import EFFECT_DELAY_S, Demonstration
 from guided_lfd.pddl.model import Atom
 
 ACTIVITIES = ("Idle", "Reach", "Take", "Put", "Stack", "Release", "Open", "Close", "Push", "Manipulate")
@@ -49,8 +49,7 @@ JITTER_S = 0.06
 MIN_SEGMENT_S = 0.15
 #: Frame gaps up to this long (dropped frames) do not split a segment (s).
 MAX_GAP_S = 0.5
-#: Fluent changes this long after a segment still belong to it (s).
-EFFECT_DELAY_S = 0.1
+# EFFECT_DELAY_S (from trace): fluent changes this long after a segment still belong to it (s).
 #: Frames read at a segment boundary for what the hand holds or targets.
 BOUNDARY_FRAMES = 4
 
@@ -169,7 +168,8 @@ def _hand_segments(demo: Demonstration, labels: np.ndarray, hand: str) -> list[S
         obj, tgt = _roles(label, held[first:last + 1], target[first:last + 1])
         # Boundaries move by a few frames with jitter and debouncing: read
         # the hand's state over a few frames, not one.
-        held_before = _most_common(held[max(0, first - BOUNDARY_FRAMES):first]) if first > 0 else ""
+        # At the trace's start: what the hand holds in its first frame.
+        held_before = _most_common(held[max(0, first - BOUNDARY_FRAMES):first]) if first > 0 else str(held[0])
         held_after = _most_common(held[max(first, last - BOUNDARY_FRAMES + 1):last + 1])
         out.append(Segment(0, hand, label, float(times[first]), float(times[last]), obj, tgt,
                            held_before=held_before, held_after=held_after))

@@ -29,6 +29,12 @@ objects; rows at the first time list the initial state (fluents not listed
 are false); later rows are changes, e.g. ``12.48,open(PinkDrawer),true``.
 Fluents are written ``pred(Arg,...)``: ``inside(A,B)``, ``on_top(A,B)``,
 ``clear(X)``, ``open(X)``, ``graspable(X)``, ``blocking(C,F)``, ...
+Predicates and types end up in a learned PDDL domain, so they are PDDL names
+(an ASCII letter, then letters, digits, ``-``, ``_``; no keyword, and no type
+named like a predicate); ``in_hand`` and ``hand_free`` come from the trace,
+never from this file.  A fluent has one value at a time and one arity, and
+every change falls within the trace's frames (up to :data:`EFFECT_DELAY_S`
+after the last one): no hand can have caused it otherwise.
 """
 
 from __future__ import annotations
@@ -55,6 +61,16 @@ HAND_PREDICATES = ("in_hand", "hand_free")
 MOVE_THRESHOLD_M_S = 0.10
 #: Window over which the speed is measured (s), centred on the frame.
 MOVE_WINDOW_S = 0.10
+#: Fluent changes this long after a hand's segment still belong to it (s); a
+#: change later than this after the trace's last frame has no hand to cause it.
+EFFECT_DELAY_S = 0.1
+#: What a predicate or type must look like: it becomes a PDDL name in a learned domain.
+PDDL_NAME = re.compile(r"[A-Za-z][A-Za-z0-9_-]*")
+#: Words PDDL readers take as keywords: no predicate or type may be called so.
+PDDL_RESERVED = frozenset({
+    "and", "or", "not", "imply", "exists", "forall", "when", "either", "define", "domain", "problem", "object",
+    "number", "int", "float", "increase", "decrease", "assign", "scale-up", "scale-down", "preference", "minimize",
+    "maximize", "sometime", "always", "within", "hold-during", "hold-after"})
 
 _FLUENT = re.compile(r"^\s*([A-Za-z][\w-]*)\s*\(\s*([^()]*?)\s*\)\s*$")
 _TRUE = {"true", "1", "yes"}
@@ -93,8 +109,10 @@ def _csv(text: str, path: str, columns: tuple[str, ...]) -> pd.DataFrame:
         frame = pd.read_csv(io.StringIO(text), dtype=str, keep_default_na=False, skipinitialspace=True)
     except pd.errors.ParserError as exc:
         match = re.search(r"line (\d+)", str(exc))
+        row = re.search(r"starting at row (\d+)", str(exc))  # 0-based, the header is row 0
+        line = int(match.group(1)) if match else int(row.group(1)) + 1 if row else None
         raise TraceError(f"malformed CSV ({' '.join(str(exc).split())}; quote fields that contain commas, "
-                         f"e.g. \"inside(A,B)\")", Location(path, int(match.group(1)) if match else None)) from None
+                         f"e.g. \"inside(A,B)\")", Location(path, line)) from None
     except pd.errors.EmptyDataError:
         raise TraceError("empty file, expected a CSV header and rows", Location(path, 1)) from None
     frame.columns = [c.strip() for c in frame.columns]
@@ -137,12 +155,28 @@ def parse_fluent(text: str) -> Atom:
     return Atom(match.group(1).lower(), args)
 
 
-def load_state(path: str) -> tuple[dict[str, str], frozenset[Atom], list[tuple[float, Atom, bool]], dict[str, str]]:
-    """Objects, initial fluents, later changes and spellings from a state CSV."""
-    frame = _csv(read_text(path), path, STATE_COLUMNS)
+def pddl_name_problem(name: str) -> str | None:
+    """Why ``name`` cannot be a predicate or type of a learned PDDL domain, else None."""
+    if not PDDL_NAME.fullmatch(name):
+        return "a PDDL name (an ASCII letter, then letters, digits, '-' or '_')"
+    if name in PDDL_RESERVED:
+        return "a name that is not a PDDL keyword"
+    return None
+
+
+def load_state(path: str, span: tuple[float, float] | None = None,
+               ) -> tuple[dict[str, str], frozenset[Atom], list[tuple[float, Atom, bool]], dict[str, str]]:
+    """Objects, initial fluents, later changes and spellings from a state CSV.
+
+    With ``span`` (the trace's first and last frame times), a change must fall
+    within it (up to :data:`EFFECT_DELAY_S` after the last frame): no hand can
+    have caused it otherwise.
+    """
+    frame = _csv(read_text(path, "an environment state CSV (time,fluent,value)"), path, STATE_COLUMNS)
     times = _numbers(frame, path, "time")
     objects: dict[str, str] = {}
     spellings: dict[str, str] = {}
+    type_row: dict[str, int] = {}  # the first row declaring an object of each type
     rows: list[tuple[int, float, Atom, bool]] = []
     for i, (t, text, value) in enumerate(zip(times, frame["fluent"], frame["value"])):
         raw = text.strip()
@@ -158,10 +192,26 @@ def load_state(path: str) -> tuple[dict[str, str], frozenset[Atom], list[tuple[f
             if len(atom.args) != 2:
                 raise TraceError(f"column 'fluent': expected object(Name,type), got '{raw}'",
                                  _where(path, frame, i, "fluent"))
-            objects[atom.args[0]] = atom.args[1]
+            name, kind = atom.args
+            why = pddl_name_problem(kind) if kind != "object" else None  # the root type
+            if why:
+                raise TraceError(f"column 'fluent': type '{kind}' of {name}: expected {why}",
+                                 _where(path, frame, i, "fluent"))
+            if objects.get(name, kind) != kind:
+                raise TraceError(f"column 'fluent': object '{name}' is declared as {objects[name]} and as {kind} "
+                                 "(names are case-insensitive); expected one type", _where(path, frame, i, "fluent"))
+            objects[name] = kind
+            type_row.setdefault(kind, i)
             original = _FLUENT.match(raw).group(2).split(",")[0].strip()  # type: ignore[union-attr]
             spellings[atom.args[0]] = original
             continue
+        why = pddl_name_problem(atom.predicate)
+        if why:
+            raise TraceError(f"column 'fluent': predicate '{atom.predicate}': expected {why}",
+                             _where(path, frame, i, "fluent"))
+        if atom.predicate in HAND_PREDICATES:
+            raise TraceError(f"column 'fluent': {atom.predicate} is the hand's state, read from the trace's "
+                             "in_hand column; expected an environment fluent", _where(path, frame, i, "fluent"))
         rows.append((i, float(t), atom, flag in _TRUE))
     if not objects:
         raise TraceError("no object(Name,type) rows: the scene's objects must be declared", Location(path, 1))
@@ -170,7 +220,27 @@ def load_state(path: str) -> tuple[dict[str, str], frozenset[Atom], list[tuple[f
             if arg not in objects:
                 raise TraceError(f"column 'fluent': object '{arg}' is never declared (add an object({arg},type) row)",
                                  _where(path, frame, i, "fluent"))
+    arity: dict[str, int] = {}
+    value_at: dict[tuple[float, Atom], bool] = {}
+    for i, t, atom, value in rows:
+        if arity.setdefault(atom.predicate, len(atom.args)) != len(atom.args):
+            raise TraceError(f"column 'fluent': {atom.predicate} has {len(atom.args)} argument(s) here and "
+                             f"{arity[atom.predicate]} before; expected the same number",
+                             _where(path, frame, i, "fluent"))
+        if value_at.setdefault((t, atom), value) != value:
+            raise TraceError(f"column 'value': {frame['fluent'].iloc[i].strip()} is set both true and false "
+                             f"at {t:g} s; expected one value", _where(path, frame, i, "value"))
+    clash = sorted(set(objects.values()) & (set(arity) | set(HAND_PREDICATES)))
+    if clash:
+        raise TraceError(f"column 'fluent': type '{clash[0]}' is also a predicate; expected distinct names",
+                         _where(path, frame, type_row[clash[0]], "fluent"))
     start = min((t for _, t, _, _ in rows), default=0.0)
+    if span is not None:
+        for i, t, _, _ in rows:
+            if t > start and not span[0] <= t <= span[1] + EFFECT_DELAY_S:
+                raise TraceError(f"column 'time': a change at {t:g} s, outside the trace ({span[0]:g} s to "
+                                 f"{span[1]:g} s), that no hand can have caused; expected a time within the trace",
+                                 _where(path, frame, i, "time"))
     initial = frozenset(a for _, t, a, v in rows if t == start and v)
     events = sorted(((t, a, v) for _, t, a, v in rows if t > start), key=lambda e: e[0])
     return objects, initial, events, spellings
@@ -179,9 +249,10 @@ def load_state(path: str) -> tuple[dict[str, str], frozenset[Atom], list[tuple[f
 def load_demonstration(trace_path: str, state_path: str | None = None) -> Demonstration:
     """Read and check a trace and its state file; adds the derived ``hand_move`` column."""
     state_path = state_path or default_state_path(trace_path)
-    frame = _csv(read_text(trace_path), trace_path, TRACE_COLUMNS)
-    objects, initial, events, spellings = load_state(state_path)
+    frame = _csv(read_text(trace_path, "a hand trace CSV (time,hand,x,y,z,grip,in_hand,act_on)"),
+                 trace_path, TRACE_COLUMNS)
     times = _numbers(frame, trace_path, "time")
+    objects, initial, events, spellings = load_state(state_path, (float(times.min()), float(times.max())))
     for axis in ("x", "y", "z"):
         frame[axis] = _numbers(frame, trace_path, axis)
     frame["time"] = times
@@ -234,13 +305,14 @@ def hand_move(frame: pd.DataFrame) -> np.ndarray:
         pos = frame[["x", "y", "z"]].to_numpy()[idx]
         lo = np.searchsorted(t, t - half, side="left")
         hi = np.searchsorted(t, t + half, side="right") - 1
-        span = t[hi] - t[lo]
-        dist = np.linalg.norm(pos[hi] - pos[lo], axis=1)
-        with np.errstate(divide="ignore", invalid="ignore"):
+        with np.errstate(over="ignore", divide="ignore", invalid="ignore"):  # huge coordinates: infinite speed
+            span = t[hi] - t[lo]
+            dist = np.linalg.norm(pos[hi] - pos[lo], axis=1)
             speed = np.where(span > 0, dist / span, 0.0)
         out[idx] = speed > MOVE_THRESHOLD_M_S
     return out
 
 
-__all__ = ["Demonstration", "load_demonstration", "load_state", "parse_fluent", "hand_move",
-           "TRACE_COLUMNS", "STATE_COLUMNS", "HAND_PREDICATES", "MOVE_THRESHOLD_M_S", "MOVE_WINDOW_S"]
+__all__ = ["Demonstration", "load_demonstration", "load_state", "parse_fluent", "hand_move", "TRACE_COLUMNS",
+           "STATE_COLUMNS", "HAND_PREDICATES", "MOVE_THRESHOLD_M_S", "MOVE_WINDOW_S", "EFFECT_DELAY_S",
+           "PDDL_NAME", "PDDL_RESERVED", "pddl_name_problem"]
