@@ -116,6 +116,9 @@ class RelaxedExcuseTask:
         # Small tasks: numpy's per-call overhead dominates; plain lists are faster.
         self.small = n_actions < SMALL_TASK_ACTIONS
         self.pre_lists, self.add_lists = pre, add
+        self.n_pre_list = [len(p) for p in pre]
+        self.free_adds = sorted({q for p, e in zip(pre, add) if not p for q in e})
+        self._first_hmax = None
         self.prec_of_lists, self.achiever_lists = prec_of, achievers
         if not self.small:
             self.pre_ptr, self.pre_flat = _csr(pre)
@@ -256,9 +259,12 @@ class RelaxedExcuseTask:
         if self.goal.size == 0:
             return Bound(0, [], [])
         true, cost = self._initial(state, changes)
+        self._first_hmax = None
         first = self._lmcut(true, cost.copy(), last=False)
         if not (first.h == INF or first.h == 0):
-            second = self._lmcut(true, cost, last=True)
+            # The second run starts from the same costs: its first h^max pass
+            # is the first run's, only the tie-breaking differs.
+            second = self._lmcut(true, cost, last=True, initial_h=self._first_hmax)
             first = second if second.h > first.h else first
         if first.h != INF:
             first.h = self.unscale(first.h)
@@ -268,14 +274,19 @@ class RelaxedExcuseTask:
         """A bound in scaled cost units as an admissible bound in weight units."""
         return int(math.floor(value / self.scale + 1e-9))
 
-    def _lmcut(self, true: np.ndarray, cost: np.ndarray, last: bool) -> Bound:
+    def _lmcut(self, true: np.ndarray, cost: np.ndarray, last: bool, initial_h=None) -> Bound:
         if self.small:
-            return self._lmcut_lists(true.tolist(), cost.tolist(), last)
+            return self._lmcut_lists(true.tolist(), cost.tolist(), last, initial_h)
         total = 0.0
         landmarks: list[list[int]] = []
         shares: list[int] = []
         while True:
-            h = self._hmax(true, cost)
+            if initial_h is not None:
+                h, initial_h = initial_h, None
+            else:
+                h = self._hmax(true, cost)
+                if self._first_hmax is None:
+                    self._first_hmax = h
             goal_h = h[self.goal]
             goal_fact = int(self.goal[int(np.argmax(goal_h))])
             if h[goal_fact] == INF:
@@ -314,12 +325,10 @@ class RelaxedExcuseTask:
         distinct change costs: one linear closure per cost level, no heap.
         """
         adds = self.add_lists
-        unsat = [len(p) for p in self.pre_lists]
+        unsat = list(self.n_pre_list)
         seed = [0.0 if t else c for t, c in zip(true, cost)]
-        for ai, n in enumerate(unsat):
-            if n == 0:
-                for q in adds[ai]:
-                    seed[q] = 0.0
+        for q in self.free_adds:
+            seed[q] = 0.0
         h = [INF] * len(seed)
         prec_of = self.prec_of_lists
         for level in sorted({v for v in seed if v != INF}):
@@ -337,13 +346,18 @@ class RelaxedExcuseTask:
                                 queue.append(q)
         return h
 
-    def _lmcut_lists(self, true: list[bool], cost: list[float], last: bool) -> Bound:
+    def _lmcut_lists(self, true: list[bool], cost: list[float], last: bool, initial_h=None) -> Bound:
         total = 0.0
         landmarks: list[list[int]] = []
         shares: list[int] = []
         goal = self.goal_list
         while True:
-            h = self._hmax_lists(true, cost)
+            if initial_h is not None:
+                h, initial_h = initial_h, None
+            else:
+                h = self._hmax_lists(true, cost)
+                if self._first_hmax is None:
+                    self._first_hmax = h
             goal_fact = max(goal, key=lambda g: h[g])  # first maximum, as np.argmax
             if h[goal_fact] == INF:
                 return Bound(INF, [], [])
