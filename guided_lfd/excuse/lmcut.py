@@ -149,8 +149,32 @@ class RelaxedExcuseTask:
         self.group_facts = [np.array([pos_id[i] for i in bits(mask) if i in pos_id], dtype=np.int64)
                             for mask in self.groups]
         # Only the facts' weights matter (the task may have many irrelevant atoms).
-        self.fact_weight = np.array([space.weights.get(a, 0) * self.scale for a in self.fact_atom_list],
-                                    dtype=np.float64)
+        self.fact_weight_list = [float(space.weights.get(a, 0) * self.scale) for a in self.fact_atom_list]
+        self.fact_weight = np.array(self.fact_weight_list, dtype=np.float64)
+        self.group_fact_lists = [f.tolist() for f in self.group_facts]
+
+    def _initial_lists(self, state: int, changes: int) -> tuple[list[bool], list[float]]:
+        """:meth:`_initial` on plain lists, for small tasks (no numpy call overhead)."""
+        atoms, n_pos = self.fact_atom_list, self.n_pos
+        true = [bool((state >> a) & 1) for a in atoms[:n_pos]] + [not (state >> a) & 1 for a in atoms[n_pos:]]
+        flippable = self.space.changeable & ~changes
+        cost = [w if not t and (flippable >> a) & 1 else INF
+                for a, t, w in zip(atoms, true, self.fact_weight_list)]
+        for mask, facts in zip(self.groups, self.group_fact_lists):
+            if not facts:
+                continue
+            present = state & mask
+            if present.bit_count() != 1:
+                continue
+            q = present.bit_length() - 1
+            if (changes >> q) & 1:
+                for f in facts:
+                    cost[f] = INF
+            elif not (self.neg_mask >> q) & 1:
+                charge = self.space.weights[q] * self.scale / self.membership[q]
+                for f in facts:
+                    cost[f] += charge
+        return true, cost
 
     def _initial(self, state: int, changes: int) -> tuple[np.ndarray, np.ndarray]:
         """Facts true in ``state`` and the change cost of each other fact (INF = not changeable)."""
@@ -258,7 +282,10 @@ class RelaxedExcuseTask:
         """
         if self.goal.size == 0:
             return Bound(0, [], [])
-        true, cost = self._initial(state, changes)
+        if self.small:
+            true, cost = self._initial_lists(state, changes)
+        else:
+            true, cost = self._initial(state, changes)
         self._first_hmax = None
         first = self._lmcut(true, cost.copy(), last=False)
         if not (first.h == INF or first.h == 0):
@@ -274,9 +301,9 @@ class RelaxedExcuseTask:
         """A bound in scaled cost units as an admissible bound in weight units."""
         return int(math.floor(value / self.scale + 1e-9))
 
-    def _lmcut(self, true: np.ndarray, cost: np.ndarray, last: bool, initial_h=None) -> Bound:
-        if self.small:
-            return self._lmcut_lists(true.tolist(), cost.tolist(), last, initial_h)
+    def _lmcut(self, true, cost, last: bool, initial_h=None) -> Bound:
+        if self.small:  # lists from _initial_lists
+            return self._lmcut_lists(true, cost, last, initial_h)
         total = 0.0
         landmarks: list[list[int]] = []
         shares: list[int] = []
