@@ -9,9 +9,9 @@ import typer
 from cli.common import OutputOption, QuietOption, check_inputs, command, ui
 from guided_lfd.demonstration.learn import learn_domain as learn
 from guided_lfd.demonstration.learn import load_segments
-from guided_lfd.demonstration.trace import pddl_name_problem
 from guided_lfd.errors import OptionError
 from guided_lfd.io import check_writable, write_text
+from guided_lfd.pddl.model import pddl_name_problem
 from guided_lfd.pddl.reader import parse_domain
 from guided_lfd.pddl.writer import domain_to_pddl
 

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import os
-import re
 from dataclasses import replace
 from typing import Annotated
 
@@ -14,11 +13,9 @@ from guided_lfd.errors import OptionError
 from guided_lfd.io import check_writable, json_document, write_text
 from guided_lfd.merge import merge_domains
 from guided_lfd.pddl.compile import compile_negative_preconditions
+from guided_lfd.pddl.model import pddl_name_problem
 from guided_lfd.pddl.reader import parse_domain, parse_problem_for
 from guided_lfd.pddl.writer import domain_to_pddl, problem_to_pddl
-
-#: What a domain name may look like.
-PDDL_NAME = re.compile(r"[A-Za-z][A-Za-z0-9_-]*")
 
 
 @command
@@ -42,8 +39,9 @@ def merge(
     if problem_output is not None and (problem_output == output or (
             output != "-" and os.path.realpath(problem_output) == os.path.realpath(output))):
         raise OptionError("--problem-output must differ from --output")
-    if name is not None and not PDDL_NAME.fullmatch(name):
-        raise OptionError(f"--name {name!r}: expected a PDDL name (a letter, then letters, digits, '-' or '_')")
+    why = None if name is None else pddl_name_problem(name.lower())
+    if why:
+        raise OptionError(f"--name {name!r}: expected {why}")
     check_inputs(prior, *learned, *([positive_for] if positive_for else []))
     check_writable(output)
     if problem_output is not None:

@@ -239,13 +239,7 @@ def _culprit(state: frozenset[Atom], intended: frozenset[Atom], reach: RobotReac
     diff = sorted([Change(a, True) for a in state - intended] + [Change(a, False) for a in intended - state], key=str)
     for size in range(1, min(len(diff), MAX_CULPRIT_SIZE) + 1):
         for subset in itertools.combinations(diff, size):
-            undone = set(state)
-            for change in subset:
-                if change.added:
-                    undone.discard(change.atom)
-                else:
-                    undone.add(change.atom)
-            if reach(frozenset(undone)):
+            if reach(excuse_state(state, [Change(c.atom, not c.added) for c in subset])):
                 return list(subset)
     return diff
 

@@ -11,6 +11,7 @@ from pathlib import Path
 from typing import Any
 
 from guided_lfd.errors import Location, OutputError
+from guided_lfd.pddl.source import read_text
 
 #: Version of every JSON document guided-lfd writes; bumped on incompatible change.
 FORMAT_VERSION = 1
@@ -106,3 +107,23 @@ def json_document(kind: str, body: dict[str, Any]) -> str:
     """Serialise a versioned JSON document (stable key order, trailing newline)."""
     doc = {"format": f"guided-lfd/{kind}", "format_version": FORMAT_VERSION, **body}
     return json.dumps(doc, indent=2, sort_keys=False) + "\n"
+
+
+def read_json_document(path: str, kind: str, error: type, origin: str) -> tuple[str, dict]:
+    """The text and body of a ``guided-lfd/<kind>`` JSON document (``-`` = stdin).
+
+    Anything else raises ``error`` (a :class:`~guided_lfd.errors.GuidedLfdError`
+    class) naming the file; ``origin`` says which command writes such documents.
+    """
+    expected = f"a guided-lfd/{kind} document"
+    text = read_text(path, f"{expected} (from {origin})")
+    try:
+        doc = json.loads(text)
+    except json.JSONDecodeError as exc:
+        raise error(f"not JSON ({exc.msg}), expected {expected}", Location(path, exc.lineno, exc.colno)) from None
+    except RecursionError:
+        raise error(f"JSON nested too deeply, expected {expected}", Location(path)) from None
+    if not isinstance(doc, dict) or doc.get("format") != f"guided-lfd/{kind}":
+        raise error(f"expected {expected} (from {origin})", Location(path, 1))
+    return text, doc
+

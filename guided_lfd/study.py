@@ -309,7 +309,6 @@ def plot(paper: PaperData, kitchens: list[KitchenResult], out: Path) -> list[Pat
         import matplotlib.pyplot as plt
     except ImportError:
         return []
-    meta = {"Software": None}
     paths = []
     fig, axes = plt.subplots(1, 2, figsize=(10, 4), sharey=True)
     width = 0.2
@@ -325,11 +324,7 @@ def plot(paper: PaperData, kitchens: list[KitchenResult], out: Path) -> list[Pat
         ax.set_title(f"{KITCHEN_NAMES[k.kitchen]}: demonstration time")
         ax.set_ylabel("seconds")
     axes[0].legend(fontsize=8)
-    fig.tight_layout()
-    path = out / "study-time.png"
-    fig.savefig(path, dpi=110, metadata=meta)
-    plt.close(fig)
-    paths.append(path)
+    paths.append(_save(plt, fig, out / "study-time.png"))
 
     fig, axes = plt.subplots(1, 2, figsize=(10, 4), sharey=True)
     for ax, k in zip(axes, kitchens):
@@ -348,12 +343,16 @@ def plot(paper: PaperData, kitchens: list[KitchenResult], out: Path) -> list[Pat
         ax.set_xticks(xs, DEMONSTRATORS)
         ax.set_title(f"{KITCHEN_NAMES[k.kitchen]}: demonstration size (actions)")
     axes[0].legend(fontsize=7)
-    fig.tight_layout()
-    path = out / "study-sizes.png"
-    fig.savefig(path, dpi=110, metadata=meta)
-    plt.close(fig)
-    paths.append(path)
+    paths.append(_save(plt, fig, out / "study-sizes.png"))
     return paths
+
+
+def _save(plt: Any, fig: Any, path: Path) -> Path:
+    """Write ``fig`` as PNG without version metadata (so reruns are byte-identical)."""
+    fig.tight_layout()
+    fig.savefig(path, dpi=110, metadata={"Software": None})
+    plt.close(fig)
+    return path
 
 
 def _md_table(header: list[str], rows: list[list[Any]]) -> str:

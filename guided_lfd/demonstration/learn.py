@@ -28,9 +28,9 @@ import re
 from dataclasses import dataclass, replace
 
 from guided_lfd.demonstration.mutex import drop_implied_negative_preconditions, proven_invariants
-from guided_lfd.demonstration.trace import HAND_PREDICATES, pddl_name_problem
+from guided_lfd.demonstration.trace import HAND_PREDICATES
 from guided_lfd.errors import Location, MergeError, TraceError
-from guided_lfd.pddl.model import ActionSchema, Atom, Domain, Literal, Predicate, common_supertype
+from guided_lfd.pddl.model import ActionSchema, Atom, Domain, Literal, Predicate, common_supertype, pddl_name_problem
 
 #: Activities that are never planning actions.
 SKIPPED = ("Idle",)
@@ -119,20 +119,9 @@ def ground_actions(document: dict, source: str = "segments") -> list[Demonstrate
 
 def load_segments(path: str) -> dict:
     """Read a ``guided-lfd/segments`` JSON document (``-`` = stdin); TraceError if it is not one."""
-    import json
+    from guided_lfd.io import read_json_document
 
-    from guided_lfd.pddl.source import read_text
-
-    text = read_text(path, "a guided-lfd/segments document (from `guided-lfd segment`)")
-    try:
-        doc = json.loads(text)
-    except json.JSONDecodeError as exc:
-        raise TraceError(f"not JSON ({exc.msg}), expected a guided-lfd/segments document",
-                         Location(path, exc.lineno, exc.colno)) from None
-    except RecursionError:
-        raise TraceError("JSON nested too deeply, expected a guided-lfd/segments document", Location(path)) from None
-    if not isinstance(doc, dict) or doc.get("format") != "guided-lfd/segments":
-        raise TraceError("expected a guided-lfd/segments document (from `guided-lfd segment`)", Location(path, 1))
+    text, doc = read_json_document(path, "segments", TraceError, "`guided-lfd segment`")
     problem = document_problem(doc)
     if problem is not None:
         keys, message = problem

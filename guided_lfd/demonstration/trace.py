@@ -48,7 +48,7 @@ import numpy as np
 import pandas as pd
 
 from guided_lfd.errors import Location, TraceError
-from guided_lfd.pddl.model import Atom
+from guided_lfd.pddl.model import PDDL_NAME, PDDL_RESERVED, Atom, pddl_name_problem
 from guided_lfd.pddl.source import read_text
 
 TRACE_COLUMNS = ("time", "hand", "x", "y", "z", "grip", "in_hand", "act_on")
@@ -64,14 +64,6 @@ MOVE_WINDOW_S = 0.10
 #: Fluent changes this long after a hand's segment still belong to it (s); a
 #: change later than this after the trace's last frame has no hand to cause it.
 EFFECT_DELAY_S = 0.1
-#: What a predicate or type must look like: it becomes a PDDL name in a learned domain.
-PDDL_NAME = re.compile(r"[A-Za-z][A-Za-z0-9_-]*")
-#: Words PDDL readers take as keywords: no predicate or type may be called so.
-PDDL_RESERVED = frozenset({
-    "and", "or", "not", "imply", "exists", "forall", "when", "either", "define", "domain", "problem", "object",
-    "number", "int", "float", "increase", "decrease", "assign", "scale-up", "scale-down", "preference", "minimize",
-    "maximize", "sometime", "always", "within", "hold-during", "hold-after"})
-
 _FLUENT = re.compile(r"^\s*([A-Za-z][\w-]*)\s*\(\s*([^()]*?)\s*\)\s*$")
 _TRUE = {"true", "1", "yes"}
 _FALSE = {"false", "0", "no"}
@@ -153,15 +145,6 @@ def parse_fluent(text: str) -> Atom:
     if any(not a or not re.fullmatch(r"[\w-]+", a) for a in args):
         raise ValueError(text)
     return Atom(match.group(1).lower(), args)
-
-
-def pddl_name_problem(name: str) -> str | None:
-    """Why ``name`` cannot be a predicate or type of a learned PDDL domain, else None."""
-    if not PDDL_NAME.fullmatch(name):
-        return "a PDDL name (an ASCII letter, then letters, digits, '-' or '_')"
-    if name in PDDL_RESERVED:
-        return "a name that is not a PDDL keyword"
-    return None
 
 
 def load_state(path: str, span: tuple[float, float] | None = None,

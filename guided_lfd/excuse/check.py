@@ -7,12 +7,11 @@ mistakes.  Every excuse guided-lfd prints has passed this check.
 
 from __future__ import annotations
 
-import json
 from dataclasses import dataclass
 
 from guided_lfd.errors import InputFileError, Location
+from guided_lfd.io import read_json_document
 from guided_lfd.pddl.model import Atom, Domain, Literal, Problem
-from guided_lfd.pddl.source import read_text
 from guided_lfd.validate import PlanStep, validate_plan
 
 
@@ -34,13 +33,8 @@ def read_excuse(path: str, domain: Domain, problem: Problem) -> list[Change]:
     objects (or the domain's constants); anything else is an
     :class:`~guided_lfd.errors.InputFileError` naming the file.
     """
-    text = read_text(path, "a guided-lfd/excuse document (from `guided-lfd excuse --json`)")
-    try:
-        doc = json.loads(text)
-    except json.JSONDecodeError as exc:
-        raise InputFileError(f"not JSON ({exc.msg}), expected a guided-lfd/excuse document",
-                             Location(path, exc.lineno, exc.colno)) from None
-    excuse = doc.get("excuse") if isinstance(doc, dict) and doc.get("format") == "guided-lfd/excuse" else None
+    text, doc = read_json_document(path, "excuse", InputFileError, "`guided-lfd excuse --json`")
+    excuse = doc.get("excuse")
     if not isinstance(excuse, dict) or not isinstance(excuse.get("changes"), list):
         raise InputFileError("expected a guided-lfd/excuse document with an excuse "
                              "(from `guided-lfd excuse --json`)", Location(path, 1))

@@ -160,21 +160,30 @@ class RelaxedExcuseTask:
         flippable = self.space.changeable & ~changes
         cost = [w if not t and (flippable >> a) & 1 else INF
                 for a, t, w in zip(atoms, true, self.fact_weight_list)]
-        for mask, facts in zip(self.groups, self.group_fact_lists):
-            if not facts:
+        for k, charge in self._group_charges(state, changes):
+            for f in self.group_fact_lists[k]:
+                cost[f] = INF if charge is None else cost[f] + charge
+        return true, cost
+
+    def _group_charges(self, state: int, changes: int):
+        """Per mutex group with one true atom q: (group index, charge on making another atom true).
+
+        ``None`` pins the group's other atoms (q was made true by the change
+        set and must stay).  Otherwise making one of them true forces q's
+        removal, charged only when "not q" is no relaxed fact of its own: its
+        change already costs w(q), and a relaxed plan may use both.
+        """
+        for k, mask in enumerate(self.groups):
+            if not self.group_fact_lists[k]:
                 continue
             present = state & mask
             if present.bit_count() != 1:
                 continue
             q = present.bit_length() - 1
             if (changes >> q) & 1:
-                for f in facts:
-                    cost[f] = INF
+                yield k, None
             elif not (self.neg_mask >> q) & 1:
-                charge = self.space.weights[q] * self.scale / self.membership[q]
-                for f in facts:
-                    cost[f] += charge
-        return true, cost
+                yield k, self.space.weights[q] * self.scale / self.membership[q]
 
     def _initial(self, state: int, changes: int) -> tuple[np.ndarray, np.ndarray]:
         """Facts true in ``state`` and the change cost of each other fact (INF = not changeable)."""
@@ -183,19 +192,9 @@ class RelaxedExcuseTask:
         true[self.n_pos :] = ~state_bits[self.n_pos :]
         flippable = (self.changeable & ~bitmask_to_array(changes, self.n_atoms))[self.fact_atom] & ~true
         cost = np.where(flippable, self.fact_weight, INF)
-        for mask, facts in zip(self.groups, self.group_facts):
-            if facts.size == 0:
-                continue
-            present = state & mask
-            if present.bit_count() != 1:
-                continue
-            q = present.bit_length() - 1
-            if (changes >> q) & 1:
-                cost[facts] = INF  # q was made true by the change set and must stay
-            elif not (self.neg_mask >> q) & 1:
-                # Only when "not q" is no relaxed fact of its own: its change
-                # already costs w(q), and a relaxed plan may use both.
-                cost[facts] += self.space.weights[q] * self.scale / self.membership[q]
+        for k, charge in self._group_charges(state, changes):
+            facts = self.group_facts[k]
+            cost[facts] = INF if charge is None else cost[facts] + charge
         return true, cost
 
     def _hmax(self, true: np.ndarray, cost: np.ndarray) -> np.ndarray:

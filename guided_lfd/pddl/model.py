@@ -9,6 +9,7 @@ was first written (``PinkDrawer``) for messages meant for people.
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -18,6 +19,23 @@ from guided_lfd.errors import Location
 SUPPORTED_REQUIREMENTS = (":strips", ":typing", ":negative-preconditions", ":equality")
 
 EQUALITY = "="
+
+#: What a name (domain, predicate, type) must look like to be written as PDDL.
+PDDL_NAME = re.compile(r"[A-Za-z][A-Za-z0-9_-]*")
+#: Words PDDL readers take as keywords: no predicate or type may be called so.
+PDDL_RESERVED = frozenset({
+    "and", "or", "not", "imply", "exists", "forall", "when", "either", "define", "domain", "problem", "object",
+    "number", "int", "float", "increase", "decrease", "assign", "scale-up", "scale-down", "preference", "minimize",
+    "maximize", "sometime", "always", "within", "hold-during", "hold-after"})
+
+
+def pddl_name_problem(name: str) -> str | None:
+    """Why ``name`` cannot be written as a PDDL name (domain, predicate, type), else None."""
+    if not PDDL_NAME.fullmatch(name):
+        return "a PDDL name (an ASCII letter, then letters, digits, '-' or '_')"
+    if name in PDDL_RESERVED:
+        return "a name that is not a PDDL keyword"
+    return None
 
 
 @dataclass(frozen=True, order=True)
