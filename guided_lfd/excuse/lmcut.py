@@ -88,6 +88,7 @@ class RelaxedExcuseTask:
         neg_id = {a: len(pos) + f for f, a in enumerate(neg)}
         self.fact_atom = np.array(pos + neg, dtype=np.int64)
         self.fact_atom_list = pos + neg
+        self._pos_id, self._neg_id = pos_id, neg_id
         self.n_pos = len(pos)
         self.n_facts = len(pos) + len(neg)
         pre: list[list[int]] = []
@@ -154,12 +155,26 @@ class RelaxedExcuseTask:
         self.group_fact_lists = [f.tolist() for f in self.group_facts]
 
     def _initial_lists(self, state: int, changes: int) -> tuple[list[bool], list[float]]:
-        """:meth:`_initial` on plain lists, for small tasks (no numpy call overhead)."""
-        atoms, n_pos = self.fact_atom_list, self.n_pos
-        true = [bool((state >> a) & 1) for a in atoms[:n_pos]] + [not (state >> a) & 1 for a in atoms[n_pos:]]
+        """:meth:`_initial` on plain lists, for small tasks (no numpy call overhead).
+
+        Walks the set bits of the masks instead of testing every fact.
+        """
+        pos_id, neg_id, weight = self._pos_id, self._neg_id, self.fact_weight_list
+        n_pos = self.n_pos
+        true = [False] * n_pos + [True] * (self.n_facts - n_pos)
+        cost = [INF] * self.n_facts
+        relevant, neg_mask = self._relevant, self.neg_mask
+        for a in bits(state & relevant):
+            true[pos_id[a]] = True
+        for a in bits(state & neg_mask):
+            true[neg_id[a]] = False
         flippable = self.space.changeable & ~changes
-        cost = [w if not t and (flippable >> a) & 1 else INF
-                for a, t, w in zip(atoms, true, self.fact_weight_list)]
+        for a in bits(flippable & relevant & ~state):  # "p" can be made true
+            f = pos_id[a]
+            cost[f] = weight[f]
+        for a in bits(flippable & neg_mask & state):  # "not p" can be made true
+            f = neg_id[a]
+            cost[f] = weight[f]
         for k, charge in self._group_charges(state, changes):
             for f in self.group_fact_lists[k]:
                 cost[f] = INF if charge is None else cost[f] + charge
@@ -275,9 +290,12 @@ class RelaxedExcuseTask:
     def bound(self, state: int, changes: int) -> Bound:
         """LM-cut value and landmarks (as atom indices to flip) for excuses extending ``changes``.
 
-        LM-cut is computed with two tie-breaking rules for the precondition
-        choice function; both are admissible and the stronger is kept (the
-        choice decides whether goals share one weak landmark or get their own).
+        At the root (no changes yet) LM-cut is computed with two tie-breaking
+        rules for the precondition choice function; both are admissible and
+        the stronger is kept (the choice decides whether goals share one weak
+        landmark or get their own).  The root's landmarks are inherited by the
+        whole search, so that is where the stronger set pays; at other nodes
+        the second run rarely wins and would cost a third of the bound.
         """
         if self.goal.size == 0:
             return Bound(0, [], [])
@@ -287,7 +305,7 @@ class RelaxedExcuseTask:
             true, cost = self._initial(state, changes)
         self._first_hmax = None
         first = self._lmcut(true, cost.copy(), last=False)
-        if not (first.h == INF or first.h == 0):
+        if not changes and not (first.h == INF or first.h == 0):
             # The second run starts from the same costs: its first h^max pass
             # is the first run's, only the tie-breaking differs.
             second = self._lmcut(true, cost, last=True, initial_h=self._first_hmax)
@@ -349,23 +367,30 @@ class RelaxedExcuseTask:
 
         Robot actions cost 0, so h^max is a bottleneck value taken from the few
         distinct change costs: one linear closure per cost level, no heap.
+        Facts are bucketed by their seed cost once, so a level only looks at
+        its own facts.
         """
         adds = self.add_lists
-        unsat = list(self.n_pre_list)
-        seed = [0.0 if t else c for t, c in zip(true, cost)]
-        for q in self.free_adds:
-            seed[q] = 0.0
-        h = [INF] * len(seed)
         prec_of = self.prec_of_lists
-        for level in sorted({v for v in seed if v != INF}):
-            queue = [f for f, v in enumerate(seed) if v <= level and h[f] == INF]
+        unsat = list(self.n_pre_list)
+        h = [INF] * len(cost)
+        buckets: dict[float, list[int]] = {0.0: [f for f, t in enumerate(true) if t] + self.free_adds}
+        for f, c in enumerate(cost):
+            if c != INF and not true[f]:
+                bucket = buckets.get(c)
+                if bucket is None:
+                    buckets[c] = [f]
+                else:
+                    bucket.append(f)
+        for level in sorted(buckets):
+            queue = [f for f in buckets[level] if h[f] == INF]
             for f in queue:
                 h[f] = level
             while queue:
-                f = queue.pop()
-                for ai in prec_of[f]:
-                    unsat[ai] -= 1
-                    if unsat[ai] == 0:
+                for ai in prec_of[queue.pop()]:
+                    left = unsat[ai] - 1
+                    unsat[ai] = left
+                    if not left:
                         for q in adds[ai]:
                             if h[q] == INF:
                                 h[q] = level
@@ -400,11 +425,15 @@ class RelaxedExcuseTask:
                     p = pre[ai]
                     if not p:
                         continue
-                    best = max(h[x] for x in p)
-                    if last:
-                        f = next(x for x in reversed(p) if h[x] == best)
+                    if len(p) == 1:
+                        f = p[0]
                     else:
-                        f = next(x for x in p if h[x] == best)
+                        vals = [h[x] for x in p]
+                        best = max(vals)
+                        if last:
+                            f = p[len(vals) - 1 - vals[::-1].index(best)]
+                        else:
+                            f = p[vals.index(best)]
                     if f not in zone and h[f] > 0:
                         zone.add(f)
                         stack.append(f)

@@ -48,9 +48,10 @@ class ReachabilityOracle:
         self.alive: dict[int, tuple[GroundAction, int] | None] = {}
         self.stats = ReachStats()
         # Index actions by one positive precondition so successor generation
-        # skips most inapplicable actions; actions without one are always tried.
+        # skips most inapplicable actions; actions without one are always tried
+        # (bucket 0, entries with pre_pos = 0).
         mask = self.mask
-        self._unconditional = [(a, a.pre_neg, a.delete, a.add & mask) for a in self.actions if not a.pre_pos]
+        self._unconditional = [(a, 0, a.pre_neg, a.delete, a.add & mask) for a in self.actions if not a.pre_pos]
         # Index each action under its precondition that is most likely false:
         # an atom of the predicate with the most ground atoms (``(lifting h c)``
         # rather than ``(available h)``), so few actions are tried per state.
@@ -70,21 +71,6 @@ class ReachabilityOracle:
     def _goal_distance(self, state: int) -> int:
         return (self.goal_pos & ~state).bit_count() + (self.goal_neg & state).bit_count()
 
-    def _successors(self, state: int):
-        # States are already projected on the relevant atoms, and so are the
-        # stored add effects, so successors need no further masking.
-        for act, pre_neg, delete, add in self._unconditional:
-            if not (state & pre_neg):
-                yield act, (state & ~delete) | add
-        keys = state & self._key_mask
-        by_first = self._by_first_pre
-        while keys:
-            low = keys & -keys
-            keys ^= low
-            for act, pre_pos, pre_neg, delete, add in by_first[low.bit_length() - 1]:
-                if (state & pre_pos) == pre_pos and not (state & pre_neg):
-                    yield act, (state & ~delete) | add
-
     def solve(self, state: int) -> list[GroundAction] | None:
         """A plan from ``state`` to the goal, or None if the goal is unreachable."""
         self.stats.calls += 1
@@ -94,29 +80,50 @@ class ReachabilityOracle:
         heap = [(self._goal_distance(start), counter, start)]
         expanded = 0
         found: int | None = None
+        # The loop is the oracle's hot path: successor generation and the goal
+        # distance are inlined (a generator and two calls per state cost more
+        # than the bit operations themselves).  States are already projected on
+        # the relevant atoms, and so are the stored add effects.
+        goal_pos, goal_neg = self.goal_pos, self.goal_neg
+        alive, dead, by_first = self.alive, self.dead, self._by_first_pre
+        unconditional, key_mask, deadline = self._unconditional, self._key_mask, self.deadline
+        memo_hits = 0
+        pop, push = heapq.heappop, heapq.heappush
         while heap:
-            _, _, s = heapq.heappop(heap)
-            if s in self.alive:
+            _, _, s = pop(heap)
+            if s in alive:
                 found = s
-                self.stats.memo_hits += 1
+                memo_hits += 1
                 break
-            if not self._goal_distance(s):
-                self.alive[s] = None
+            if not (goal_pos & ~s or goal_neg & s):
+                alive[s] = None
                 found = s
                 break
             expanded += 1
-            if self.deadline is not None and not expanded & 1023 and time.monotonic() > self.deadline:
+            if deadline is not None and not expanded & 1023 and time.monotonic() > deadline:
                 self.stats.expanded += expanded
+                self.stats.memo_hits += memo_hits
                 raise SearchTimeout("excuse search exceeded its time limit")
-            for act, t in self._successors(s):
-                if t in parents:
-                    continue
-                if t in self.dead:
-                    self.stats.memo_hits += 1
-                    continue
-                parents[t] = (s, act)
-                counter += 1
-                heapq.heappush(heap, (self._goal_distance(t), counter, t))
+            buckets = [unconditional] if unconditional else []
+            keys = s & key_mask
+            while keys:
+                low = keys & -keys
+                keys ^= low
+                buckets.append(by_first[low.bit_length() - 1])
+            for bucket in buckets:
+                for act, pre_pos, pre_neg, delete, add in bucket:
+                    if (s & pre_pos) != pre_pos or s & pre_neg:
+                        continue
+                    t = (s & ~delete) | add
+                    if t in parents:
+                        continue
+                    if t in dead:
+                        memo_hits += 1
+                        continue
+                    parents[t] = (s, act)
+                    counter += 1
+                    push(heap, ((goal_pos & ~t).bit_count() + (goal_neg & t).bit_count(), counter, t))
+        self.stats.memo_hits += memo_hits
         self.stats.expanded += expanded
         if found is None:
             self.dead.update(parents)

@@ -67,6 +67,7 @@ class ChangeSpace:
         # summed weight minimises cost first and size second.
         self.size_factor = self.changeable.bit_count() + 1
         self.weights = {i: self.costs.get(i, 1) * self.size_factor + 1 for i in bits(self.changeable)}
+        self.min_weight = min(self.weights.values(), default=1)
 
     # -- measures of a change set ---------------------------------------------
     def cost(self, changes: int) -> int:
@@ -88,10 +89,16 @@ class ChangeSpace:
 
     def consistency_bound(self, state: int) -> int:
         """A lower bound on the weight still needed to repair the violated groups."""
-        if not self.groups:
-            return 0
-        min_weight = min(self.weights.values(), default=1)
-        return max((g.need(state) for g in self.groups), default=0) * min_weight
+        # Called for every child the search generates: MutexGroup.need inlined.
+        worst = 0
+        for g in self.groups:
+            count = (state & g.mask).bit_count()
+            if count > 1:
+                if count - 1 > worst:
+                    worst = count - 1
+            elif not count and g.exactly_one and not worst:
+                worst = 1
+        return worst * self.min_weight
 
 
 def relevance(task: GroundTask, actions: list[GroundAction] | None = None) -> tuple[int, list[GroundAction], int]:
