@@ -383,9 +383,13 @@ class RelaxedExcuseTask:
                 else:
                     bucket.append(f)
         for level in sorted(buckets):
-            queue = [f for f in buckets[level] if h[f] == INF]
-            for f in queue:
-                h[f] = level
+            # A fact may sit in a bucket twice (true and freely added): it must
+            # be queued once, or its actions' counters drop twice.
+            queue = []
+            for f in buckets[level]:
+                if h[f] == INF:
+                    h[f] = level
+                    queue.append(f)
             while queue:
                 for ai in prec_of[queue.pop()]:
                     left = unsat[ai] - 1
