@@ -359,6 +359,37 @@ def _compare(rows: list[dict[str, Any]], label: str, default: str, baseline: str
     )
 
 
+#: Excuse-size buckets of the speed-up table ("none" = proved that no excuse exists).
+SIZE_BUCKETS = ("1", "2", "3-5", "6+", "none")
+
+
+def size_bucket(row: dict[str, Any]) -> str:
+    """The :data:`SIZE_BUCKETS` entry of a solved result row."""
+    if row["status"] != "excuse-found":
+        return "none"
+    size = int(row["size"])
+    return str(size) if size <= 2 else ("3-5" if size <= 5 else "6+")
+
+
+def speedups_by_size(rows: list[dict[str, Any]], default: str = "landmark",
+                     baseline: str = "baseline") -> dict[str, dict[str, list[float]]]:
+    """Search speed-ups on the tasks both strategies solve, per semantics and excuse-size bucket."""
+    runs: dict[tuple[str, str], dict[str, dict]] = {}
+    for r in rows:
+        runs.setdefault((r["id"], r["semantics"]), {})[r["strategy"]] = r
+    out: dict[str, dict[str, list[float]]] = {}
+    for (_, sem), pair in sorted(runs.items()):
+        d, b = pair.get(default), pair.get(baseline)
+        if d is None or b is None or d["status"] not in SOLVED or b["status"] not in SOLVED:
+            continue
+        if d.get("search_time_s") in ("", None) or b.get("search_time_s") in ("", None):
+            continue
+        ratio = (max(float(b["search_time_s"]), SEARCH_TIME_FLOOR)
+                 / max(float(d["search_time_s"]), SEARCH_TIME_FLOOR))
+        out.setdefault(sem, {}).setdefault(size_bucket(d), []).append(ratio)
+    return out
+
+
 def plot(rows: list[dict[str, Any]], folder: Path, time_limit: float) -> list[Path]:
     """Cactus plot and time-vs-size plot as PNG files."""
     try:
@@ -454,6 +485,15 @@ def summary_markdown(rows: list[dict[str, Any]], time_limit: float, command: str
                         and r["status"] in SOLVED)
                 cells.append(str(n))
         lines.append(f"| {dom} | {len(ids)} | " + " | ".join(cells) + " |")
+    by_size = speedups_by_size(rows)
+    lines += ["", "## Median search speed-up by minimal excuse size", "",
+              "On the tasks both strategies solve; each cell is the median and, in brackets, the number of tasks.",
+              "", "| semantics | " + " | ".join(f"size {b}" if b != "none" else "no excuse" for b in SIZE_BUCKETS)
+              + " |", "|---|" + "---|" * len(SIZE_BUCKETS)]
+    for se in sorted(by_size):
+        cells = [f"{statistics.median(v):.0f}x ({len(v)})" if (v := by_size[se].get(b)) else "-"
+                 for b in SIZE_BUCKETS]
+        lines.append(f"| {se} | " + " | ".join(cells) + " |")
     sizes: dict[str, int] = {}
     for r in rows:
         if r["strategy"] == "landmark" and r["status"] == "excuse-found":
@@ -469,8 +509,14 @@ def summary_markdown(rows: list[dict[str, Any]], time_limit: float, command: str
               "Every task both strategies solved has the same status and minimal size."
               if not mism else "Disagreements:\n\n" + "\n".join(f"- {m}" for m in mism)]
     errors = [r for r in rows if r["status"] in ("error", "crashed")]
+    found = sum(r["status"] == "excuse-found" for r in rows)
+    lines += ["", "## Validation", "",
+              f"Every run re-checks each excuse it returns with the independent checker "
+              f"(`guided_lfd.excuse.check`: the excuse state misses the goal, keeps the invariants under the "
+              f"consistent semantics, and the robot's plan from it validates); a failed check ends the run "
+              f"as an error. Runs that returned an excuse: {found}; runs that ended in an error or crash: {len(errors)}."]
     if errors:
-        lines += ["", "## Errors", ""] + [f"- {r['id']} {r['strategy']} {r['semantics']}: {r['excuse']}"
-                                         for r in errors]
+        lines += [""] + [f"- {r['id']} {r['strategy']} {r['semantics']}: {r['status']} {r['excuse']}"
+                         for r in errors]
     lines += ["", "## Plots", ""] + [f"![{p.stem}]({_relative(str(p), base)})" for p in plots]
     return "\n".join(lines) + "\n"

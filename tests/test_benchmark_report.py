@@ -1,0 +1,85 @@
+"""The benchmark report: coverage, speed-ups and agreement computed from result rows."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import pytest
+
+from guided_lfd.benchmark import RESULT_FIELDS, compare, size_bucket, speedups_by_size, summary_markdown
+
+
+def row(tid, semantics, strategy, status, size="", search=0.01, total=0.1, domain="d"):
+    out = {k: "" for k in RESULT_FIELDS}
+    out.update(id=tid, domain=domain, task="t", removed_action="a", semantics=semantics, strategy=strategy,
+               status=status, size=size, time_s=total, search_time_s=search)
+    return out
+
+
+ROWS = [
+    # t1: both solve, size 1, 100x on search (landmark below the 0.1 ms floor: counts as 0.1 ms)
+    row("t1", "literal", "landmark", "excuse-found", 1, search=0.00002, total=0.05),
+    row("t1", "literal", "baseline", "excuse-found", 1, search=0.01, total=0.06),
+    # t2: both solve, size 4, 20x
+    row("t2", "literal", "landmark", "excuse-found", 4, search=0.05, total=0.1),
+    row("t2", "literal", "baseline", "excuse-found", 4, search=1.0, total=1.05),
+    # t3: only the landmark search solves it (size 6)
+    row("t3", "literal", "landmark", "excuse-found", 6, search=2.0, total=2.1),
+    row("t3", "literal", "baseline", "timeout", total=61.0),
+    # t1 consistent: both prove that no excuse exists, 4x
+    row("t1", "consistent", "landmark", "no-excuse", search=0.001, total=0.05),
+    row("t1", "consistent", "baseline", "no-excuse", search=0.004, total=0.06),
+    # t2 consistent: sizes disagree (a bug either way), and the landmark run crashed on t3
+    row("t2", "consistent", "landmark", "excuse-found", 3, search=0.01),
+    row("t2", "consistent", "baseline", "excuse-found", 2, search=0.5),
+    row("t3", "consistent", "landmark", "error", search=""),
+    row("t3", "consistent", "baseline", "timeout", search=""),
+]
+
+
+def by_label(rows):
+    return {c.semantics: c for c in compare(rows)}
+
+
+def test_coverage_speedups_and_large_tasks_per_semantics():
+    lit = by_label(ROWS)["literal"]
+    assert (lit.tasks, lit.solved_default, lit.solved_baseline, lit.both) == (3, 3, 2, 2)
+    assert lit.median_speedup == pytest.approx((100 + 20) / 2)
+    assert lit.geomean_speedup == pytest.approx(math.sqrt(100 * 20))
+    assert (lit.large_default, lit.large_baseline) == (2, 1)
+    assert lit.size_mismatches == []
+
+
+def test_disagreeing_sizes_are_reported_and_both_pools_the_semantics():
+    comps = by_label(ROWS)
+    assert comps["consistent"].size_mismatches == ["t2: landmark excuse-found 3 vs baseline excuse-found 2"]
+    both = comps["both"]
+    assert both.tasks == 6 and both.both == 4
+    assert both.median_speedup == pytest.approx((20 + 50) / 2)  # ratios 100, 20, 4, 50
+
+
+def test_speedups_by_size_bucket():
+    assert [size_bucket(r) for r in ROWS[:6:2]] == ["1", "3-5", "6+"]
+    assert size_bucket(ROWS[6]) == "none"
+    table = speedups_by_size(ROWS)
+    assert table["literal"] == {"1": [pytest.approx(100)], "3-5": [pytest.approx(20)]}
+    assert table["consistent"] == {"none": [pytest.approx(4)], "3-5": [pytest.approx(50)]}
+
+
+def test_summary_shows_tables_disagreements_and_errors(tmp_path: Path):
+    text = summary_markdown(ROWS, 60, "python benchmarks/excuse_bench.py all --jobs 2", [tmp_path / "cactus.png"],
+                            tmp_path)
+    assert "| literal | 3 | 3 (100%) | 2 (67%) | 2 | 60x | 45x |" in text
+    assert "| literal | 100x (1) | - | 20x (1) | - | - |" in text
+    assert "- t2: landmark excuse-found 3 vs baseline excuse-found 2" in text
+    assert "Runs that returned an excuse: 7; runs that ended in an error or crash: 1." in text
+    assert "- t3 landmark consistent: error" in text
+    assert "![cactus](cactus.png)" in text
+
+
+def test_summary_of_a_clean_run_says_sizes_agree(tmp_path: Path):
+    clean = [r for r in ROWS if r["semantics"] == "literal"]
+    text = summary_markdown(clean, 60, "cmd", [], tmp_path)
+    assert "Every task both strategies solved has the same status and minimal size." in text
+    assert "runs that ended in an error or crash: 0." in text
