@@ -36,6 +36,8 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--results", type=Path, default=RESULTS)
     parser.add_argument("--time-limit", type=float, default=60.0)
     parser.add_argument("--jobs", type=int, default=2)
+    parser.add_argument("--memory-limit", type=int, default=8192,
+                        help="address-space cap per run in MiB (0 = none); a run past it ends as 'memout'")
     parser.add_argument("--strategies", default="landmark,baseline")
     parser.add_argument("--semantics", default="literal,consistent")
     parser.add_argument("--only", default="", help="comma-separated substrings of task ids to run")
@@ -69,7 +71,8 @@ def main(argv: list[str] | None = None) -> int:
                   f"{row['status']} size={row['size']} {row['time_s']}s", file=sys.stderr, flush=True)
 
         benchmark.run_suite(suite, args.strategies.split(","), args.semantics.split(","), args.time_limit,
-                            args.jobs, args.executor, args.scheduler, progress, skip=log.done)
+                            args.jobs, args.executor, args.scheduler, progress, skip=log.done,
+                            memory_limit_mb=args.memory_limit or None)
         rows = sorted(benchmark.read_results(log.path), key=lambda r: (r["id"], r["semantics"], r["strategy"]))
         benchmark.write_results(rows, results_csv)
         log.path.unlink()

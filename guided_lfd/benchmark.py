@@ -142,6 +142,7 @@ def run_one(task: BenchTask, strategy: str, semantics: str, time_limit: float) -
     row: dict[str, Any] = {"id": task.id, "domain": task.domain, "task": task.task,
                            "removed_action": task.removed_action, "semantics": semantics, "strategy": strategy}
     start = time.perf_counter()
+    out_of_memory = False
     try:
         robot, problem, complete = task.load()
         report = find_excuses(robot, problem, ExcuseOptions(
@@ -155,16 +156,38 @@ def run_one(task: BenchTask, strategy: str, semantics: str, time_limit: float) -
         if report.excuse is not None:
             row.update(size=report.excuse.size, cost=report.excuse.cost,
                        excuse=" ".join(str(c) for c in report.excuse.changes))
+    except MemoryError:
+        # Only a flag here: the traceback still holds the search's frontier,
+        # which is freed once the handler is left.
+        out_of_memory = True
     except Exception as exc:  # a benchmark row records failures instead of stopping the run
         row.update(status="error", time_s=round(time.perf_counter() - start, 4),
                    excuse=f"{type(exc).__name__}: {exc}"[:300])
         row["trace"] = traceback.format_exc(limit=3)
+    if out_of_memory:
+        row.update(status="memout", time_s=round(time.perf_counter() - start, 4))
     for key in RESULT_FIELDS:
         row.setdefault(key, "")
     return {k: row[k] for k in RESULT_FIELDS}
 
 
-def _child(conn, task, strategy, semantics, time_limit):
+def limit_memory(megabytes: int | None) -> None:
+    """Cap this process's address space, so that running out raises MemoryError.
+
+    Without a cap, a run whose frontier outgrows the machine (the baseline's
+    breadth-first search on sokoban task04 reached 24 GiB) is killed by the
+    kernel, and may take the run beside it down too.
+    """
+    if not megabytes:
+        return
+    import resource
+
+    limit = megabytes * 1024 * 1024
+    resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
+
+
+def _child(conn, task, strategy, semantics, time_limit, memory_limit_mb=None):
+    limit_memory(memory_limit_mb)
     conn.send(run_one(task, strategy, semantics, time_limit))
     conn.close()
 
@@ -202,8 +225,13 @@ def run_suite(
     scheduler: str | None = None,
     on_row: Callable[[dict[str, Any]], None] | None = None,
     skip: set[tuple[str, str, str]] | None = None,
+    memory_limit_mb: int | None = None,
 ) -> list[dict[str, Any]]:
-    """Run every (task, strategy, semantics) not in ``skip``; ``executor`` is ``local`` or ``dask``."""
+    """Run every (task, strategy, semantics) not in ``skip``; ``executor`` is ``local`` or ``dask``.
+
+    Locally, each run's address space is capped at ``memory_limit_mb`` (a run
+    that needs more ends as ``memout``); Dask workers keep their own limits.
+    """
     # Import the engine before forking: every run uses the code as it was at start.
     import guided_lfd.excuse.engine  # noqa: F401
     import guided_lfd.excuse.invariants  # noqa: F401
@@ -223,7 +251,8 @@ def run_suite(
         while pending and len(running) < jobs:
             item = pending.pop(0)
             parent, child = ctx.Pipe(duplex=False)
-            proc = ctx.Process(target=_child, args=(child, item[0], item[1], item[2], time_limit), daemon=True)
+            proc = ctx.Process(target=_child, args=(child, item[0], item[1], item[2], time_limit, memory_limit_mb),
+                               daemon=True)
             proc.start()
             child.close()
             running.append((proc, parent, time.monotonic(), item))
@@ -243,9 +272,11 @@ def run_suite(
                 continue
             if row is None:
                 row = {k: "" for k in RESULT_FIELDS}
+                over = time.monotonic() - started > hard
                 row.update(id=t.id, domain=t.domain, task=t.task, removed_action=t.removed_action, semantics=se,
-                           strategy=st, status="timeout" if time.monotonic() - started > hard else "crashed",
-                           time_s=round(time.monotonic() - started, 4))
+                           strategy=st, status="timeout" if over else "crashed",
+                           time_s=round(time.monotonic() - started, 4),
+                           excuse="" if over else f"process ended with exit code {proc.exitcode}")
             running.remove(entry)
             rows.append(row)
             if on_row:
