@@ -44,6 +44,10 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--executor", choices=["local", "dask"], default="local")
     parser.add_argument("--scheduler", default=None, help="Dask scheduler address (default: a local cluster)")
     args = parser.parse_args(argv)
+    if args.memory_limit < 0:
+        parser.error("--memory-limit must be >= 0 (MiB; 0 = no cap)")
+    if args.memory_limit and args.executor == "dask":
+        print("note: --memory-limit applies to local runs; Dask workers keep their own limits", file=sys.stderr)
 
     if args.command == "generate":
         suite = benchmark.generate_suite(args.ipc, ROOT / "data" / "domains", args.tasks.split(","),

@@ -175,15 +175,20 @@ def limit_memory(megabytes: int | None) -> None:
     """Cap this process's address space, so that running out raises MemoryError.
 
     Without a cap, a run whose frontier outgrows the machine (the baseline's
-    breadth-first search on sokoban task04 reached 24 GiB) is killed by the
-    kernel, and may take the run beside it down too.
+    breadth-first search on sokoban task04 filled a 24 GiB machine) is killed by the
+    kernel's OOM killer, and may take the run beside it down too.
     """
     if not megabytes:
         return
     import resource
 
+    # Only the soft limit, and never above a hard limit already in force
+    # (``ulimit -v``, a cluster job): raising it would fail every run.
+    _, hard = resource.getrlimit(resource.RLIMIT_AS)
     limit = megabytes * 1024 * 1024
-    resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
+    if hard != resource.RLIM_INFINITY:
+        limit = min(limit, hard)
+    resource.setrlimit(resource.RLIMIT_AS, (limit, hard))
 
 
 def _child(conn, task, strategy, semantics, time_limit, memory_limit_mb=None):
@@ -266,6 +271,11 @@ def run_suite(
                     row = None
                 proc.join()
             elif not proc.is_alive() or time.monotonic() - started > hard:
+                if parent.poll():  # the row arrived just before the process ended
+                    try:
+                        row = parent.recv()
+                    except EOFError:
+                        row = None
                 proc.kill()
                 proc.join()
             else:
@@ -543,11 +553,15 @@ def summary_markdown(rows: list[dict[str, Any]], time_limit: float, command: str
     found = sum(r["status"] == "excuse-found" for r in rows)
     lines += ["", "## Validation", "",
               f"Every run re-checks each excuse it returns with the independent checker "
-              f"(`guided_lfd.excuse.check`: the excuse state misses the goal, keeps the invariants under the "
+              f"(`guided_lfd.excuse.check`: the excuse state does not already satisfy the goal, keeps the invariants under the "
               f"consistent semantics, and the robot's plan from it validates); a failed check ends the run "
               f"as an error. Runs that returned an excuse: {found}; runs that ended in an error or crash: {len(errors)}."]
     if errors:
-        lines += [""] + [f"- {r['id']} {r['strategy']} {r['semantics']}: {r['status']} {r['excuse']}"
-                         for r in errors]
+        lines += [""] + [f"- {r['id']} {r['strategy']} {r['semantics']}: {r['status']}"
+                         + (f" ({r['excuse']})" if r["excuse"] else "") for r in errors]
+    memouts = [r for r in rows if r["status"] == "memout"]
+    if memouts:
+        lines += ["", f"Runs that exceeded the memory cap (memout, counted as unsolved): {len(memouts)}.", ""]
+        lines += [f"- {r['id']} {r['strategy']} {r['semantics']}" for r in memouts]
     lines += ["", "## Plots", ""] + [f"![{p.stem}]({_relative(str(p), base)})" for p in plots]
     return "\n".join(lines) + "\n"

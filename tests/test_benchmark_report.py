@@ -59,8 +59,12 @@ def test_disagreeing_sizes_are_reported_and_both_pools_the_semantics():
     assert both.median_speedup == pytest.approx((20 + 50) / 2)  # ratios 100, 20, 4, 50
 
 
+@pytest.mark.parametrize("size,bucket", [(1, "1"), (2, "2"), (3, "3-5"), (5, "3-5"), (6, "6+"), (11, "6+")])
+def test_size_buckets(size, bucket):
+    assert size_bucket(row("t", "literal", "landmark", "excuse-found", size)) == bucket
+
+
 def test_speedups_by_size_bucket():
-    assert [size_bucket(r) for r in ROWS[:6:2]] == ["1", "3-5", "6+"]
     assert size_bucket(ROWS[6]) == "none"
     table = speedups_by_size(ROWS)
     assert table["literal"] == {"1": [pytest.approx(100)], "3-5": [pytest.approx(20)]}
@@ -74,7 +78,7 @@ def test_summary_shows_tables_disagreements_and_errors(tmp_path: Path):
     assert "| literal | 100x (1) | - | 20x (1) | - | - |" in text
     assert "- t2: landmark excuse-found 3 vs baseline excuse-found 2" in text
     assert "Runs that returned an excuse: 7; runs that ended in an error or crash: 1." in text
-    assert "- t3 landmark consistent: error" in text
+    assert "- t3 landmark consistent: error\n" in text
     assert "![cactus](cactus.png)" in text
 
 
@@ -83,3 +87,10 @@ def test_summary_of_a_clean_run_says_sizes_agree(tmp_path: Path):
     text = summary_markdown(clean, 60, "cmd", [], tmp_path)
     assert "Every task both strategies solved has the same status and minimal size." in text
     assert "runs that ended in an error or crash: 0." in text
+
+
+def test_summary_lists_memouts(tmp_path: Path):
+    rows = ROWS[:4] + [row("t9", "literal", "baseline", "memout"), row("t9", "literal", "landmark", "no-excuse")]
+    text = summary_markdown(rows, 60, "cmd", [], tmp_path)
+    assert "Runs that exceeded the memory cap (memout, counted as unsolved): 1." in text
+    assert "- t9 baseline literal" in text

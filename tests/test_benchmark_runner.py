@@ -39,12 +39,43 @@ def test_a_run_that_fails_is_recorded_as_error(monkeypatch):
     assert row["excuse"] == "RuntimeError: internal check failed"
 
 
-def test_memory_limit_turns_a_huge_allocation_into_memory_error():
-    code = ("from guided_lfd.benchmark import limit_memory\n"
+def test_memory_limit_caps_the_soft_limit_and_a_huge_allocation_fails():
+    code = ("import resource\nfrom guided_lfd.benchmark import limit_memory\n"
             "limit_memory(2048)\n"
+            "print(resource.getrlimit(resource.RLIMIT_AS)[0] == 2048 * 2 ** 20)\n"
             "try:\n    bytearray(4 * 1024 ** 3)\nexcept MemoryError:\n    print('memout')\n")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT, timeout=60)
-    assert out.stdout.strip() == "memout", out.stderr
+    assert out.stdout.split() == ["True", "memout"], out.stderr
+
+
+def test_memory_limit_stays_below_a_hard_limit_already_in_force():
+    code = ("import resource\nfrom guided_lfd.benchmark import limit_memory\n"
+            "resource.setrlimit(resource.RLIMIT_AS, (3 * 2 ** 30, 3 * 2 ** 30))\n"
+            "limit_memory(8192)\n"
+            "print(resource.getrlimit(resource.RLIMIT_AS) == (3 * 2 ** 30, 3 * 2 ** 30))\n")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT, timeout=60)
+    assert out.stdout.split() == ["True"], out.stderr
+
+
+def test_a_process_that_dies_is_recorded_as_crashed_with_its_exit_code(monkeypatch):
+    import os
+
+    def dies(*args, **kwargs):
+        os._exit(3)
+
+    monkeypatch.setattr(benchmark, "run_one", dies)  # the forked child sees the patched module
+    rows = benchmark.run_suite([kitchen_task()], ["landmark"], ["literal"], 30.0, jobs=1)
+    assert [(r["status"], r["excuse"]) for r in rows] == [("crashed", "process ended with exit code 3")]
+
+
+def test_memout_during_invariant_synthesis_stays_a_memout(monkeypatch):
+    from fast_downward.translate import invariant_finder
+
+    def exhausted(*args, **kwargs):
+        raise MemoryError
+
+    monkeypatch.setattr(invariant_finder, "find_invariants", exhausted)
+    assert run_one(kitchen_task(), "landmark", "consistent", 5.0)["status"] == "memout"
 
 
 def test_run_suite_records_each_run_in_its_own_process(tmp_path: Path):

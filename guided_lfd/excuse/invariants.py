@@ -80,6 +80,8 @@ def lifted_invariants(domain: Domain, problem: Problem, max_time: float | None =
             )
             normalize.normalize(task)
             found = list(invariant_finder.find_invariants(task, None))
+    except MemoryError:
+        raise  # a resource limit, not a property of the domain
     except (Exception, SystemExit) as exc:  # the translator signals errors with SystemExit too
         detail = " ".join(str(exc).split()) or type(exc).__name__
         raise MismatchError(
