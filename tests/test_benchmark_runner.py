@@ -39,13 +39,19 @@ def test_a_run_that_fails_is_recorded_as_error(monkeypatch):
     assert row["excuse"] == "RuntimeError: internal check failed"
 
 
+def printed_by(code: str) -> list[str]:
+    """Words a fresh interpreter prints running ``code`` (limits must not leak into the test process)."""
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT, timeout=60)
+    assert out.returncode == 0, out.stderr
+    return out.stdout.split()
+
+
 def test_memory_limit_caps_the_soft_limit_and_a_huge_allocation_fails():
     code = ("import resource\nfrom guided_lfd.benchmark import limit_memory\n"
             "limit_memory(2048)\n"
             "print(resource.getrlimit(resource.RLIMIT_AS)[0] == 2048 * 2 ** 20)\n"
             "try:\n    bytearray(4 * 1024 ** 3)\nexcept MemoryError:\n    print('memout')\n")
-    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT, timeout=60)
-    assert out.stdout.split() == ["True", "memout"], out.stderr
+    assert printed_by(code) == ["True", "memout"]
 
 
 def test_memory_limit_stays_below_a_hard_limit_already_in_force():
@@ -53,8 +59,7 @@ def test_memory_limit_stays_below_a_hard_limit_already_in_force():
             "resource.setrlimit(resource.RLIMIT_AS, (3 * 2 ** 30, 3 * 2 ** 30))\n"
             "limit_memory(8192)\n"
             "print(resource.getrlimit(resource.RLIMIT_AS) == (3 * 2 ** 30, 3 * 2 ** 30))\n")
-    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT, timeout=60)
-    assert out.stdout.split() == ["True"], out.stderr
+    assert printed_by(code) == ["True"]
 
 
 def test_a_process_that_dies_is_recorded_as_crashed_with_its_exit_code(monkeypatch):
