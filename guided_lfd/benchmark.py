@@ -191,6 +191,14 @@ def limit_memory(megabytes: int | None) -> None:
     resource.setrlimit(resource.RLIMIT_AS, (limit, hard))
 
 
+def _receive(conn) -> dict[str, Any] | None:
+    """The row a run sent, or None if its process closed the pipe without one."""
+    try:
+        return conn.recv()
+    except EOFError:
+        return None
+
+
 def _child(conn, task, strategy, semantics, time_limit, memory_limit_mb=None):
     limit_memory(memory_limit_mb)
     conn.send(run_one(task, strategy, semantics, time_limit))
@@ -263,19 +271,12 @@ def run_suite(
             running.append((proc, parent, time.monotonic(), item))
         for entry in list(running):
             proc, parent, started, (t, st, se) = entry
-            row = None
             if parent.poll(0.05):
-                try:
-                    row = parent.recv()
-                except EOFError:
-                    row = None
+                row = _receive(parent)
                 proc.join()
             elif not proc.is_alive() or time.monotonic() - started > hard:
-                if parent.poll():  # the row arrived just before the process ended
-                    try:
-                        row = parent.recv()
-                    except EOFError:
-                        row = None
+                # The row may have arrived just before the process ended.
+                row = _receive(parent) if parent.poll() else None
                 proc.kill()
                 proc.join()
             else:
@@ -362,6 +363,16 @@ def compare(rows: list[dict[str, Any]], default: str = "landmark", baseline: str
     return out
 
 
+def search_speedup(default_row: dict[str, Any], baseline_row: dict[str, Any]) -> float | None:
+    """Baseline search time / default search time (None when a run has no search time)."""
+    d, b = default_row.get("search_time_s"), baseline_row.get("search_time_s")
+    if d in ("", None) or b in ("", None):
+        return None
+    # Search times are recorded to the microsecond; below SEARCH_TIME_FLOOR
+    # scheduling noise dominates, so shorter phases count as the floor.
+    return max(float(b), SEARCH_TIME_FLOOR) / max(float(d), SEARCH_TIME_FLOOR)
+
+
 def _compare(rows: list[dict[str, Any]], label: str, default: str, baseline: str) -> Comparison:
     """Coverage, speed-up and size agreement over ``rows`` (``label``: a semantics, or "both")."""
     by_task: dict[str, dict[str, dict]] = {}
@@ -386,11 +397,9 @@ def _compare(rows: list[dict[str, Any]], label: str, default: str, baseline: str
             if (d["status"], str(d["size"])) != (b["status"], str(b["size"])):
                 mismatches.append(f"{tid}: {default} {d['status']} {d['size']} vs {baseline} {b['status']} {b['size']}")
             total_ratios.append(float(b["time_s"]) / max(float(d["time_s"]), 1e-4))
-            if d.get("search_time_s") not in ("", None) and b.get("search_time_s") not in ("", None):
-                # Search times are recorded to the microsecond; below SEARCH_TIME_FLOOR
-                # scheduling noise dominates, so shorter phases count as the floor.
-                ratios.append(max(float(b["search_time_s"]), SEARCH_TIME_FLOOR)
-                              / max(float(d["search_time_s"]), SEARCH_TIME_FLOOR))
+            ratio = search_speedup(d, b)
+            if ratio is not None:
+                ratios.append(ratio)
     return Comparison(
         label, len(by_task), solved_d, solved_b, len(ratios),
         statistics.median(ratios) if ratios else math.nan,
@@ -423,11 +432,9 @@ def speedups_by_size(rows: list[dict[str, Any]], default: str = "landmark",
         d, b = pair.get(default), pair.get(baseline)
         if d is None or b is None or d["status"] not in SOLVED or b["status"] not in SOLVED:
             continue
-        if d.get("search_time_s") in ("", None) or b.get("search_time_s") in ("", None):
-            continue
-        ratio = (max(float(b["search_time_s"]), SEARCH_TIME_FLOOR)
-                 / max(float(d["search_time_s"]), SEARCH_TIME_FLOOR))
-        out.setdefault(sem, {}).setdefault(size_bucket(d), []).append(ratio)
+        ratio = search_speedup(d, b)
+        if ratio is not None:
+            out.setdefault(sem, {}).setdefault(size_bucket(d), []).append(ratio)
     return out
 
 

@@ -89,16 +89,7 @@ class ChangeSpace:
 
     def consistency_bound(self, state: int) -> int:
         """A lower bound on the weight still needed to repair the violated groups."""
-        # Called for every child the search generates: MutexGroup.need inlined.
-        worst = 0
-        for g in self.groups:
-            count = (state & g.mask).bit_count()
-            if count > 1:
-                if count - 1 > worst:
-                    worst = count - 1
-            elif not count and g.exactly_one and not worst:
-                worst = 1
-        return worst * self.min_weight
+        return max((g.need(state) for g in self.groups), default=0) * self.min_weight
 
 
 def relevance(task: GroundTask, actions: list[GroundAction] | None = None) -> tuple[int, list[GroundAction], int]:
