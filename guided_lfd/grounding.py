@@ -10,6 +10,7 @@ pruned by reachability from the original initial state.
 
 from __future__ import annotations
 
+import functools
 import time
 from dataclasses import dataclass, field
 from itertools import product
@@ -35,6 +36,29 @@ class GroundAction:
     pre_neg: int
     add: int
     delete: int
+
+    # Index lists of the masks, for code that walks an action's atoms (the
+    # relaxed tasks, relevance, LM-cut): filled in by the grounder, computed
+    # on first use otherwise.  Walking a wide bit mask costs far more.
+    @functools.cached_property
+    def pre_pos_ids(self) -> tuple[int, ...]:
+        """Indices of the positive preconditions."""
+        return tuple(bits(self.pre_pos))
+
+    @functools.cached_property
+    def pre_neg_ids(self) -> tuple[int, ...]:
+        """Indices of the negative preconditions."""
+        return tuple(bits(self.pre_neg))
+
+    @functools.cached_property
+    def add_ids(self) -> tuple[int, ...]:
+        """Indices of the add effects."""
+        return tuple(bits(self.add))
+
+    @functools.cached_property
+    def delete_ids(self) -> tuple[int, ...]:
+        """Indices of the delete effects."""
+        return tuple(bits(self.delete))
 
     def applicable(self, state: int) -> bool:
         """Whether the action's preconditions hold in ``state``."""
@@ -70,6 +94,18 @@ def bits(mask: int) -> Iterable[int]:
         low = mask & -mask
         yield low.bit_length() - 1
         mask ^= low
+
+
+def mask_of(indices: Iterable[int]) -> int:
+    """The bit mask of a collection of atom indices (one big-integer build)."""
+    indices = list(indices)
+    if not indices:
+        return 0
+    top = max(indices)
+    raw = bytearray(top // 8 + 1)
+    for i in indices:
+        raw[i >> 3] |= 1 << (i & 7)
+    return int.from_bytes(raw, "little")
 
 
 def ground_atoms(domain: Domain, problem: Problem, skip: set[str] | None = None) -> list[Atom]:
@@ -131,8 +167,9 @@ def ground(
     schemas = domain.actions if actions is None else actions
     by_type = objects_by_type(domain, problem)
     ground_actions: list[GroundAction] = []
+    key_index = {(a.predicate, *a.args): i for a, i in index.items()}
     for schema in schemas:
-        for k, act in enumerate(_ground_schema(schema, by_type, index, problem.init, static)):
+        for k, act in enumerate(_ground_schema(schema, by_type, index, problem.init, static, key_index)):
             ground_actions.append(act)
             if not k & 1023:
                 if len(ground_actions) > MAX_GROUND_ACTIONS:
@@ -157,43 +194,79 @@ def ground(
     return GroundTask(domain, problem, atoms, index, init, goal_pos, goal_neg, ground_actions, frozenset(static))
 
 
+def _key_function(atom: Atom, params: list[str]):
+    """A function from a binding's values (in parameter order) to ``atom``'s index key.
+
+    Keys are plain tuples ``(predicate, arg, ...)``: hashing a tuple is far
+    cheaper than hashing an :class:`Atom`, and grounding looks up every
+    literal of every ground action.
+    """
+    position = {v: k for k, v in enumerate(params)}
+    pred = atom.predicate
+    spec = [(True, position[a]) if a in position else (False, a) for a in atom.args]
+    if all(is_var for is_var, _ in spec):
+        where = [k for _, k in spec]
+        if not where:
+            return lambda values: (pred,)
+        if len(where) == 1:
+            j = where[0]
+            return lambda values: (pred, values[j])
+        if len(where) == 2:
+            j, k = where
+            return lambda values: (pred, values[j], values[k])
+        return lambda values: (pred, *(values[k] for k in where))
+    return lambda values: (pred, *(values[x] if is_var else x for is_var, x in spec))
+
+
 def _ground_schema(
     schema: ActionSchema,
     by_type: dict[str, list[str]],
     index: dict[Atom, int],
     init: frozenset[Atom],
     static: set[str],
+    key_index: dict[tuple[str, ...], int] | None = None,
 ) -> Iterable[GroundAction]:
     params = [v for v, _ in schema.params]
+    if key_index is None:
+        key_index = {(a.predicate, *a.args): i for a, i in index.items()}
+    pre = [(_key_function(lit.atom, params), lit.positive) for lit in schema.precondition
+           if lit.atom.predicate != EQUALITY and lit.atom.predicate not in static]
+    adds = [_key_function(a, params) for a in schema.add]
+    dels = [_key_function(a, params) for a in schema.delete]
+    lookup = key_index.get
     for b in _bindings(schema, by_type, init, static):
-        pre_pos = pre_neg = add = delete = 0
+        values = tuple(b[v] for v in params)
+        pos_ids: list[int] = []
+        neg_ids: list[int] = []
         ok = True
-        for lit in schema.precondition:
-            if lit.atom.predicate == EQUALITY or lit.atom.predicate in static:
-                continue
-            atom = lit.atom.substitute(b)
-            idx = index.get(atom)
+        for key, positive in pre:
+            idx = lookup(key(values))
             if idx is None:
                 # A precondition on an atom of the wrong type can never hold.
-                ok = ok and not lit.positive
+                ok = ok and not positive
                 continue
-            if lit.positive:
-                pre_pos |= 1 << idx
-            else:
-                pre_neg |= 1 << idx
-        if not ok or pre_pos & pre_neg:
+            (pos_ids if positive else neg_ids).append(idx)
+        if not ok:
             continue
-        for atom in schema.add:
-            idx = index.get(atom.substitute(b))
-            if idx is not None:
-                add |= 1 << idx
-        for atom in schema.delete:
-            idx = index.get(atom.substitute(b))
-            if idx is not None:
-                delete |= 1 << idx
-        args = tuple(b[v] for v in params)
-        name = "(" + " ".join((schema.name, *args)) + ")"
-        yield GroundAction(name, schema.name, args, pre_pos, pre_neg, add, delete)
+        pre_pos = pre_neg = add = delete = 0
+        for idx in pos_ids:
+            pre_pos |= 1 << idx
+        for idx in neg_ids:
+            pre_neg |= 1 << idx
+        if pre_pos & pre_neg:
+            continue
+        add_ids = [i for i in (lookup(k(values)) for k in adds) if i is not None]
+        del_ids = [i for i in (lookup(k(values)) for k in dels) if i is not None]
+        for idx in add_ids:
+            add |= 1 << idx
+        for idx in del_ids:
+            delete |= 1 << idx
+        name = "(" + " ".join((schema.name, *values)) + ")"
+        act = GroundAction(name, schema.name, values, pre_pos, pre_neg, add, delete)
+        # The index lists, sorted and without repeats, as bits() would give them.
+        act.__dict__.update(pre_pos_ids=tuple(sorted(set(pos_ids))), pre_neg_ids=tuple(sorted(set(neg_ids))),
+                            add_ids=tuple(sorted(set(add_ids))), delete_ids=tuple(sorted(set(del_ids))))
+        yield act
 
 
 def _bindings(

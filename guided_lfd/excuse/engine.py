@@ -22,6 +22,7 @@ from guided_lfd.excuse.space import (
 )
 from guided_lfd.excuse.strategies import DEFAULT_STRATEGY, STRATEGIES, Progress, SearchLimits
 from guided_lfd.grounding import GroundAction, GroundTask, bits, ground
+from guided_lfd.optimal import certified_optimal, shorten_plan
 from guided_lfd.pddl.model import Atom, Domain, Literal, Problem, pretty_atom
 from guided_lfd.validate import PlanStep
 
@@ -117,9 +118,18 @@ def _changes_of(task: GroundTask, changes: int) -> list[Change]:
 
 def _robot_plan(task: GroundTask, space: ChangeSpace, state: int, fallback: list[GroundAction],
                 optimal: bool, deadline: float | None) -> tuple[list[GroundAction], bool]:
-    """An optimal robot plan from ``state`` if it can be had in time, else ``fallback``."""
+    """An optimal robot plan from ``state`` if it can be had in time, else ``fallback``.
+
+    The search's witness is shortened first; when its length meets LM-cut's
+    lower bound it is optimal without a planner run (household tasks, most
+    small ones).  Otherwise A* + LM-cut plans from scratch.
+    """
+    task_goal = (task.goal_pos, task.goal_neg)
+    fallback = shorten_plan(fallback, state, *task_goal)
     if not optimal:
         return fallback, False
+    if certified_optimal(fallback, state, space.relevant_actions, *task_goal):
+        return fallback, True
     from guided_lfd.planning import find_plan
 
     budget = 10.0 if deadline is None else min(10.0, deadline - time.monotonic())

@@ -100,11 +100,16 @@ def mutex_groups(source: Domain, task: GroundTask, deadline: float | None = None
     else:
         # Conservation is judged with the actions the invariants come from.
         check_task = ground(source, _problem_for(source, task.problem))
+    # Atoms by predicate: each invariant part only looks at its own predicate's atoms.
+    atoms_of: dict[str, list[int]] = {}
+    for i, atom in enumerate(task.atoms):
+        atoms_of.setdefault(atom.predicate, []).append(i)
     for inv in invariants:
         by_key: dict[tuple, int] = {}
         for part in inv.parts:
-            for i, atom in enumerate(task.atoms):
-                if atom.predicate != part.predicate or len(atom.args) != len(part.args):
+            for i in atoms_of.get(part.predicate, ()):
+                atom = task.atoms[i]
+                if len(atom.args) != len(part.args):
                     continue
                 key = tuple(
                     atom.args[pos]
@@ -157,8 +162,18 @@ def _conserved(check_task: GroundTask, task: GroundTask, masks: list[int]) -> bo
                     m |= 1 << j
             remap.append(m)
         masks = remap
+    # Each action is checked against the groups its effects touch only
+    # (linear in the ground task, not actions x groups).
+    groups_of: dict[int, list[int]] = {}
+    for k, mask in enumerate(masks):
+        for i in bits(mask):
+            groups_of.setdefault(i, []).append(k)
     for act in check_task.actions:
-        for mask in masks:
+        touched: set[int] = set()
+        for i in (*act.add_ids, *act.delete_ids):
+            touched.update(groups_of.get(i, ()))
+        for k in touched:
+            mask = masks[k]
             added = act.add & mask & ~act.pre_pos
             removed = act.delete & mask & ~act.add
             if not added and not removed:

@@ -94,9 +94,10 @@ class RelaxedExcuseTask:
         pre: list[list[int]] = []
         add: list[list[int]] = []
         for act in space.relevant_actions:
-            pre.append([pos_id[i] for i in bits(act.pre_pos)] + [neg_id[i] for i in bits(act.pre_neg)])
-            e = [pos_id[i] for i in bits(act.add & space.relevant_atoms)]
-            e += [neg_id[i] for i in bits(act.delete & ~act.add & space.negation_needed)]
+            pre.append([pos_id[i] for i in act.pre_pos_ids] + [neg_id[i] for i in act.pre_neg_ids])
+            e = [pos_id[i] for i in act.add_ids if i in pos_id]
+            adds = act.add_ids
+            e += [neg_id[i] for i in act.delete_ids if i in neg_id and i not in adds]
             add.append(e)
         n_actions = len(pre)
         self.n_actions = n_actions

@@ -53,16 +53,20 @@ class ReachabilityOracle:
         mask = self.mask
         self._unconditional = [(a, 0, a.pre_neg, a.delete, a.add & mask) for a in self.actions if not a.pre_pos]
         # Index each action under its precondition that is most likely false:
-        # an atom of the predicate with the most ground atoms (``(lifting h c)``
-        # rather than ``(available h)``), so few actions are tried per state.
+        # one false in the initial state (states met are I with a few changes
+        # and what the robot does from there: ``(in_hand ?i)`` rather than
+        # ``(clear ?c)``), then an atom of the predicate with the most ground
+        # atoms (``(lifting h c)`` rather than ``(available h)``), so few
+        # actions are tried per state.
         per_predicate: dict[str, int] = {}
         for atom in task.atoms:
             per_predicate[atom.predicate] = per_predicate.get(atom.predicate, 0) + 1
         rarity = [per_predicate[a.predicate] for a in task.atoms]
+        init = task.init
         self._by_first_pre: dict[int, list[tuple]] = {}
         for act in self.actions:
             if act.pre_pos:
-                key = max(bits(act.pre_pos), key=lambda i: (rarity[i], i))
+                key = max(act.pre_pos_ids, key=lambda i: (not (init >> i) & 1, rarity[i], i))
                 self._by_first_pre.setdefault(key, []).append((act, act.pre_pos, act.pre_neg, act.delete, act.add & mask))
         self._key_mask = 0
         for key in self._by_first_pre:

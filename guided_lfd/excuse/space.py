@@ -19,7 +19,7 @@ from dataclasses import dataclass, field
 from enum import Enum
 
 from guided_lfd.errors import OptionError
-from guided_lfd.grounding import GroundAction, GroundTask, bits
+from guided_lfd.grounding import GroundAction, GroundTask, bits, mask_of
 from guided_lfd.pddl.model import Atom, Domain
 
 
@@ -103,25 +103,33 @@ def relevance(task: GroundTask, actions: list[GroundAction] | None = None) -> tu
     actions = task.actions if actions is None else actions
     by_atom: dict[int, list[int]] = {}
     for ai, act in enumerate(actions):
-        for i in bits(act.add | act.delete):
+        for i in act.add_ids:
             by_atom.setdefault(i, []).append(ai)
-    relevant = task.goal_pos | task.goal_neg
+        for i in act.delete_ids:
+            by_atom.setdefault(i, []).append(ai)
+    # Sets of indices while growing (one big-integer update per atom would
+    # cost as much as the atom index is wide), one mask at the end.
+    goal = list(bits(task.goal_pos | task.goal_neg))
+    seen = set(goal)
     chosen: set[int] = set()
-    frontier = list(bits(relevant))
+    frontier = goal
     while frontier:
         atom = frontier.pop()
         for ai in by_atom.get(atom, ()):
             if ai in chosen:
                 continue
             chosen.add(ai)
-            new = (actions[ai].pre_pos | actions[ai].pre_neg) & ~relevant
-            relevant |= new
-            frontier.extend(bits(new))
+            for i in (*actions[ai].pre_pos_ids, *actions[ai].pre_neg_ids):
+                if i not in seen:
+                    seen.add(i)
+                    frontier.append(i)
+    relevant = mask_of(seen)
     rel_actions = [actions[ai] for ai in sorted(chosen)]
-    negation = task.goal_neg
+    negation = set(bits(task.goal_neg))
     for act in rel_actions:
-        negation |= act.pre_neg
-    return relevant, rel_actions, negation
+        negation.update(act.pre_neg_ids)
+    return relevant, rel_actions, mask_of(negation)
+
 
 
 _COST = re.compile(r"^\s*(\(.*\)|[^=\s]+)\s*=\s*(\S+)\s*$")
