@@ -45,6 +45,18 @@ TimeLimitOption = Annotated[
     float | None, typer.Option("--time-limit", help="Give up after this many seconds (exit 20).")
 ]
 
+#: ``time.monotonic()`` when the console script started (set by
+#: :func:`cli.main.run`); None when the commands run in-process (tests).
+run_started: float | None = None
+
+
+def started_at() -> float:
+    """When this run's clock started: the console script's start, else now."""
+    import time
+
+    return run_started if run_started is not None else time.monotonic()
+
+
 #: Longest time limit accepted (about 11 days); beyond it timers overflow.
 MAX_TIME_LIMIT = 1e6
 

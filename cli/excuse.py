@@ -8,9 +8,11 @@ import typer
 from rich.progress import Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
 
 from cli.common import (
-    JsonOption, OutputOption, QuietOption, TimeLimitOption, check_inputs, check_time_limit, command, emit, ui,
+    JsonOption, OutputOption, QuietOption, TimeLimitOption, check_inputs, check_time_limit, command, emit,
+    started_at, ui,
 )
 from guided_lfd import errors
+from guided_lfd.deadline import deadline_after, watchdog
 from guided_lfd.excuse.engine import Excuse, ExcuseOptions, ExcuseReport, describe_change, find_excuses
 from guided_lfd.excuse.space import Semantics
 from guided_lfd.excuse.strategies import DEFAULT_STRATEGY, STRATEGIES
@@ -79,13 +81,16 @@ def excuse(
     check_writable(output)
     if excuse_problem:
         check_writable(excuse_problem)
-    dom, prob = parse_task(domain, problem)
-    options = ExcuseOptions(
-        semantics=semantics, strategy=strategy, fixed=[f.lower() for f in fixed or []], costs=list(cost or []),
-        all_minimal=all_minimal, max_size=max_size, time_limit=time_limit,
-        invariants_from=parse_domain(invariants_from) if invariants_from else None,
-        fixed_from=parse_domain(fixed_from) if fixed_from else None,
-    )
+    # The time limit bounds the whole run: reading the files counts too.
+    started = started_at()
+    with watchdog(deadline_after(time_limit, started), "reading the input"):
+        dom, prob = parse_task(domain, problem)
+        options = ExcuseOptions(
+            semantics=semantics, strategy=strategy, fixed=[f.lower() for f in fixed or []], costs=list(cost or []),
+            all_minimal=all_minimal, max_size=max_size, time_limit=time_limit,
+            invariants_from=parse_domain(invariants_from) if invariants_from else None,
+            fixed_from=parse_domain(fixed_from) if fixed_from else None, started=started,
+        )
     report = _run(dom, prob, options)
     spellings = {**prob.spellings, **dom.spellings}  # predicates as the domain writes them
     as_json = json_out or output.lower().endswith(".json")
@@ -94,7 +99,9 @@ def excuse(
     else:
         text = _text(report, prob, spellings)
     code = EXIT_BY_STATUS[report.status]
-    emit(output, text, success=code == errors.EXIT_OK)
+    # A timed-out run still writes its JSON document (status "timeout"): it
+    # is a result, and says how far the run got.
+    emit(output, text, success=code == errors.EXIT_OK or (as_json and report.status == "timeout"))
     if excuse_problem and report.excuse is not None:
         header = (f"Excuse state of {problem} for {domain} ({report.semantics.value} semantics):\n"
                   + "\n".join(f"  {c}" for c in report.excuse.changes))

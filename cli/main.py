@@ -71,4 +71,8 @@ app.command("validate")(validate)
 
 def run() -> None:
     """Console-script entry point."""
+    import cli
+    from cli import common
+
+    common.run_started = cli.PROCESS_STARTED  # --time-limit counts start-up too
     app()

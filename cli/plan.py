@@ -7,8 +7,10 @@ from typing import Annotated
 import typer
 
 from cli.common import (
-    JsonOption, OutputOption, QuietOption, TimeLimitOption, check_inputs, check_time_limit, command, emit, ui,
+    JsonOption, OutputOption, QuietOption, TimeLimitOption, check_inputs, check_time_limit, command, emit,
+    started_at, ui,
 )
+from guided_lfd.deadline import deadline_after, remaining, watchdog
 from guided_lfd.errors import EXIT_UNSOLVABLE, OptionError
 from guided_lfd.io import check_writable, json_document, write_text
 from guided_lfd.pddl.reader import parse_task
@@ -34,8 +36,11 @@ def plan(
     time_limit = check_time_limit(time_limit)
     check_inputs(domain, problem)
     check_writable(output)
-    dom, prob = parse_task(domain, problem)
-    task, result = plan_task(dom, prob, search, time_limit)
+    # The time limit bounds the whole run (reading and grounding too).
+    deadline = deadline_after(time_limit, started_at())
+    with watchdog(deadline, "plan"):
+        dom, prob = parse_task(domain, problem)
+        task, result = plan_task(dom, prob, search, remaining(deadline))
     if result.plan is None:
         if json_out:
             emit(output, json_document("plan", {

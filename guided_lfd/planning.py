@@ -8,8 +8,6 @@ compiled into complement atoms ``(not-<atom>)`` kept up to date by every action.
 from __future__ import annotations
 
 import math
-import signal
-import threading
 import time
 from contextlib import contextmanager
 from dataclasses import dataclass
@@ -21,7 +19,7 @@ from pyperplan.heuristics.relaxation import hFFHeuristic, hMaxHeuristic
 from pyperplan.search import astar_search, breadth_first_search, greedy_best_first_search
 from pyperplan.task import Operator, Task
 
-from guided_lfd.errors import SearchTimeout
+from guided_lfd.deadline import deadline_after, watchdog
 from guided_lfd.grounding import GroundAction, GroundTask, bits
 
 #: Registered pyperplan configurations: name -> (search, heuristic or None, optimal?).
@@ -38,24 +36,15 @@ DEFAULT_SEARCH = "astar-lmcut"
 def time_limit(seconds: float | None, what: str = "search") -> Iterator[None]:
     """Raise :class:`SearchTimeout` if the block runs longer than ``seconds``.
 
-    Uses ``SIGALRM`` (pyperplan's searches cannot be interrupted otherwise),
-    so it only applies in the main thread; elsewhere the block runs unlimited.
+    Pyperplan's searches cannot be interrupted otherwise; this is a
+    :func:`guided_lfd.deadline.watchdog` (main thread only, nests with the
+    whole run's watchdog).
     """
-    if (not seconds or not math.isfinite(seconds) or seconds > 1e6
-            or threading.current_thread() is not threading.main_thread() or not hasattr(signal, "SIGALRM")):
+    if seconds is None or not math.isfinite(seconds) or seconds > 1e6:
         yield
         return
-
-    def on_alarm(signum, frame):
-        raise SearchTimeout(f"{what} exceeded the time limit of {seconds:g} s")
-
-    previous = signal.signal(signal.SIGALRM, on_alarm)
-    signal.setitimer(signal.ITIMER_REAL, seconds)
-    try:
+    with watchdog(deadline_after(seconds), f"{what}", grace=0.0):
         yield
-    finally:
-        signal.setitimer(signal.ITIMER_REAL, 0)
-        signal.signal(signal.SIGALRM, previous)
 
 
 def to_pyperplan(task: GroundTask, init: int | None = None, actions: list[GroundAction] | None = None):

@@ -13,6 +13,8 @@ import time
 from dataclasses import dataclass, field
 from typing import Any
 
+from guided_lfd.deadline import check as check_deadline
+from guided_lfd.deadline import deadline_after, watchdog
 from guided_lfd.errors import SearchTimeout
 from guided_lfd.excuse.check import Change, check_excuse, excuse_state
 from guided_lfd.excuse.lmcut import RelaxedExcuseTask
@@ -41,6 +43,9 @@ class ExcuseOptions:
     invariants_from: Domain | None = None
     fixed_from: Domain | None = None
     optimal_plans: bool = True
+    #: ``time.monotonic()`` when the run started (the time limit counts from
+    #: it: a command line starts it before reading its files); None = now.
+    started: float | None = None
 
     def fixed_predicates(self, domain: Domain) -> list[str]:
         """``fixed`` plus the predicates no action of ``fixed_from`` changes (that ``domain`` has)."""
@@ -126,10 +131,14 @@ def _robot_plan(task: GroundTask, space: ChangeSpace, state: int, fallback: list
     """
     task_goal = (task.goal_pos, task.goal_neg)
     fallback = shorten_plan(fallback, state, *task_goal)
-    if not optimal:
+    if not optimal or (deadline is not None and time.monotonic() >= deadline):
         return fallback, False
-    if certified_optimal(fallback, state, space.relevant_actions, *task_goal):
-        return fallback, True
+    try:
+        with watchdog(deadline, "optimality check", grace=0.0):
+            if certified_optimal(fallback, state, space.relevant_actions, *task_goal):
+                return fallback, True
+    except SearchTimeout:
+        return fallback, False
     from guided_lfd.planning import find_plan
 
     budget = 10.0 if deadline is None else min(10.0, deadline - time.monotonic())
@@ -151,85 +160,143 @@ def find_excuses(
     options: ExcuseOptions | None = None,
     progress: Progress | None = None,
 ) -> ExcuseReport:
-    """Find minimal excuses for the robot's task ``(domain, problem)``."""
+    """Find minimal excuses for the robot's task ``(domain, problem)``.
+
+    ``options.time_limit`` bounds the whole call (counted from
+    ``options.started`` when the caller's clock started earlier, e.g. before
+    parsing): the searches stop cooperatively at the deadline, and a watchdog
+    ends any other phase shortly after it.  A run that times out returns a
+    ``timeout`` report holding the excuses completed by then.
+    """
     options = options or ExcuseOptions()
     if options.strategy not in STRATEGIES:
         from guided_lfd.errors import OptionError
 
         raise OptionError(f"unknown strategy '{options.strategy}' (expected one of: {', '.join(STRATEGIES)})")
-    start = time.monotonic()
-    deadline = None if options.time_limit is None else start + options.time_limit
+    start = time.monotonic() if options.started is None else options.started
+    deadline = deadline_after(options.time_limit, start)
     check_option_names(domain, options)
-    fixed = options.fixed_predicates(domain)
+    run = _Run(domain, problem, options, progress, start, deadline)
     try:
-        task = ground(domain, problem, fixed=fixed, deadline=deadline)
+        with watchdog(deadline, "excuse search"):
+            return run.execute()
     except SearchTimeout:
-        return ExcuseReport("timeout", [], options.semantics, options.strategy,
-                            {"time_s": round(time.monotonic() - start, 4), "phase": "grounding"}, [], [])
-    groups: list[MutexGroup] = []
-    if options.semantics is Semantics.CONSISTENT and not task.satisfies_goal(task.init):
-        from guided_lfd.excuse.invariants import mutex_groups
+        return run.timed_out()
 
-        groups = mutex_groups(options.invariants_from or domain, task, deadline)
-    space = build_space(task, options.semantics, fixed, options.costs, groups)
-    stats: dict[str, Any] = {
-        "ground_atoms": len(task.atoms),
-        "ground_actions": len(task.actions),
-        "changeable_atoms": space.changeable.bit_count(),
-        "relevant_atoms": space.relevant_atoms.bit_count(),
-        "relevant_actions": len(space.relevant_actions),
-        "invariant_groups": len(space.groups),
-        "fixed_predicates": fixed,
-    }
-    unachievable = unachievable_goals(task)
 
-    def finish(status: str, excuses: list[Excuse], robot_plan: list[str] | None = None, **more: Any) -> ExcuseReport:
-        stats.update(more)
-        stats["time_s"] = round(time.monotonic() - start, 4)
-        return ExcuseReport(status, excuses, options.semantics, options.strategy, stats, unachievable,
-                            space.groups, robot_plan, _group_atoms(space))
+class _Run:
+    """One call of :func:`find_excuses`, phase by phase; keeps what it found for a timeout report."""
 
-    # Already solvable: no excuse needed.  The compiled relaxed task and the
-    # oracle are built once here and handed to the search, which reuses the
-    # oracle's memory of dead states.
-    relaxed = RelaxedExcuseTask(space)
-    oracle = ReachabilityOracle(space, deadline)
-    plan0 = None
-    if relaxed.reaches_goal_unchanged(task.init):  # else unsolvable without a search
-        try:
-            plan0 = oracle.solve(task.init)
-        except SearchTimeout:
-            return finish("timeout", [], candidates=0, planner_calls=1)
-    if plan0 is not None:
-        plan, _ = _robot_plan(task, space, task.init, plan0, options.optimal_plans, deadline)
-        _verify(domain, problem, [], plan, space)
-        return finish("already-solvable", [], [a.name for a in plan], candidates=0, planner_calls=1)
+    def __init__(self, domain: Domain, problem: Problem, options: ExcuseOptions, progress: Progress | None,
+                 start: float, deadline: float | None) -> None:
+        self.domain, self.problem, self.options = domain, problem, options
+        self.progress = progress
+        self.start, self.deadline = start, deadline
+        self.phase = "grounding"
+        self.stats: dict[str, Any] = {}
+        self.excuses: list[Excuse] = []
+        self.space: ChangeSpace | None = None
+        self.unachievable: list[Literal] = []
 
-    limits = SearchLimits(all_minimal=options.all_minimal, max_size=options.max_size, deadline=deadline)
-    search_start = time.monotonic()
-    stats["setup_time_s"] = round(search_start - start, 6)
-    outcome = STRATEGIES[options.strategy].search(space, limits, progress, oracle=oracle, relaxed=relaxed)
-    stats["search_time_s"] = round(time.monotonic() - search_start, 6)
-    excuses: list[Excuse] = []
-    for changes in outcome.solutions:
-        state = task.init ^ changes
-        plan, optimal = _robot_plan(task, space, state, outcome.plans[changes], options.optimal_plans, deadline)
-        change_list = _changes_of(task, changes)
-        _verify(domain, problem, change_list, plan, space)
-        excuses.append(Excuse(change_list, space.cost(changes), excuse_state(problem.init, change_list),
-                              [a.name for a in plan], optimal))
-    excuses.sort(key=lambda e: (e.cost, e.size, [str(c) for c in e.changes]))
-    status = {
-        "found": "excuse-found",
-        "none": "no-excuse",
-        "size-limit": "no-excuse-within-size",
-        "timeout": "timeout",
-    }[outcome.status]
-    if status == "timeout" and excuses:
-        status = "excuse-found"  # --all ran out of time: what was found is minimal
-        stats["incomplete"] = True
-    return finish(status, excuses, candidates=outcome.candidates, planner_calls=outcome.planner_calls + 1,
-                  nodes_expanded=outcome.expanded, **outcome.extra)
+    def _enter(self, phase: str) -> None:
+        self.phase = phase
+        if self.progress:
+            self.progress(phase, 0, 0)
+        check_deadline(self.deadline, phase)
+
+    def report(self, status: str, robot_plan: list[str] | None = None, **more: Any) -> ExcuseReport:
+        """The report of the run so far."""
+        self.stats.update(more)
+        self.stats["time_s"] = round(time.monotonic() - self.start, 4)
+        space = self.space
+        groups = space.groups if space is not None else []
+        checked = _group_atoms(space) if space is not None else []
+        return ExcuseReport(status, sorted(self.excuses, key=_excuse_order), self.options.semantics,
+                            self.options.strategy, self.stats, self.unachievable, groups, robot_plan, checked)
+
+    def timed_out(self) -> ExcuseReport:
+        """The report when the time limit ended the run: excuses completed so far stay."""
+        self.stats["phase"] = self.phase
+        if self.excuses:  # --all ran out of time: what was found is minimal
+            self.stats["incomplete"] = True
+            return self.report("excuse-found")
+        return self.report("timeout")
+
+    def execute(self) -> ExcuseReport:
+        """Ground, build the change space, check solvability, search, and plan from each excuse."""
+        options, task = self.options, None
+        fixed = options.fixed_predicates(self.domain)
+        task = ground(self.domain, self.problem, fixed=fixed, deadline=self.deadline)
+        groups: list[MutexGroup] = []
+        if options.semantics is Semantics.CONSISTENT and not task.satisfies_goal(task.init):
+            self._enter("invariant synthesis")
+            from guided_lfd.excuse.invariants import mutex_groups
+
+            groups = mutex_groups(options.invariants_from or self.domain, task, self.deadline)
+        self._enter("change space")
+        space = self.space = build_space(task, options.semantics, fixed, options.costs, groups)
+        self.stats.update({
+            "ground_atoms": len(task.atoms),
+            "ground_actions": len(task.actions),
+            "changeable_atoms": space.changeable.bit_count(),
+            "relevant_atoms": space.relevant_atoms.bit_count(),
+            "relevant_actions": len(space.relevant_actions),
+            "invariant_groups": len(space.groups),
+            "fixed_predicates": fixed,
+        })
+        self.unachievable = unachievable_goals(task)
+        # Already solvable: no excuse needed.  The compiled relaxed task and the
+        # oracle are built once here and handed to the search, which reuses the
+        # oracle's memory of dead states.
+        self._enter("relaxed task")
+        relaxed = RelaxedExcuseTask(space)
+        oracle = ReachabilityOracle(space, self.deadline)
+        self._enter("already solvable?")
+        plan0 = None
+        if relaxed.reaches_goal_unchanged(task.init):  # else unsolvable without a search
+            try:
+                plan0 = oracle.solve(task.init)
+            except SearchTimeout:
+                return self.report("timeout", candidates=0, planner_calls=1, phase=self.phase)
+        if plan0 is not None:
+            self._enter("robot plan")
+            plan, _ = _robot_plan(task, space, task.init, plan0, options.optimal_plans, self.deadline)
+            _verify(self.domain, self.problem, [], plan, space)
+            return self.report("already-solvable", [a.name for a in plan], candidates=0, planner_calls=1)
+
+        self._enter("searching")
+        limits = SearchLimits(all_minimal=options.all_minimal, max_size=options.max_size, deadline=self.deadline)
+        search_start = time.monotonic()
+        self.stats["setup_time_s"] = round(search_start - self.start, 6)
+        outcome = STRATEGIES[options.strategy].search(space, limits, self.progress, oracle=oracle, relaxed=relaxed)
+        self.stats["search_time_s"] = round(time.monotonic() - search_start, 6)
+        self.stats.update(candidates=outcome.candidates, planner_calls=outcome.planner_calls + 1,
+                          nodes_expanded=outcome.expanded, **outcome.extra)
+        self.phase = "robot plan"
+        for changes in outcome.solutions:
+            state = task.init ^ changes
+            plan, optimal = _robot_plan(task, space, state, outcome.plans[changes], options.optimal_plans,
+                                        self.deadline)
+            change_list = _changes_of(task, changes)
+            _verify(self.domain, self.problem, change_list, plan, space)
+            self.excuses.append(Excuse(change_list, space.cost(changes),
+                                       excuse_state(self.problem.init, change_list), [a.name for a in plan], optimal))
+        status = {
+            "found": "excuse-found",
+            "none": "no-excuse",
+            "size-limit": "no-excuse-within-size",
+            "timeout": "timeout",
+        }[outcome.status]
+        if status == "timeout":
+            self.stats["phase"] = "searching"
+            if self.excuses:
+                status = "excuse-found"  # --all ran out of time: what was found is minimal
+                self.stats["incomplete"] = True
+        return self.report(status)
+
+
+def _excuse_order(e: Excuse) -> tuple:
+    return (e.cost, e.size, [str(c) for c in e.changes])
 
 
 def _group_atoms(space: ChangeSpace) -> list[tuple[frozenset[Atom], bool]]:

@@ -25,7 +25,7 @@ import io
 import time
 from dataclasses import replace
 
-from guided_lfd.errors import Location, MismatchError
+from guided_lfd.errors import Location, MismatchError, SearchTimeout
 from guided_lfd.excuse.space import MutexGroup
 from guided_lfd.grounding import GroundTask, bits, ground
 from guided_lfd.pddl.model import Atom, Domain, Literal, Predicate, Problem
@@ -80,8 +80,8 @@ def lifted_invariants(domain: Domain, problem: Problem, max_time: float | None =
             )
             normalize.normalize(task)
             found = list(invariant_finder.find_invariants(task, None))
-    except MemoryError:
-        raise  # a resource limit, not a property of the domain
+    except (MemoryError, SearchTimeout):
+        raise  # a resource or time limit, not a property of the domain
     except (Exception, SystemExit) as exc:  # the translator signals errors with SystemExit too
         detail = " ".join(str(exc).split()) or type(exc).__name__
         raise MismatchError(

@@ -104,7 +104,7 @@ class ReachabilityOracle:
                 found = s
                 break
             expanded += 1
-            if deadline is not None and not expanded & 1023 and time.monotonic() > deadline:
+            if deadline is not None and not expanded & 63 and time.monotonic() > deadline:
                 self.stats.expanded += expanded
                 self.stats.memo_hits += memo_hits
                 raise SearchTimeout("excuse search exceeded its time limit")

@@ -21,6 +21,7 @@ from guided_lfd.errors import (
     MismatchError,
     PddlSemanticError,
     PddlSyntaxError,
+    SearchTimeout,
     UnsupportedFeatureError,
 )
 from guided_lfd.pddl.model import (
@@ -186,8 +187,8 @@ def _tarski_parse(reader, kind: str, src: SourceMap) -> None:
         ) from None
     except RecursionError:
         raise PddlSyntaxError("nested too deeply to parse", src.location(src.define().line, src.define().col)) from None
-    except MemoryError:
-        raise  # a resource limit, not a syntax error
+    except (MemoryError, SearchTimeout):
+        raise  # a resource or time limit, not a syntax error
     except Exception as exc:  # tarski's ParsingError and anything else it raises
         text = str(exc).split("\n")[0] if str(exc) else type(exc).__name__
         match = _TARSKI_POS.search(text)
@@ -363,7 +364,7 @@ def _tarski_syntax_error(text: str, kind: str, path: str) -> PddlSyntaxError | N
     with _temp_pddl(text) as tmp, _quiet_tarski():
         try:
             reader.parser.parse_file(tmp, kind)
-        except MemoryError:
+        except (MemoryError, SearchTimeout):
             raise
         except Exception as exc:  # tarski's ParsingError
             match = _TARSKI_POS.search(str(exc).splitlines()[0] if str(exc) else "")
