@@ -288,3 +288,41 @@ def test_both_lmcut_implementations_match_brute_force(tmp_path_factory, monkeypa
         size, expected = brute_force(domain, problem, report.checked_groups)
         if size not in (None, 0):
             assert sorted(sorted(str(c) for c in e.changes) for e in report.excuses) == expected
+
+
+@settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow, HealthCheck.function_scoped_fixture])
+@given(pddl=small_tasks())
+def test_hill_climbing_oracle_matches_brute_force(tmp_path_factory, monkeypatch, pddl):
+    """Reachability checks hill-climb on h^FF on large tasks: force it on small ones and compare."""
+    from guided_lfd.excuse import reach
+
+    monkeypatch.setattr(reach, "GUIDED_MIN_ACTIONS", 0)
+    folder = tmp_path_factory.mktemp("rndh")
+    (folder / "d.pddl").write_text(pddl[0])
+    (folder / "p.pddl").write_text(pddl[1])
+    domain, problem = parse_task(folder / "d.pddl", folder / "p.pddl")
+    for semantics in Semantics:
+        report = find_excuses(domain, problem, ExcuseOptions(semantics=semantics, all_minimal=True, max_size=3))
+        size, expected = brute_force(domain, problem, report.checked_groups)
+        if size == 0:
+            assert report.status == "already-solvable"
+        elif size is None:
+            assert report.status in ("no-excuse", "no-excuse-within-size")
+        else:
+            assert sorted(sorted(str(c) for c in e.changes) for e in report.excuses) == expected
+
+
+def test_hill_climbing_answers_household_checks_and_not_small_ones(tmp_path):
+    """It fires on a house (thousands of actions) and stays off on Kitchen I (a handful)."""
+    from guided_lfd import household
+
+    house = household.House(8, 32, 4, 1, 4, "no-push")
+    (tmp_path / "robot.pddl").write_text(household.domain_pddl(house.variant))
+    (tmp_path / "house.pddl").write_text(household.problem_pddl(house))
+    domain, problem = parse_task(tmp_path / "robot.pddl", tmp_path / "house.pddl")
+    report = find_excuses(domain, problem, ExcuseOptions())
+    assert report.statistics["oracle_hill_climbs"] >= 1
+    assert report.statistics["oracle_expanded"] == 0  # no goal-count search was needed
+    assert report.excuse.plan_optimal and len(report.excuse.plan) == 8
+    small = find_excuses(*parse_task(*kitchen(1)), ExcuseOptions())
+    assert small.statistics["oracle_hill_climbs"] == 0

@@ -11,8 +11,8 @@ from guided_lfd.grounding import ground
 from guided_lfd.optimal import INF, LmCut, certified_optimal, is_plan, shorten_plan
 from guided_lfd.pddl.reader import parse_task
 from guided_lfd.planning import find_plan
-from tests.conftest import BLOCKS, kitchen
-from tests.test_excuse_engine import small_tasks
+from conftest import BLOCKS, kitchen
+from test_excuse_engine import small_tasks
 
 
 def _optimal_length(task, state: int) -> int | None:

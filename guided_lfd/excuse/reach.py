@@ -9,19 +9,31 @@ excuse search:
 * every state of an exhausted (failed) search is remembered as *dead*, and
   every state on a found plan as *alive* with its remaining plan, so later
   candidates stop as soon as they meet a known state;
-* the search is greedy best-first on the number of unsatisfied goal atoms,
-  which finds plans fast and is complete (duplicate detection, finite space).
+* on large tasks a check first hill-climbs on h^FF with helpful actions
+  (a plan in about plan-length heuristic evaluations; a relaxed dead end
+  proves the goal unreachable at once);
+* otherwise, or when hill-climbing gives up, the search is greedy
+  best-first on the number of unsatisfied goal atoms, which is complete
+  (duplicate detection, finite space).
 """
 
 from __future__ import annotations
 
 import heapq
 import time
+from collections import deque
 from dataclasses import dataclass
 
 from guided_lfd.errors import SearchTimeout
 from guided_lfd.excuse.space import ChangeSpace
 from guided_lfd.grounding import GroundAction, bits
+from guided_lfd.relaxation import FFHeuristic
+
+#: Relevant actions from which reachability checks first hill-climb on h^FF.
+GUIDED_MIN_ACTIONS = 1000
+#: Heuristic evaluations a hill-climb may spend (plus 4 per step of the
+#: first relaxed plan) before the complete search takes over.
+HILL_CLIMB_EVALUATIONS = 50
 
 
 @dataclass
@@ -31,6 +43,7 @@ class ReachStats:
     calls: int = 0
     expanded: int = 0
     memo_hits: int = 0
+    hill_climbs: int = 0  # calls answered by hill-climbing on h^FF
 
 
 class ReachabilityOracle:
@@ -47,6 +60,10 @@ class ReachabilityOracle:
         self.dead: set[int] = set()
         self.alive: dict[int, tuple[GroundAction, int] | None] = {}
         self.stats = ReachStats()
+        # Large tasks first try hill-climbing on h^FF (see _hill_climb); on
+        # small ones the goal-count search is cheaper than one h^FF pass.
+        self.guided = len(self.actions) >= GUIDED_MIN_ACTIONS
+        self._ff: FFHeuristic | None = None
         # Index actions by one positive precondition so successor generation
         # skips most inapplicable actions; actions without one are always tried
         # (bucket 0, entries with pre_pos = 0).
@@ -75,10 +92,96 @@ class ReachabilityOracle:
     def _goal_distance(self, state: int) -> int:
         return (self.goal_pos & ~state).bit_count() + (self.goal_neg & state).bit_count()
 
+    def _ff_heuristic(self) -> FFHeuristic:
+        if self._ff is None:
+            self._ff = FFHeuristic(self.actions, self.goal_pos, self.goal_neg)
+        return self._ff
+
+    def _hill_climb(self, start: int) -> list[tuple[int, GroundAction, int]] | None | bool:
+        """Enforced hill-climbing on h^FF with helpful actions (Hoffmann and Nebel 2001).
+
+        Returns the path (steps ``(state, action, next state)``) to a goal
+        state or to a state known to be alive, ``None`` when the relaxation
+        proves the goal unreachable, and ``False`` when it gives up (a
+        plateau too wide, a dead end): the complete search then decides.
+        A candidate that is an excuse is usually confirmed in about
+        plan-length evaluations, where the goal-count search explores whole
+        plateaus of interchangeable objects.
+        """
+        ff = self._ff_heuristic()
+        mask, actions, goal_pos, goal_neg = self.mask, self.actions, self.goal_pos, self.goal_neg
+        first = ff.relaxed_plan(start)
+        if first is None:
+            return None
+        h, needed = len(first[0]), first[1]
+        budget = HILL_CLIMB_EVALUATIONS + 4 * h
+        evaluations = 1
+        path: list[tuple[int, GroundAction, int]] = []
+        s = start
+        while goal_pos & ~s or goal_neg & s:
+            if s in self.alive:
+                return path
+            frontier = deque([(s, needed, ())])
+            seen = {s}
+            improved = None
+            while frontier and improved is None:
+                u, u_needed, u_steps = frontier.popleft()
+                for ai in ff.helpful(u, u_needed):
+                    act = actions[ai]
+                    t = (u & ~act.delete) | (act.add & mask)
+                    if t in seen or t in self.dead:
+                        continue
+                    seen.add(t)
+                    steps = (*u_steps, (u, act, t))
+                    if t in self.alive or not (goal_pos & ~t or goal_neg & t):
+                        return path + list(steps)
+                    evaluations += 1
+                    if evaluations > budget:
+                        return False
+                    if self.deadline is not None and time.monotonic() > self.deadline:
+                        raise SearchTimeout("excuse search exceeded its time limit")
+                    result = ff.relaxed_plan(t)
+                    if result is None:
+                        self.dead.add(t)  # relaxed-unreachable: unreachable
+                        continue
+                    if len(result[0]) < h:
+                        improved = (t, result, steps)
+                        break
+                    frontier.append((t, result[1], steps))
+            if improved is None:
+                return False
+            s, (rplan, needed), steps = improved
+            h = len(rplan)
+            path.extend(steps)
+        return path
+
+    def _record(self, path: list[tuple[int, GroundAction, int]]) -> list[GroundAction]:
+        """Remember the states of a found path as alive; the whole plan (path + remembered rest)."""
+        end = path[-1][2] if path else None
+        for prev, act, nxt in path:
+            if prev not in self.alive:
+                self.alive[prev] = (act, nxt)
+        plan = [act for _, act, _ in path]
+        s = end
+        if s is not None and s not in self.alive:
+            self.alive[s] = None
+        while s is not None and self.alive.get(s) is not None:
+            act, s = self.alive[s]  # type: ignore[misc]
+            plan.append(act)
+        return plan
+
     def solve(self, state: int) -> list[GroundAction] | None:
         """A plan from ``state`` to the goal, or None if the goal is unreachable."""
         self.stats.calls += 1
         start = state & self.mask
+        if self.guided and start not in self.alive and start not in self.dead:
+            climbed = self._hill_climb(start)
+            if climbed is None:
+                self.dead.add(start)
+                return None
+            if climbed is not False and climbed:
+                self.stats.hill_climbs += 1
+                return self._record(climbed)
         parents: dict[int, tuple[int, GroundAction] | None] = {start: None}
         counter = 0
         heap = [(self._goal_distance(start), counter, start)]

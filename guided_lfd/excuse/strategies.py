@@ -213,7 +213,8 @@ class LandmarkSearch:
         status = "found" if solutions else ("size-limit" if size_pruned else "none")
         return SearchOutcome(sorted(solutions), plans, status, candidates, oracle.stats.calls, expanded,
                              {"evaluations": evaluations, "oracle_expanded": oracle.stats.expanded,
-                              "oracle_memo_hits": oracle.stats.memo_hits})
+                              "oracle_memo_hits": oracle.stats.memo_hits,
+                              "oracle_hill_climbs": oracle.stats.hill_climbs})
 
 
 class BaselineSearch:
