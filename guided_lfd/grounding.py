@@ -90,10 +90,19 @@ class GroundTask:
 
 def bits(mask: int) -> Iterable[int]:
     """Indices of the set bits of ``mask``, ascending."""
-    while mask:
-        low = mask & -mask
-        yield low.bit_length() - 1
-        mask ^= low
+    if mask.bit_count() <= 16:
+        while mask:
+            low = mask & -mask
+            yield low.bit_length() - 1
+            mask ^= low
+        return
+    # Many bits: clearing them one by one costs a pass over the whole
+    # integer each (quadratic on wide masks); scan its binary digits once.
+    digits = bin(mask)[:1:-1]  # least significant first, without '0b'
+    i = digits.find("1")
+    while i >= 0:
+        yield i
+        i = digits.find("1", i + 1)
 
 
 def mask_of(indices: Iterable[int]) -> int:
