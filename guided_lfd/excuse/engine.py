@@ -9,6 +9,7 @@ before it is returned.
 
 from __future__ import annotations
 
+import gc
 import time
 from dataclasses import dataclass, field
 from typing import Any
@@ -177,11 +178,19 @@ def find_excuses(
     deadline = deadline_after(options.time_limit, start)
     check_option_names(domain, options)
     run = _Run(domain, problem, options, progress, start, deadline)
+    # Grounding a house creates millions of small objects and no cycles that
+    # matter: the cyclic collector's full passes over them cost more than the
+    # rest of set-up (measured: 35 s -> 18 s on 180k ground actions).
+    collecting = gc.isenabled()
+    gc.disable()
     try:
         with watchdog(deadline, "excuse search"):
             return run.execute()
     except SearchTimeout:
         return run.timed_out()
+    finally:
+        if collecting:
+            gc.enable()
 
 
 class _Run:

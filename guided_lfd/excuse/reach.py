@@ -79,11 +79,11 @@ class ReachabilityOracle:
         for atom in task.atoms:
             per_predicate[atom.predicate] = per_predicate.get(atom.predicate, 0) + 1
         rarity = [per_predicate[a.predicate] for a in task.atoms]
-        init = task.init
+        true_in_init = set(bits(task.init))
         self._by_first_pre: dict[int, list[tuple]] = {}
         for act in self.actions:
             if act.pre_pos:
-                key = max(act.pre_pos_ids, key=lambda i: (not (init >> i) & 1, rarity[i], i))
+                key = max(act.pre_pos_ids, key=lambda i: (i not in true_in_init, rarity[i], i))
                 self._by_first_pre.setdefault(key, []).append((act, act.pre_pos, act.pre_neg, act.delete, act.add & mask))
         self._key_mask = 0
         for key in self._by_first_pre:
