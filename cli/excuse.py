@@ -5,7 +5,6 @@ from __future__ import annotations
 from typing import Annotated, Any
 
 import typer
-from rich.progress import Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
 
 from cli.common import (
     JsonOption, OutputOption, QuietOption, TimeLimitOption, check_inputs, check_time_limit, command, emit, ui,
@@ -111,6 +110,9 @@ def _run(dom, prob, options: ExcuseOptions) -> ExcuseReport:
     console = ui.console
     if ui.quiet or not console.is_terminal:
         return find_excuses(dom, prob, options)
+    # Only a terminal gets the spinner: rich.progress is imported here, not at start-up.
+    from rich.progress import Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
+
     with Progress(SpinnerColumn(), TextColumn("{task.description}"), TimeElapsedColumn(),
                   console=console, transient=True) as bar:
         job = bar.add_task("grounding", total=None)
