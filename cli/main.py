@@ -18,6 +18,7 @@ from typing import Annotated, Any
 import typer
 from typer.core import TyperCommand, TyperGroup
 
+from cli.coercion import QuickCoercionMixin
 from guided_lfd import __version__
 
 
@@ -66,7 +67,11 @@ SUBCOMMANDS: dict[str, Subcommand] = {
 }
 
 
-def load_subcommand(name: str) -> typer.core.TyperCommand:
+class QuickCommand(QuickCoercionMixin, TyperCommand):
+    """A subcommand whose trivial parameter values skip typer's pydantic coercion (see cli.coercion)."""
+
+
+def load_subcommand(name: str) -> TyperCommand:
     """Import subcommand ``name``'s module and build its command as typer would in a group."""
     spec = SUBCOMMANDS[name]
     function = getattr(importlib.import_module(spec.module), spec.function)
@@ -74,7 +79,7 @@ def load_subcommand(name: str) -> typer.core.TyperCommand:
     # the command exactly as it builds each command of a group (get_command_from_info).
     single = typer.Typer(add_completion=False, pretty_exceptions_enable=app.pretty_exceptions_enable,
                          pretty_exceptions_short=app.pretty_exceptions_short, rich_markup_mode=app.rich_markup_mode)
-    single.command(name)(function)
+    single.command(name, cls=QuickCommand)(function)
     return typer.main.get_command(single)  # type: ignore[return-value]
 
 
@@ -115,7 +120,7 @@ class _LazyCommands(MutableMapping[str, Any]):
         return name in SUBCOMMANDS or name in self._extra
 
 
-class LazyGroup(TyperGroup):
+class LazyGroup(QuickCoercionMixin, TyperGroup):
     """A TyperGroup whose subcommands are imported only when needed."""
 
     def __init__(self, **kwargs: Any) -> None:
