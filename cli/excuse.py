@@ -7,7 +7,8 @@ from typing import Annotated, Any
 import typer
 
 from cli.common import (
-    JsonOption, OutputOption, QuietOption, TimeLimitOption, check_inputs, check_time_limit, command, emit, ui,
+    JsonOption, OutputOption, QuietOption, TimeLimitOption, check_inputs, check_time_limit, command, emit,
+    plain_stderr, ui,
 )
 from guided_lfd import errors
 from guided_lfd.excuse.engine import Excuse, ExcuseOptions, ExcuseReport, describe_change, find_excuses
@@ -107,8 +108,10 @@ def excuse(
 
 
 def _run(dom, prob, options: ExcuseOptions) -> ExcuseReport:
+    if ui.quiet or plain_stderr():  # no spinner; and rich need not be asked
+        return find_excuses(dom, prob, options)
     console = ui.console
-    if ui.quiet or not console.is_terminal:
+    if not console.is_terminal:
         return find_excuses(dom, prob, options)
     # Only a terminal gets the spinner: rich.progress is imported here, not at start-up.
     from rich.progress import Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
