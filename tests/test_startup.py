@@ -263,3 +263,101 @@ def test_diagnostics_written_directly_match_rich(monkeypatch):
         ui.error("shown")
         outputs.append(sys.stderr.getvalue())
     assert outputs[0] == outputs[1]
+
+
+# -- tarski reads the text without its comments: the same result -------------
+
+def _visible_tokens(text: str) -> list[tuple]:
+    from antlr4 import InputStream, Token
+    from tarski.io._fstrips.parser.lexer import fstripsLexer
+
+    lexer = fstripsLexer(InputStream(text))
+    lexer.removeErrorListeners()
+    out = []
+    while True:
+        token = lexer.nextToken()
+        if token.channel == Token.DEFAULT_CHANNEL:
+            out.append((token.type, token.text, token.line, token.column))
+        if token.type == Token.EOF:
+            return out
+
+
+def _corpus() -> list:
+    return sorted(p for folder in ("data", "tests/data") for p in (ROOT / folder).rglob("*.pddl"))
+
+
+def test_without_comments_gives_tarski_the_same_tokens():
+    from guided_lfd.pddl.reader import without_comments
+
+    texts = [p.read_text(encoding="utf-8-sig") for p in _corpus()]
+    texts += ["(a ; c\n b)", "(a ; c", "(a ;c\r\n b)", "(a ; x\ry\n b)", "a;b\n", ";\n;;\n(x)", "(x);", "(p ?x; y\n)"]
+    stripped = 0
+    for text in texts:
+        assert _visible_tokens(without_comments(text)) == _visible_tokens(text)
+        stripped += without_comments(text) != text
+    assert stripped > 10
+
+
+def _parse_outcome(domain: str, problem: str):
+    from guided_lfd.errors import GuidedLfdError
+    from guided_lfd.pddl.reader import parse_task
+
+    try:
+        dom, prob = parse_task(domain, problem)
+    except GuidedLfdError as exc:
+        return ("error", type(exc).__name__, str(exc))
+    return ("ok", repr(dom.actions), repr(dom.predicates), repr(dom.types), repr(dom.constants),
+            repr(sorted(prob.init)), repr(prob.goal), repr(prob.objects))
+
+
+def test_reading_without_comments_changes_no_result_nor_error(tmp_path, monkeypatch):
+    """Damaged kitchen files (seeded): each parses, or fails with the same message, either way.
+
+    Syntax errors can quote comments (or stop inside one): those are
+    re-read from the text as written.
+    """
+    import random
+
+    from guided_lfd.pddl import reader
+
+    domain_text = (ROOT / ROBOT).read_text()
+    problem_text = (ROOT / PROBLEM).read_text()
+    pieces = ["(", ")", " ", "?x", "- ", "and ", "not ", ":effect ", "; note\n", ";x", "\n", "foo ", "\r\n", ";(\n", ":"]
+    rng = random.Random(7)
+    domain, problem = tmp_path / "d.pddl", tmp_path / "p.pddl"
+    outcomes = set()
+    for _ in range(250):
+        damage_domain = rng.random() < 0.7
+        chars = list(domain_text if damage_domain else problem_text)
+        for _ in range(rng.randint(1, 3)):
+            at = rng.randrange(len(chars))
+            if rng.random() < 0.6:
+                chars.insert(at, rng.choice(pieces))
+            else:
+                del chars[at]
+        damaged = "".join(chars)
+        domain.write_text(damaged if damage_domain else domain_text)
+        problem.write_text(problem_text if damage_domain else damaged)
+        fast = _parse_outcome(str(domain), str(problem))
+        monkeypatch.setattr(reader, "without_comments", lambda text: text)
+        as_written = _parse_outcome(str(domain), str(problem))
+        monkeypatch.undo()
+        assert fast == as_written
+        outcomes.add(fast[0] if fast[0] == "ok" else fast[1])
+    assert {"ok", "PddlSyntaxError"} <= outcomes
+
+
+def test_corpus_reads_the_same_without_comments(monkeypatch):
+    from guided_lfd.pddl import reader
+
+    pairs = []
+    for path in _corpus():
+        domain = next((path.parent / n for n in ("domain.pddl", "robot.pddl") if (path.parent / n).exists()), None)
+        if domain is not None and domain != path:
+            pairs.append((str(domain), str(path)))
+    assert len(pairs) > 40
+    for domain, problem in pairs:
+        fast = _parse_outcome(domain, problem)
+        monkeypatch.setattr(reader, "without_comments", lambda text: text)
+        assert _parse_outcome(domain, problem) == fast, problem
+        monkeypatch.undo()
