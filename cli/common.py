@@ -12,6 +12,7 @@ from typing import TYPE_CHECKING, Annotated, Callable, TypeVar
 
 import typer
 
+from cli.startup import resume_gc
 from guided_lfd.errors import EXIT_INTERNAL, GuidedLfdError, OptionError
 from guided_lfd.io import write_text
 
@@ -148,6 +149,7 @@ def command(fn: F) -> F:
 
     @functools.wraps(fn)
     def wrapper(*args, **kwargs):
+        resume_gc()  # start-up is over (see cli/startup.py)
         ui.quiet = bool(kwargs.get("quiet", False))
         try:
             return fn(*args, **kwargs)

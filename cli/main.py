@@ -19,6 +19,7 @@ import typer
 from typer.core import TyperCommand, TyperGroup
 
 from cli.coercion import QuickCoercionMixin
+from cli.startup import pause_gc
 from guided_lfd import __version__
 
 
@@ -199,4 +200,5 @@ def main(
 
 def run() -> None:
     """Console-script entry point."""
+    pause_gc()  # until the command starts its work: see cli/startup.py
     app()

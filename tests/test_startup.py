@@ -80,7 +80,7 @@ def test_main_help_imports_no_subcommand(tmp_path):
     done, modules = run_cli(tmp_path, "--help")
     assert done.returncode == 0, done.stderr
     assert "learn-domain  Turn demonstrated hand activities" in done.stdout
-    assert not {m for m in modules if m.startswith("cli.")} - {"cli.main", "cli.coercion"}
+    assert not {m for m in modules if m.startswith("cli.")} - {"cli.main", "cli.coercion", "cli.startup"}
     assert "guided_lfd.excuse" not in modules
 
 
@@ -100,6 +100,36 @@ def test_large_task_still_takes_the_numpy_path(monkeypatch):
     assert not relaxed.small
     assert lmcut.np is not None and "numpy.ma" in sys.modules
     assert relaxed.bound(task.init, 0) == small.bound(task.init, 0)
+
+
+def test_gc_is_paused_for_start_up_only(tmp_path):
+    """run() pauses the collector; a command turns it back on before its work."""
+    import gc
+
+    from cli.common import command
+    from cli.startup import pause_gc, resume_gc
+
+    seen = []
+
+    @command
+    def work(quiet: bool = False) -> None:
+        seen.append(gc.isenabled())
+
+    assert gc.isenabled()
+    try:
+        pause_gc()
+        assert not gc.isenabled()
+        work()
+        assert seen == [True] and gc.isenabled()
+    finally:
+        resume_gc()
+        gc.enable()
+    gc.disable()  # a collector someone else turned off stays off
+    try:
+        work()
+        assert seen == [True, False]
+    finally:
+        gc.enable()
 
 
 # -- the lazy registry -------------------------------------------------------
