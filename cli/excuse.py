@@ -5,11 +5,10 @@ from __future__ import annotations
 from typing import Annotated, Any
 
 import typer
-from rich.progress import Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
 
 from cli.common import (
     JsonOption, OutputOption, QuietOption, TimeLimitOption, check_inputs, check_time_limit, command, emit,
-    started_at, ui,
+    plain_stderr, started_at, ui,
 )
 from guided_lfd import errors
 from guided_lfd.deadline import deadline_after, watchdog
@@ -115,9 +114,14 @@ def excuse(
 
 
 def _run(dom, prob, options: ExcuseOptions) -> ExcuseReport:
-    console = ui.console
-    if ui.quiet or not console.is_terminal:
+    if ui.quiet or plain_stderr():  # no spinner; and rich need not be asked
         return find_excuses(dom, prob, options)
+    console = ui.console
+    if not console.is_terminal:
+        return find_excuses(dom, prob, options)
+    # Only a terminal gets the spinner: rich.progress is imported here, not at start-up.
+    from rich.progress import Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
+
     with Progress(SpinnerColumn(), TextColumn("{task.description}"), TimeElapsedColumn(),
                   console=console, transient=True) as bar:
         job = bar.add_task("grounding", total=None)

@@ -1,20 +1,157 @@
-"""The ``guided-lfd`` command: one subcommand per module of this package."""
+"""The ``guided-lfd`` command: one subcommand per module of this package.
+
+Subcommands are loaded lazily: :data:`SUBCOMMANDS` names each one's module, and
+:class:`LazyGroup` imports that module only when the subcommand runs (or its own
+``--help`` is asked for).  ``guided-lfd excuse`` therefore never imports what
+``evaluate`` or ``segment`` need (pandas, numpy, ...), which used to be most of
+its start-up time.
+"""
 
 from __future__ import annotations
 
+import importlib
 import sys
-from typing import Annotated
+from collections.abc import Iterator, MutableMapping
+from dataclasses import dataclass
+from typing import Annotated, Any
 
 import typer
+from typer.core import TyperCommand, TyperGroup
 
-from cli.evaluate import evaluate
-from cli.excuse import excuse
-from cli.learn_domain import learn_domain
-from cli.merge import merge
-from cli.plan import plan
-from cli.segment import segment
-from cli.validate import validate
+from cli.coercion import QuickCoercionMixin
+from cli.startup import pause_gc
 from guided_lfd import __version__
+
+
+@dataclass(frozen=True)
+class Subcommand:
+    """Where a subcommand lives, and the line ``guided-lfd --help`` shows for it."""
+
+    module: str
+    function: str
+    #: The first paragraph of the function's docstring, so that the command list of
+    #: ``guided-lfd --help`` is the one typer would make, without importing the module
+    #: (tests/test_startup.py checks the two agree).
+    help: str
+
+
+#: Every subcommand, in the order ``guided-lfd --help`` lists them.
+SUBCOMMANDS: dict[str, Subcommand] = {
+    "excuse": Subcommand(
+        "cli.excuse", "excuse",
+        "Find a minimal excuse: the smallest change to the initial state after which the robot's\n"
+        "own skills reach the goal. The human then only demonstrates how to reach it.",
+    ),
+    "plan": Subcommand(
+        "cli.plan", "plan", "Plan with pyperplan; print the plan in IPC format (exit 10 if unsolvable).",
+    ),
+    "segment": Subcommand(
+        "cli.segment", "segment",
+        "Segment a demonstration into hand activities (Reach, Take, Put, Release, Open, Close, ...).",
+    ),
+    "learn-domain": Subcommand(
+        "cli.learn_domain", "learn_domain",
+        "Turn demonstrated hand activities into lifted PDDL actions (nodes of interest, generalised).",
+    ),
+    "merge": Subcommand(
+        "cli.merge", "merge",
+        "Unite domains: equal actions kept once, name clashes renamed, every action's origin as a comment.",
+    ),
+    "evaluate": Subcommand(
+        "cli.evaluate", "evaluate",
+        "F1 savings, predicted sizes, useful fraction, misdirected guidance, solvability after demonstration.",
+    ),
+    "validate": Subcommand(
+        "cli.validate", "validate",
+        "Execute PLAN from the problem's initial state; say which precondition of which step fails.",
+    ),
+}
+
+
+class QuickCommand(QuickCoercionMixin, TyperCommand):
+    """A subcommand whose trivial parameter values skip typer's pydantic coercion (see cli.coercion)."""
+
+
+def load_subcommand(name: str) -> TyperCommand:
+    """Import subcommand ``name``'s module and build its command as typer would in a group."""
+    spec = SUBCOMMANDS[name]
+    function = getattr(importlib.import_module(spec.module), spec.function)
+    # A one-command Typer with the group's settings: typer.main.get_command() then builds
+    # the command exactly as it builds each command of a group (get_command_from_info).
+    single = typer.Typer(add_completion=False, pretty_exceptions_enable=app.pretty_exceptions_enable,
+                         pretty_exceptions_short=app.pretty_exceptions_short, rich_markup_mode=app.rich_markup_mode)
+    single.command(name, cls=QuickCommand)(function)
+    return typer.main.get_command(single)  # type: ignore[return-value]
+
+
+class _LazyCommands(MutableMapping[str, Any]):
+    """The group's ``commands``: every name known up front, each command built on first use.
+
+    TyperGroup reads ``self.commands`` for more than look-ups (its keys feed the
+    'Did you mean ...?' of a mistyped command), so the laziness lives in the mapping.
+    """
+
+    def __init__(self) -> None:
+        self._loaded: dict[str, Any] = {}
+        self._extra: list[str] = []  # names added with add_command, outside the registry
+
+    def __getitem__(self, name: str) -> Any:
+        if name not in self._loaded:
+            if name not in SUBCOMMANDS:
+                raise KeyError(name)
+            self._loaded[name] = load_subcommand(name)
+        return self._loaded[name]
+
+    def __setitem__(self, name: str, command: Any) -> None:
+        if name not in SUBCOMMANDS and name not in self._extra:
+            self._extra.append(name)
+        self._loaded[name] = command
+
+    def __delitem__(self, name: str) -> None:
+        raise TypeError("guided-lfd's subcommands cannot be removed")
+
+    def __iter__(self) -> Iterator[str]:
+        yield from SUBCOMMANDS
+        yield from self._extra
+
+    def __len__(self) -> int:
+        return len(SUBCOMMANDS) + len(self._extra)
+
+    def __contains__(self, name: object) -> bool:
+        return name in SUBCOMMANDS or name in self._extra
+
+
+class LazyGroup(QuickCoercionMixin, TyperGroup):
+    """A TyperGroup whose subcommands are imported only when needed."""
+
+    def __init__(self, **kwargs: Any) -> None:
+        super().__init__(**kwargs)
+        lazy = _LazyCommands()
+        for name, command in self.commands.items():  # any built eagerly by typer (none today)
+            lazy[name] = command
+        self.commands = lazy
+        self._listing = False
+
+    def list_commands(self, ctx: typer.Context) -> list[str]:
+        """Subcommand names in registry order, without loading any."""
+        return list(self.commands)
+
+    def get_command(self, ctx: typer.Context, cmd_name: str) -> Any:
+        """The subcommand ``cmd_name`` (imported now); a stub while the group's help is written."""
+        if self._listing and cmd_name in SUBCOMMANDS:
+            # The command list needs only each command's short help: a stub carrying the
+            # docstring's first paragraph yields the same line as the real command.
+            return TyperCommand(cmd_name, help=SUBCOMMANDS[cmd_name].help, rich_markup_mode=app.rich_markup_mode)
+        return super().get_command(ctx, cmd_name)
+
+    def format_commands(self, ctx: typer.Context, formatter: Any) -> None:
+        """TyperGroup's command list, from the registry's help lines."""
+        self._listing = True
+        try:
+            super().format_commands(ctx, formatter)
+        finally:
+            self._listing = False
+
 
 def _one_line_usage_errors() -> None:
     """Typer prints usage errors as a usage block; guided-lfd promises one line."""
@@ -36,6 +173,7 @@ _one_line_usage_errors()
 
 app = typer.Typer(
     name="guided-lfd",
+    cls=LazyGroup,
     help="Excuse-guided learning from demonstration: find what a robot needs demonstrated, "
     "learn it from a hand trace, and measure what guidance saved.",
     no_args_is_help=True,
@@ -60,19 +198,10 @@ def main(
     """Excuse-guided learning from demonstration."""
 
 
-app.command("excuse")(excuse)
-app.command("plan")(plan)
-app.command("segment")(segment)
-app.command("learn-domain")(learn_domain)
-app.command("merge")(merge)
-app.command("evaluate")(evaluate)
-app.command("validate")(validate)
-
-
 def run() -> None:
     """Console-script entry point."""
     import cli
-    from cli import common
 
-    common.run_started = cli.PROCESS_STARTED  # --time-limit counts start-up too
+    cli.run_started = cli.PROCESS_STARTED  # --time-limit counts start-up too
+    pause_gc()  # until the command starts its work: see cli/startup.py
     app()

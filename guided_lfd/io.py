@@ -2,11 +2,9 @@
 
 from __future__ import annotations
 
-import json
 import os
 import stat
 import sys
-import tempfile
 from pathlib import Path
 from typing import Any
 
@@ -30,6 +28,8 @@ def write_text(path: str | Path, text: str) -> None:
     if name == "-":
         _write_stdout(text)
         return
+    import tempfile  # here, not at start-up: most runs write only to stdout
+
     target = _output_target(name)
     try:
         if target.exists() and not target.is_file():
@@ -105,6 +105,8 @@ def check_writable(path: str | Path) -> None:
 
 def json_document(kind: str, body: dict[str, Any]) -> str:
     """Serialise a versioned JSON document (stable key order, trailing newline)."""
+    import json  # here, not at start-up: only --json and JSON inputs need it
+
     doc = {"format": f"guided-lfd/{kind}", "format_version": FORMAT_VERSION, **body}
     return json.dumps(doc, indent=2, sort_keys=False) + "\n"
 
@@ -115,6 +117,8 @@ def read_json_document(path: str, kind: str, error: type, origin: str) -> tuple[
     Anything else raises ``error`` (a :class:`~guided_lfd.errors.GuidedLfdError`
     class) naming the file; ``origin`` says which command writes such documents.
     """
+    import json
+
     expected = f"a guided-lfd/{kind} document"
     text = read_text(path, f"{expected} (from {origin})")
     try:

@@ -26,17 +26,37 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import math
-
-import numpy as np
-import numpy.ma  # noqa: F401  (numpy imports it lazily on first use: pay that at start-up)
+from typing import TYPE_CHECKING
 
 from guided_lfd.excuse.space import ChangeSpace
 from guided_lfd.grounding import bits
+
+if TYPE_CHECKING:
+    import numpy as np
+else:
+    # numpy is imported by load_numpy() for the first task large enough to use it:
+    # small tasks (the kitchen ones, most of a user's) never pay its ~0.1 s import.
+    np = None
 
 INF = float("inf")
 #: Below this many relaxed actions LM-cut runs on plain Python lists (the
 #: numpy version pays ~10 us per array call, too much for small tasks).
 SMALL_TASK_ACTIONS = 1500
+
+
+def load_numpy() -> None:
+    """Import numpy for the large-task tables (no-op once done).
+
+    Also imports ``numpy.ma``, which numpy would otherwise import on first use,
+    in the middle of a timed search.  Callers that time whole runs (the
+    benchmark runner) call this up front.
+    """
+    global np
+    if np is None:
+        import numpy
+        import numpy.ma  # noqa: F401
+
+        np = numpy
 
 
 @dataclass
@@ -70,6 +90,7 @@ def _gather(ptr: np.ndarray, flat: np.ndarray, rows: np.ndarray) -> np.ndarray:
 
 def bitmask_to_array(mask: int, n: int) -> np.ndarray:
     """The bits 0..n-1 of ``mask`` as a boolean array."""
+    load_numpy()
     nbytes = (n + 7) // 8
     raw = np.frombuffer((mask & ((1 << n) - 1)).to_bytes(nbytes or 1, "little"), dtype=np.uint8)
     return np.unpackbits(raw, bitorder="little")[:n].astype(bool)
@@ -86,7 +107,6 @@ class RelaxedExcuseTask:
         neg = list(bits(space.negation_needed))
         pos_id = {a: f for f, a in enumerate(pos)}
         neg_id = {a: len(pos) + f for f, a in enumerate(neg)}
-        self.fact_atom = np.array(pos + neg, dtype=np.int64)
         self.fact_atom_list = pos + neg
         self._pos_id, self._neg_id = pos_id, neg_id
         self.n_pos = len(pos)
@@ -118,6 +138,8 @@ class RelaxedExcuseTask:
         self._first_hmax = None
         self.prec_of_lists, self.achiever_lists = prec_of, achievers
         if not self.small:
+            load_numpy()
+            self.fact_atom = np.array(pos + neg, dtype=np.int64)
             self.pre_ptr, self.pre_flat = _csr(pre)
             self.add_ptr, self.add_flat = _csr(add)
             self.n_pre = np.diff(self.pre_ptr)
@@ -127,8 +149,6 @@ class RelaxedExcuseTask:
             self.free_actions = np.flatnonzero(self.n_pre == 0)
             self.nonempty = np.flatnonzero(self.n_pre > 0)
         self.goal_list = [pos_id[i] for i in bits(task.goal_pos)] + [neg_id[i] for i in bits(task.goal_neg)]
-        self.goal = np.array(self.goal_list, dtype=np.int64)
-        self.changeable = bitmask_to_array(space.changeable, self.n_atoms)
         self.neg_mask = space.negation_needed
         # Consistent semantics: making an atom of a mutex group true forces the
         # removal of the group's true atom q.  That removal is charged to the
@@ -143,12 +163,14 @@ class RelaxedExcuseTask:
                 membership[i] = membership.get(i, 0) + 1
         self.scale = math.lcm(*membership.values()) if membership else 1
         self.membership = membership
-        self.group_facts = [np.array([pos_id[i] for i in bits(mask) if i in pos_id], dtype=np.int64)
-                            for mask in self.groups]
+        self.group_fact_lists = [[pos_id[i] for i in bits(mask) if i in pos_id] for mask in self.groups]
         # Only the facts' weights matter (the task may have many irrelevant atoms).
         self.fact_weight_list = [float(space.weights.get(a, 0) * self.scale) for a in self.fact_atom_list]
-        self.fact_weight = np.array(self.fact_weight_list, dtype=np.float64)
-        self.group_fact_lists = [f.tolist() for f in self.group_facts]
+        if not self.small:  # the numpy versions of the tables above
+            self.goal = np.array(self.goal_list, dtype=np.int64)
+            self.changeable = bitmask_to_array(space.changeable, self.n_atoms)
+            self.group_facts = [np.array(f, dtype=np.int64) for f in self.group_fact_lists]
+            self.fact_weight = np.array(self.fact_weight_list, dtype=np.float64)
 
     def _initial_lists(self, state: int, changes: int) -> tuple[list[bool], list[float]]:
         """:meth:`_initial` on plain lists, for small tasks (no numpy call overhead).
@@ -308,7 +330,7 @@ class RelaxedExcuseTask:
         whole search, so that is where the stronger set pays; at other nodes
         the second run rarely wins and would cost a third of the bound.
         """
-        if self.goal.size == 0:
+        if not self.goal_list:
             return Bound(0, [], [])
         if self.small:
             true, cost = self._initial_lists(state, changes)
