@@ -5,8 +5,9 @@ witness).  This module makes it short and, where it can, proves it optimal:
 
 * :func:`shorten_plan` removes loops (a state met twice) and every action
   whose removal leaves a valid plan (greedy action elimination);
-* :class:`~guided_lfd.relaxation.LmCut` (LM-cut, Helmert and Domshlak
-  2009) gives an admissible lower bound on the cost of any plan from a state;
+* :meth:`~guided_lfd.relaxation.RelaxedTask.lmcut` (LM-cut, Helmert and
+  Domshlak 2009) gives an admissible lower bound on the cost of any plan
+  from a state;
 * :func:`certified_optimal` says whether a plan's cost equals that bound,
   which proves the plan optimal.  When it does not, the caller falls back to
   an optimal planner.
@@ -17,9 +18,9 @@ from __future__ import annotations
 from typing import Sequence
 
 from guided_lfd.grounding import GroundAction
-from guided_lfd.relaxation import INF, LmCut
+from guided_lfd.relaxation import RelaxedTask
 
-__all__ = ["INF", "LmCut", "certified_optimal", "is_plan", "shorten_plan"]
+__all__ = ["certified_optimal", "is_plan", "shorten_plan"]
 
 
 def is_plan(plan: Sequence[GroundAction], state: int, goal_pos: int, goal_neg: int) -> bool:
@@ -74,13 +75,10 @@ def shorten_plan(plan: Sequence[GroundAction], state: int, goal_pos: int, goal_n
     return current
 
 
-def certified_optimal(plan: Sequence[GroundAction], state: int, actions: Sequence[GroundAction],
-                      goal_pos: int, goal_neg: int, costs: dict[str, int] | None = None) -> bool:
+def certified_optimal(plan: Sequence[GroundAction], state: int, relaxed: RelaxedTask) -> bool:
     """Whether ``plan``'s cost equals LM-cut's lower bound from ``state`` (so it is optimal).
 
-    ``actions`` must contain every action an optimal plan may use (all
-    relevant ones).
+    ``relaxed`` must be built over every action an optimal plan may use (all
+    relevant ones) and the task's goal.
     """
-    cost_of = (lambda a: costs.get(a.name, 1)) if costs else (lambda a: 1)
-    lmcut = LmCut(actions, goal_pos, goal_neg, [cost_of(a) for a in actions])
-    return lmcut.value(state) >= sum(cost_of(a) for a in plan)
+    return relaxed.lmcut(state) >= relaxed.plan_cost(plan)

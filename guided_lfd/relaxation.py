@@ -8,11 +8,15 @@ that delete ``p``.  Fact 0 is "true at the start" (the precondition of
 precondition-free actions), fact 1 the goal, added by an artificial goal
 action of cost 0 (the last action).
 
-* :class:`LmCut` (Helmert and Domshlak 2009): an admissible lower bound on
-  the cost of a plan, used to prove plans optimal;
-* :class:`FFHeuristic` (Hoffmann and Nebel 2001): the length of a relaxed
-  plan from h^add's best supporters and the helpful actions it suggests,
-  used to guide the excuse search's reachability checks.
+* :meth:`RelaxedTask.lmcut` (Helmert and Domshlak 2009): an admissible
+  lower bound on the cost of a plan, used to prove plans optimal;
+* :meth:`RelaxedTask.relaxed_plan` and :meth:`RelaxedTask.helpful` (the FF
+  heuristic, Hoffmann and Nebel 2001): a relaxed plan from h^add's best
+  supporters and the helpful actions it suggests, used to guide the excuse
+  search's reachability checks.
+
+One table serves both, so the oracle's hill-climb and the optimality proof
+of the robot's plan share it.
 """
 
 from __future__ import annotations
@@ -25,7 +29,7 @@ from guided_lfd.grounding import GroundAction, bits, mask_of
 INF = float("inf")
 
 
-class RelaxedTables:
+class RelaxedTask:
     """The relaxed facts and actions of a fixed set of ground actions (costs default to 1)."""
 
     def __init__(self, actions: Sequence[GroundAction], goal_pos: int, goal_neg: int,
@@ -63,14 +67,18 @@ class RelaxedTables:
             for f in add[ai]:
                 self.achievers[f].append(ai)
         self.negated, self.mentioned = mask_of(negated_ids), mask_of(mentioned_ids)
+        self._cost_by_name: dict[str, int] | None = None
 
     def _true_facts(self, state: int) -> list[int]:
         pos_id, neg_id = self.pos_id, self.neg_id
         return [0, *(pos_id[i] for i in bits(state & self.mentioned)), *(neg_id[i] for i in bits(self.negated & ~state))]
 
 
-class LmCut(RelaxedTables):
-    """LM-cut; :meth:`value` evaluates a state."""
+    def plan_cost(self, plan: Sequence[GroundAction]) -> int:
+        """The cost of ``plan`` (its actions must be among this task's)."""
+        if self._cost_by_name is None:
+            self._cost_by_name = {a.name: c for a, c in zip(self.actions, self.base_costs)}
+        return sum(self._cost_by_name[a.name] for a in plan)
 
     def _hmax(self, true: list[int], cost: list[int]) -> tuple[list[float], list[int]]:
         """h^max of every fact and each reached action's precondition choice (-1 = not reached)."""
@@ -105,7 +113,7 @@ class LmCut(RelaxedTables):
                         push(heap, (reach, q))
         return h, pcf
 
-    def value(self, state: int) -> float:
+    def lmcut(self, state: int) -> float:
         """The LM-cut lower bound on the cost of a plan from ``state`` (INF = unsolvable)."""
         cost = list(self.base_costs)
         true = self._true_facts(state)
@@ -155,10 +163,6 @@ class LmCut(RelaxedTables):
             total += m
             for ai in cut:
                 cost[ai] -= m
-
-
-class FFHeuristic(RelaxedTables):
-    """The FF heuristic: a relaxed plan from h^add's best supporters, and its helpful actions."""
 
     def relaxed_plan(self, state: int) -> tuple[list[int], set[int]] | None:
         """(relaxed plan as action indices, facts it needs that ``state`` lacks); None = relaxed dead end."""

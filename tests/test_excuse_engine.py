@@ -168,6 +168,14 @@ def small_tasks(draw):
     return domain, problem
 
 
+def _parse_random(tmp_path_factory, name: str, pddl: tuple[str, str]):
+    """Write a :func:`small_tasks` example to a fresh folder and read it back."""
+    folder = tmp_path_factory.mktemp(name)
+    (folder / "d.pddl").write_text(pddl[0])
+    (folder / "p.pddl").write_text(pddl[1])
+    return parse_task(folder / "d.pddl", folder / "p.pddl")
+
+
 def brute_force(domain, problem, groups, max_size=3):
     """All minimal excuses by enumeration, with an independent BFS for reachability."""
     from guided_lfd.grounding import ground_atoms
@@ -227,10 +235,7 @@ def brute_force(domain, problem, groups, max_size=3):
 @settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow, HealthCheck.function_scoped_fixture])
 @given(pddl=small_tasks())
 def test_strategy_matches_brute_force(tmp_path_factory, strategy, semantics, pddl):
-    folder = tmp_path_factory.mktemp("rnd")
-    (folder / "d.pddl").write_text(pddl[0])
-    (folder / "p.pddl").write_text(pddl[1])
-    domain, problem = parse_task(folder / "d.pddl", folder / "p.pddl")
+    domain, problem = _parse_random(tmp_path_factory, "rnd", pddl)
     report = find_excuses(domain, problem, ExcuseOptions(semantics=semantics, strategy=strategy,
                                                          all_minimal=True, max_size=3))
     groups = report.checked_groups
@@ -255,10 +260,7 @@ def test_strategy_matches_brute_force(tmp_path_factory, strategy, semantics, pdd
 @given(pddl=small_tasks(), costs=st.lists(st.tuples(st.sampled_from(["p0", "p1", "u0", "u1"]), st.integers(0, 4)),
                                           max_size=3))
 def test_landmark_matches_baseline_with_costs(tmp_path_factory, semantics, pddl, costs):
-    folder = tmp_path_factory.mktemp("rndc")
-    (folder / "d.pddl").write_text(pddl[0])
-    (folder / "p.pddl").write_text(pddl[1])
-    domain, problem = parse_task(folder / "d.pddl", folder / "p.pddl")
+    domain, problem = _parse_random(tmp_path_factory, "rndc", pddl)
     specs = [f"{p}={c}" for p, c in dict(costs).items() if p in domain.predicates]
     found = {}
     for strategy in ("landmark", "baseline"):
@@ -279,10 +281,7 @@ def test_both_lmcut_implementations_match_brute_force(tmp_path_factory, monkeypa
     from guided_lfd.excuse import lmcut
 
     monkeypatch.setattr(lmcut, "SMALL_TASK_ACTIONS", 10**9 if small else 0)
-    folder = tmp_path_factory.mktemp("rndl")
-    (folder / "d.pddl").write_text(pddl[0])
-    (folder / "p.pddl").write_text(pddl[1])
-    domain, problem = parse_task(folder / "d.pddl", folder / "p.pddl")
+    domain, problem = _parse_random(tmp_path_factory, "rndl", pddl)
     for semantics in Semantics:
         report = find_excuses(domain, problem, ExcuseOptions(semantics=semantics, all_minimal=True, max_size=3))
         size, expected = brute_force(domain, problem, report.checked_groups)
@@ -297,10 +296,7 @@ def test_hill_climbing_oracle_matches_brute_force(tmp_path_factory, monkeypatch,
     from guided_lfd.excuse import reach
 
     monkeypatch.setattr(reach, "GUIDED_MIN_ACTIONS", 0)
-    folder = tmp_path_factory.mktemp("rndh")
-    (folder / "d.pddl").write_text(pddl[0])
-    (folder / "p.pddl").write_text(pddl[1])
-    domain, problem = parse_task(folder / "d.pddl", folder / "p.pddl")
+    domain, problem = _parse_random(tmp_path_factory, "rndh", pddl)
     for semantics in Semantics:
         report = find_excuses(domain, problem, ExcuseOptions(semantics=semantics, all_minimal=True, max_size=3))
         size, expected = brute_force(domain, problem, report.checked_groups)

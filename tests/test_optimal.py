@@ -8,7 +8,8 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 
 from guided_lfd.grounding import ground
-from guided_lfd.optimal import INF, LmCut, certified_optimal, is_plan, shorten_plan
+from guided_lfd.optimal import certified_optimal, is_plan, shorten_plan
+from guided_lfd.relaxation import INF, RelaxedTask
 from guided_lfd.pddl.reader import parse_task
 from guided_lfd.planning import find_plan
 from conftest import BLOCKS, kitchen
@@ -42,7 +43,7 @@ def _task_from_text(tmp_path, domain_text: str, problem_text: str):
 @given(small_tasks())
 def test_lmcut_is_admissible_and_detects_unsolvable_tasks(tmp_path, pddl):
     task = _task_from_text(tmp_path, *pddl)
-    h = LmCut(task.actions, task.goal_pos, task.goal_neg).value(task.init)
+    h = RelaxedTask(task.actions, task.goal_pos, task.goal_neg).lmcut(task.init)
     optimum = _optimal_length(task, task.init)
     if optimum is None:
         assert h <= INF  # relaxed-solvable tasks may still be unsolvable
@@ -62,7 +63,7 @@ def test_shortened_plans_stay_plans_and_never_grow(tmp_path, pddl):
     assert is_plan(short, task.init, task.goal_pos, task.goal_neg)
     assert len(short) <= len(plan)
     optimum = _optimal_length(task, task.init)
-    if certified_optimal(short, task.init, task.actions, task.goal_pos, task.goal_neg):
+    if certified_optimal(short, task.init, RelaxedTask(task.actions, task.goal_pos, task.goal_neg)):
         assert len(short) == optimum
 
 
@@ -70,8 +71,8 @@ def test_lmcut_matches_optimum_on_kitchen_1_and_certifies_its_plan():
     domain, problem = parse_task(*kitchen(1, "human"))
     task = ground(domain, problem)
     plan = find_plan(task).plan
-    assert LmCut(task.actions, task.goal_pos, task.goal_neg).value(task.init) == len(plan) == 3
-    assert certified_optimal(plan, task.init, task.actions, task.goal_pos, task.goal_neg)
+    assert RelaxedTask(task.actions, task.goal_pos, task.goal_neg).lmcut(task.init) == len(plan) == 3
+    assert certified_optimal(plan, task.init, RelaxedTask(task.actions, task.goal_pos, task.goal_neg))
 
 
 def test_shorten_plan_cuts_loops_and_useless_steps():
@@ -90,7 +91,7 @@ def test_shorten_plan_cuts_loops_and_useless_steps():
 def test_lmcut_on_blocks_tasks_never_exceeds_the_optimum():
     domain, problem = parse_task(BLOCKS / "domain.pddl", BLOCKS / "task02.pddl")
     task = ground(domain, problem)
-    h = LmCut(task.actions, task.goal_pos, task.goal_neg).value(task.init)
+    h = RelaxedTask(task.actions, task.goal_pos, task.goal_neg).lmcut(task.init)
     assert 0 < h <= _optimal_length(task, task.init)
 
 
@@ -98,4 +99,4 @@ def test_lmcut_unreachable_goal_is_infinite(tmp_path):
     domain = ("(define (domain d) (:requirements :strips) (:predicates (p) (q)) "
               "(:action a :parameters () :precondition (and (p)) :effect (and (p))))")
     task = _task_from_text(tmp_path, domain, "(define (problem x) (:domain d) (:init (p)) (:goal (and (q))))")
-    assert LmCut(task.actions, task.goal_pos, task.goal_neg).value(task.init) == INF
+    assert RelaxedTask(task.actions, task.goal_pos, task.goal_neg).lmcut(task.init) == INF

@@ -122,8 +122,8 @@ def _changes_of(task: GroundTask, changes: int) -> list[Change]:
     return sorted(out, key=lambda c: (c.atom, c.added))
 
 
-def _robot_plan(task: GroundTask, space: ChangeSpace, state: int, fallback: list[GroundAction],
-                optimal: bool, deadline: float | None) -> tuple[list[GroundAction], bool]:
+def _robot_plan(task: GroundTask, space: ChangeSpace, oracle: ReachabilityOracle, state: int,
+                fallback: list[GroundAction], optimal: bool, deadline: float | None) -> tuple[list[GroundAction], bool]:
     """An optimal robot plan from ``state`` if it can be had in time, else ``fallback``.
 
     The search's witness is shortened first; when its length meets LM-cut's
@@ -136,7 +136,7 @@ def _robot_plan(task: GroundTask, space: ChangeSpace, state: int, fallback: list
         return fallback, False
     try:
         with watchdog(deadline, "optimality check", grace=0.0):
-            if certified_optimal(fallback, state, space.relevant_actions, *task_goal):
+            if certified_optimal(fallback, state, oracle.relaxed_task()):
                 return fallback, True
     except SearchTimeout:
         return fallback, False
@@ -233,7 +233,7 @@ class _Run:
 
     def execute(self) -> ExcuseReport:
         """Ground, build the change space, check solvability, search, and plan from each excuse."""
-        options, task = self.options, None
+        options = self.options
         fixed = options.fixed_predicates(self.domain)
         task = ground(self.domain, self.problem, fixed=fixed, deadline=self.deadline)
         groups: list[MutexGroup] = []
@@ -269,7 +269,7 @@ class _Run:
                 return self.report("timeout", candidates=0, planner_calls=1, phase=self.phase)
         if plan0 is not None:
             self._enter("robot plan")
-            plan, _ = _robot_plan(task, space, task.init, plan0, options.optimal_plans, self.deadline)
+            plan, _ = _robot_plan(task, space, oracle, task.init, plan0, options.optimal_plans, self.deadline)
             _verify(self.domain, self.problem, [], plan, space)
             return self.report("already-solvable", [a.name for a in plan], candidates=0, planner_calls=1)
 
@@ -284,7 +284,7 @@ class _Run:
         self.phase = "robot plan"
         for changes in outcome.solutions:
             state = task.init ^ changes
-            plan, optimal = _robot_plan(task, space, state, outcome.plans[changes], options.optimal_plans,
+            plan, optimal = _robot_plan(task, space, oracle, state, outcome.plans[changes], options.optimal_plans,
                                         self.deadline)
             change_list = _changes_of(task, changes)
             _verify(self.domain, self.problem, change_list, plan, space)

@@ -27,7 +27,7 @@ from dataclasses import dataclass
 from guided_lfd.errors import SearchTimeout
 from guided_lfd.excuse.space import ChangeSpace
 from guided_lfd.grounding import GroundAction, bits
-from guided_lfd.relaxation import FFHeuristic
+from guided_lfd.relaxation import RelaxedTask
 
 #: Relevant actions from which reachability checks first hill-climb on h^FF.
 GUIDED_MIN_ACTIONS = 1000
@@ -63,7 +63,7 @@ class ReachabilityOracle:
         # Large tasks first try hill-climbing on h^FF (see _hill_climb); on
         # small ones the goal-count search is cheaper than one h^FF pass.
         self.guided = len(self.actions) >= GUIDED_MIN_ACTIONS
-        self._ff: FFHeuristic | None = None
+        self._relaxed: RelaxedTask | None = None
         # Index actions by one positive precondition so successor generation
         # skips most inapplicable actions; actions without one are always tried
         # (bucket 0, entries with pre_pos = 0).
@@ -92,10 +92,11 @@ class ReachabilityOracle:
     def _goal_distance(self, state: int) -> int:
         return (self.goal_pos & ~state).bit_count() + (self.goal_neg & state).bit_count()
 
-    def _ff_heuristic(self) -> FFHeuristic:
-        if self._ff is None:
-            self._ff = FFHeuristic(self.actions, self.goal_pos, self.goal_neg)
-        return self._ff
+    def relaxed_task(self) -> RelaxedTask:
+        """The delete relaxation of the relevant actions (built on first use; shared with the optimality proof)."""
+        if self._relaxed is None:
+            self._relaxed = RelaxedTask(self.actions, self.goal_pos, self.goal_neg)
+        return self._relaxed
 
     def _hill_climb(self, start: int) -> list[tuple[int, GroundAction, int]] | None | bool:
         """Enforced hill-climbing on h^FF with helpful actions (Hoffmann and Nebel 2001).
@@ -108,7 +109,7 @@ class ReachabilityOracle:
         plan-length evaluations, where the goal-count search explores whole
         plateaus of interchangeable objects.
         """
-        ff = self._ff_heuristic()
+        ff = self.relaxed_task()
         mask, actions, goal_pos, goal_neg = self.mask, self.actions, self.goal_pos, self.goal_neg
         first = ff.relaxed_plan(start)
         if first is None:
@@ -155,18 +156,21 @@ class ReachabilityOracle:
             path.extend(steps)
         return path
 
-    def _record(self, path: list[tuple[int, GroundAction, int]]) -> list[GroundAction]:
-        """Remember the states of a found path as alive; the whole plan (path + remembered rest)."""
-        end = path[-1][2] if path else None
+    def _record(self, path: list[tuple[int, GroundAction, int]], end: int) -> list[GroundAction]:
+        """Remember a found path's states as alive; the whole plan: the path to ``end``, then its remembered rest.
+
+        ``end`` is a goal state or a state already known to be alive.
+        """
+        alive = self.alive
         for prev, act, nxt in path:
-            if prev not in self.alive:
-                self.alive[prev] = (act, nxt)
+            if prev not in alive:
+                alive[prev] = (act, nxt)
+        if end not in alive:
+            alive[end] = None
         plan = [act for _, act, _ in path]
         s = end
-        if s is not None and s not in self.alive:
-            self.alive[s] = None
-        while s is not None and self.alive.get(s) is not None:
-            act, s = self.alive[s]  # type: ignore[misc]
+        while alive.get(s) is not None:
+            act, s = alive[s]  # type: ignore[misc]
             plan.append(act)
         return plan
 
@@ -181,7 +185,7 @@ class ReachabilityOracle:
                 return None
             if climbed is not False and climbed:
                 self.stats.hill_climbs += 1
-                return self._record(climbed)
+                return self._record(climbed, climbed[-1][2])
         parents: dict[int, tuple[int, GroundAction] | None] = {start: None}
         counter = 0
         heap = [(self._goal_distance(start), counter, start)]
@@ -236,19 +240,12 @@ class ReachabilityOracle:
             self.dead.update(parents)
             return None
         # Path from start to the meeting state, then the remembered rest.
-        path: list[tuple[int, GroundAction]] = []
+        steps: list[tuple[int, GroundAction, int]] = []
         s = found
         while parents[s] is not None:
             prev, act = parents[s]  # type: ignore[misc]
-            path.append((prev, act))
+            steps.append((prev, act, s))
             s = prev
-        path.reverse()
-        for (prev, act), nxt in zip(path, [p for p, _ in path[1:]] + [found]):
-            self.alive[prev] = (act, nxt)
-        plan = [act for _, act in path]
-        s = found
-        while self.alive.get(s) is not None:
-            act, s = self.alive[s]  # type: ignore[misc]
-            plan.append(act)
-        return plan
+        steps.reverse()
+        return self._record(steps, found)
 
