@@ -12,7 +12,7 @@ from __future__ import annotations
 import heapq
 import time
 from dataclasses import dataclass, field
-from typing import Callable, Protocol
+from typing import Callable, Iterator, Protocol
 
 from guided_lfd.errors import SearchTimeout
 from guided_lfd.excuse.lmcut import INF, Bound, RelaxedExcuseTask
@@ -217,15 +217,59 @@ class LandmarkSearch:
                               "oracle_hill_climbs": oracle.stats.hill_climbs})
 
 
+def colex_subsets(atoms: list[int], size: int, end: int | None = None) -> Iterator[int]:
+    """Every ``size``-subset of ``atoms[:end]`` as a bit mask, in increasing integer order.
+
+    ``atoms`` must be increasing bit indices; then the integer order of the
+    masks is the colexicographic order of the subsets.  Nothing but the current
+    subset is held (a recursion ``size`` deep).
+    """
+    end = len(atoms) if end is None else end
+    if size == 0:
+        yield 0
+        return
+    for k in range(size - 1, end):
+        top = 1 << atoms[k]
+        for rest in colex_subsets(atoms, size - 1, k):
+            yield rest | top
+
+
+def by_weight(atoms: list[int], weights: dict[int, int], max_size: int | None = None) -> Iterator[tuple[int, int]]:
+    """Every subset of ``atoms`` (of at most ``max_size``) as (weight, mask), in non-decreasing weight.
+
+    Atoms are sorted by weight; a subset's successors are "add the next atom"
+    and "replace the last atom by the next one".  That tree reaches every
+    subset exactly once along edges that never lower the weight, so a heap of
+    the open successors, at most one more than the subsets yielded, gives them
+    in order of weight without holding a frontier of every next-size subset.
+    """
+    order = sorted(atoms, key=lambda i: (weights[i], i))
+    yield 0, 0
+    if not order or max_size == 0:
+        return
+    heap: list[tuple[int, int, int]] = [(weights[order[0]], 1 << order[0], 0)]  # (weight, mask, last position)
+    while heap:
+        w, changes, last = heapq.heappop(heap)
+        yield w, changes
+        nxt = last + 1
+        if nxt < len(order):
+            atom, new = order[last], order[nxt]
+            if max_size is None or changes.bit_count() < max_size:
+                heapq.heappush(heap, (w + weights[new], changes | (1 << new), nxt))
+            heapq.heappush(heap, (w - weights[atom] + weights[new], (changes & ~(1 << atom)) | (1 << new), nxt))
+
+
 class BaselineSearch:
     """The paper's method: breadth-first over change sets, a planner call each.
 
     Change sets are enumerated by increasing weight (breadth-first by size for
-    unit costs) over every changeable atom, each generated once (changes added
-    in increasing atom order).  Every candidate whose state does not satisfy
-    the goal (and, for consistent semantics, keeps the invariants) is checked
-    with a fresh pyperplan search (greedy best-first with h_FF) on the full
-    robot task, as the paper's model-space search calls a planner per node.
+    unit costs) over every changeable atom, each generated once.  Every
+    candidate whose state does not satisfy the goal (and, for consistent
+    semantics, keeps the invariants) is checked with a fresh pyperplan search
+    (greedy best-first with h_FF) on the full robot task, as the paper's
+    model-space search calls a planner per node.  The enumeration holds no
+    frontier of change sets (a heap of at most the candidates tried, for
+    unequal weights), so an abandoned search is cheap to free.
     """
 
     name = "baseline"
@@ -239,19 +283,18 @@ class BaselineSearch:
         task = space.task
         atoms = list(bits(space.changeable))
         weights = space.weights
-        heap: list[tuple[int, int, int]] = [(0, 0, -1)]  # (weight, changes, index of last atom)
         best: int | None = None
         solutions: list[int] = []
         plans: dict[int, list[GroundAction]] = {}
         candidates = calls = 0
-        size_pruned = False
         try:
-            while heap:
-                w, changes, last = heapq.heappop(heap)
+            for w, changes in self._candidates(atoms, weights, limits.max_size):
                 if best is not None and w > best:
                     break
                 if _timed_out(limits):
                     raise SearchTimeout("excuse search exceeded its time limit")
+                if any(s & changes == s for s in solutions):
+                    continue  # a superset of an excuse is not minimal
                 state = task.init ^ changes
                 candidates += 1
                 if progress and not candidates % 200:
@@ -266,17 +309,24 @@ class BaselineSearch:
                         plans[changes] = result.plan
                         if not limits.all_minimal or len(solutions) >= limits.max_solutions:
                             break
-                        continue
-                if limits.max_size is not None and changes.bit_count() >= limits.max_size:
-                    size_pruned = True
-                    continue
-                for k in range(last + 1, len(atoms)):
-                    i = atoms[k]
-                    heapq.heappush(heap, (w + weights[i], changes | (1 << i), k))
         except SearchTimeout:
             return SearchOutcome(solutions, plans, "timeout", candidates, calls, candidates)
+        # Sets beyond the size bound were never tried: no excuse found is then not a proof of none.
+        size_pruned = limits.max_size is not None and limits.max_size < len(atoms)
         status = "found" if solutions else ("size-limit" if size_pruned else "none")
         return SearchOutcome(sorted(solutions), plans, status, candidates, calls, candidates)
+
+    @staticmethod
+    def _candidates(atoms: list[int], weights: dict[int, int], max_size: int | None) -> Iterator[tuple[int, int]]:
+        """(weight, change set) in non-decreasing weight; for equal weights by size, then integer order."""
+        if len({weights[i] for i in atoms}) <= 1:
+            unit = weights[atoms[0]] if atoms else 1
+            top = len(atoms) if max_size is None else min(max_size, len(atoms))
+            for size in range(top + 1):
+                for changes in colex_subsets(atoms, size):
+                    yield size * unit, changes
+            return
+        yield from by_weight(atoms, weights, max_size)
 
 
 #: Registered strategies by name; the first is the default.
