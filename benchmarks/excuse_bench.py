@@ -41,6 +41,9 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--strategies", default="landmark,baseline")
     parser.add_argument("--semantics", default="literal,consistent")
     parser.add_argument("--only", default="", help="comma-separated substrings of task ids to run")
+    parser.add_argument("--stop-after-unfinished", default=",".join(benchmark.STOP_AFTER_UNFINISHED),
+                        help="strategies that skip a family's (domain, removed action, semantics) later tasks "
+                             "after its first unfinished one, counted unsolved at the limit ('' = none)")
     parser.add_argument("--executor", choices=["local", "dask"], default="local")
     parser.add_argument("--scheduler", default=None, help="Dask scheduler address (default: a local cluster)")
     args = parser.parse_args(argv)
@@ -72,11 +75,12 @@ def main(argv: list[str] | None = None) -> int:
             done[0] += 1
             log.append(row)
             print(f"[{done[0]}/{total}] {row['id']} {row['strategy']} {row['semantics']}: "
-                  f"{row['status']} size={row['size']} {row['time_s']}s", file=sys.stderr, flush=True)
+                  f"{row['status']} size={row['size']} {row['wall_s']}s", file=sys.stderr, flush=True)
 
         benchmark.run_suite(suite, args.strategies.split(","), args.semantics.split(","), args.time_limit,
-                            args.jobs, args.executor, args.scheduler, progress, skip=log.done,
-                            memory_limit_mb=args.memory_limit or None)
+                            args.jobs, args.executor, args.scheduler, progress, previous=log.rows,
+                            memory_limit_mb=args.memory_limit or None,
+                            stop_after_unfinished=[s for s in args.stop_after_unfinished.split(",") if s])
         rows = sorted(benchmark.read_results(log.path), key=lambda r: (r["id"], r["semantics"], r["strategy"]))
         benchmark.write_results(rows, results_csv)
         log.path.unlink()

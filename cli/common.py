@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING, Annotated, Callable, TypeVar
 import typer
 
 from cli.startup import resume_gc
-from guided_lfd.errors import EXIT_INTERNAL, GuidedLfdError, OptionError
+from guided_lfd.errors import EXIT_INTERNAL, EXIT_MEMORY, GuidedLfdError, OptionError
 from guided_lfd.io import write_text
 
 if TYPE_CHECKING:
@@ -160,8 +160,13 @@ def command(fn: F) -> F:
     def wrapper(*args, **kwargs):
         resume_gc()  # start-up is over (see cli/startup.py)
         ui.quiet = bool(kwargs.get("quiet", False))
+        out_of_memory = False
         try:
             return fn(*args, **kwargs)
+        except MemoryError:
+            # Only a flag here: the traceback still holds what filled the memory,
+            # which is freed once the handler is left.
+            out_of_memory = True
         except typer.Exit:
             raise
         except GuidedLfdError as exc:
@@ -178,6 +183,9 @@ def command(fn: F) -> F:
                 raise
             ui.error(f"internal error: {type(exc).__name__}: {exc} (please report; GUIDED_LFD_DEBUG=1 shows the traceback)")
             raise typer.Exit(EXIT_INTERNAL) from None
+        if out_of_memory:
+            ui.error("out of memory: the run needed more memory than the process may use")
+            raise typer.Exit(EXIT_MEMORY)
 
     return wrapper  # type: ignore[return-value]
 

@@ -19,6 +19,7 @@ code  meaning
 13    no excuse within ``--max-size``
 20    time limit reached
 21    task too large to ground (atom or action limit)
+22    out of memory (the process's address-space limit was reached)
 30    input file missing, unreadable or empty
 31    PDDL syntax error
 32    PDDL semantic error (unknown object, predicate, type, arity)
@@ -44,6 +45,7 @@ EXIT_PLAN_INVALID = 12
 EXIT_NO_EXCUSE_WITHIN_LIMIT = 13
 EXIT_TIME_LIMIT = 20
 EXIT_TOO_LARGE = 21
+EXIT_MEMORY = 22
 EXIT_INPUT_FILE = 30
 EXIT_PDDL_SYNTAX = 31
 EXIT_PDDL_SEMANTIC = 32
@@ -65,6 +67,7 @@ EXIT_CODES: dict[int, str] = {
     EXIT_NO_EXCUSE_WITHIN_LIMIT: "no excuse within --max-size",
     EXIT_TIME_LIMIT: "time limit reached",
     EXIT_TOO_LARGE: "task too large to ground",
+    EXIT_MEMORY: "out of memory",
     EXIT_INPUT_FILE: "input file missing, unreadable or empty",
     EXIT_PDDL_SYNTAX: "PDDL syntax error",
     EXIT_PDDL_SEMANTIC: "PDDL semantic error",

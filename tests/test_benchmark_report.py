@@ -94,3 +94,39 @@ def test_summary_lists_memouts(tmp_path: Path):
     text = summary_markdown(rows, 60, "cmd", [], tmp_path)
     assert "Runs that exceeded the memory cap (memout, counted as unsolved): 1." in text
     assert "- t9 baseline literal" in text
+
+
+def test_nontrivial_whole_run_speedup_counts_unfinished_runs_at_the_limit():
+    rows = [
+        row("t1", "literal", "landmark", "excuse-found", 1, total=0.5),   # trivial: baseline 0.6 s
+        row("t1", "literal", "baseline", "excuse-found", 1, total=0.6),
+        row("t2", "literal", "landmark", "excuse-found", 2, total=0.5),   # baseline 5 s: 10x
+        row("t2", "literal", "baseline", "excuse-found", 2, total=5.0),
+        row("t3", "literal", "landmark", "excuse-found", 3, total=2.0),   # baseline timeout: 60 / 2 = 30x
+        row("t3", "literal", "baseline", "timeout", total=61.5),
+        row("t4", "literal", "landmark", "excuse-found", 3, total=1.0),   # baseline not run: 60x
+        row("t4", "literal", "baseline", "not-run", total=""),
+        row("t5", "literal", "landmark", "timeout", total=60.2),          # neither: left out
+        row("t5", "literal", "baseline", "timeout", total=60.4),
+    ]
+    for r in rows:
+        r["wall_s"] = r["time_s"]
+    lit = by_label(rows)["literal"]
+    assert lit.nontrivial == 3
+    assert lit.median_nontrivial_speedup == pytest.approx(30)
+
+
+def test_summary_reports_overruns_of_the_time_limit_and_runs_not_made(tmp_path: Path):
+    rows = [row("a-task05-x", "literal", "landmark", "excuse-found", 1, total=0.5),
+            row("a-task05-x", "literal", "baseline", "timeout", total=61.7),
+            row("a-task06-x", "literal", "landmark", "timeout", total=60.3),
+            row("a-task06-x", "literal", "baseline", "not-run", total="")]
+    for r in rows:
+        r["wall_s"] = r["time_s"]
+        r["task"] = r["id"].split("-")[1]
+    text = summary_markdown(rows, 60, "cmd", [], tmp_path)
+    assert ("longest whole run 61.70 s (a-task05-x baseline literal: timeout), +1.70 s against the 60 s limit; "
+            "runs more than 1 s past it: 1.") in text
+    assert "- a-task05-x baseline literal: 61.70 s (timeout)" in text
+    assert "Runs not made: 1." in text
+    assert "| grown | literal | 2 | 1 (50.0%) | 0 (0.0%) | 1 |" in text

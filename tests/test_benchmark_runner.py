@@ -1,4 +1,4 @@
-"""The benchmark runner: result rows for runs that fail, and the per-run memory cap."""
+"""The benchmark runner: whole command-line runs, rows for runs that fail, the memory cap, chains."""
 
 from __future__ import annotations
 
@@ -6,37 +6,59 @@ import subprocess
 import sys
 from pathlib import Path
 
-from conftest import ROOT
+import pytest
+
+from conftest import ROOT, kitchen
 from guided_lfd import benchmark
-from guided_lfd.benchmark import RESULT_FIELDS, read_suite, run_one
+from guided_lfd.benchmark import RESULT_FIELDS, BenchTask, read_suite, run_one
 
 
 def kitchen_task():
     return next(t for t in read_suite(ROOT / "benchmarks" / "suite.csv", ROOT) if t.id == "kitchen-1-problem")
 
 
-def test_a_run_that_runs_out_of_memory_is_recorded_as_memout(monkeypatch):
-    import guided_lfd.excuse.engine as engine
+def fake_run(monkeypatch, script: str) -> None:
+    """Make every run execute ``script`` in a fresh interpreter instead of guided-lfd."""
+    monkeypatch.setattr(benchmark, "command_line", lambda *args: [sys.executable, "-c", script])
 
-    def exhausted(*args, **kwargs):
-        raise MemoryError
 
-    monkeypatch.setattr(engine, "find_excuses", exhausted)
-    row = run_one(kitchen_task(), "baseline", "consistent", 5.0)
+def test_a_run_is_the_command_line_with_its_wall_time():
+    row = run_one(kitchen_task(), "landmark", "consistent", 30.0)
     assert list(row) == RESULT_FIELDS
-    assert (row["status"], row["size"], row["excuse"]) == ("memout", "", "")
+    assert (row["status"], row["size"], row["excuse"], row["exit_code"]) == ("excuse-found", 1, "+(open pinkdrawer)", 0)
+    # The whole process (start-up included) takes longer than the run's own clock.
+    assert float(row["wall_s"]) > float(row["time_s"]) > float(row["search_time_s"]) >= 0
 
 
-def test_a_run_that_fails_is_recorded_as_error(monkeypatch):
-    import guided_lfd.excuse.engine as engine
+def test_the_command_is_what_a_user_types(tmp_path):
+    task = next(t for t in read_suite(ROOT / "benchmarks" / "suite.csv", ROOT) if t.id == "gripper-task01-move")
+    robot = benchmark.robot_domain_file(task, tmp_path)
+    cmd = benchmark.command_line(task, "baseline", "literal", 60.0, robot)
+    assert cmd[1:] == ["excuse", str(robot), task.problem_file, "--semantics", "literal", "--strategy", "baseline",
+                       "--time-limit", "60", "--json", "--quiet", "--fixed-from", task.fixed_from]
+    from guided_lfd.pddl.reader import parse_domain
 
-    def broken(*args, **kwargs):
-        raise RuntimeError("internal check failed")
+    assert [a.name for a in parse_domain(robot).actions] == ["pick", "drop"]
 
-    monkeypatch.setattr(engine, "find_excuses", broken)
+
+def test_a_run_that_runs_out_of_memory_is_recorded_as_memout(monkeypatch):
+    fake_run(monkeypatch, "raise SystemExit(22)")
+    row = run_one(kitchen_task(), "baseline", "consistent", 5.0)
+    assert (row["status"], row["size"], row["excuse"], row["exit_code"]) == ("memout", "", "", 22)
+
+
+def test_a_process_that_dies_is_recorded_as_crashed_with_its_last_words(monkeypatch):
+    fake_run(monkeypatch, "import sys; print('boom', file=sys.stderr); raise SystemExit(3)")
     row = run_one(kitchen_task(), "landmark", "literal", 5.0)
-    assert row["status"] == "error"
-    assert row["excuse"] == "RuntimeError: internal check failed"
+    assert (row["status"], row["excuse"], row["exit_code"]) == ("crashed", "boom", 3)
+
+
+def test_a_run_far_past_its_limit_is_killed_as_a_timeout(monkeypatch):
+    fake_run(monkeypatch, "import time; time.sleep(30)")
+    monkeypatch.setattr(benchmark, "KILL_GRACE_S", 0.5)
+    row = run_one(kitchen_task(), "landmark", "literal", 0.5)
+    assert row["status"] == "timeout" and row["excuse"] == "killed 0.5 s past the limit"
+    assert 1.0 <= float(row["wall_s"]) < 10
 
 
 def printed_by(code: str) -> list[str]:
@@ -62,27 +84,64 @@ def test_memory_limit_stays_below_a_hard_limit_already_in_force():
     assert printed_by(code) == ["True"]
 
 
-def test_a_process_that_dies_is_recorded_as_crashed_with_its_exit_code(monkeypatch):
-    import os
-
-    def dies(*args, **kwargs):
-        os._exit(3)
-
-    monkeypatch.setattr(benchmark, "run_one", dies)  # the forked child sees the patched module
-    rows = benchmark.run_suite([kitchen_task()], ["landmark"], ["literal"], 30.0, jobs=1)
-    assert [(r["status"], r["excuse"]) for r in rows] == [("crashed", "process ended with exit code 3")]
+def test_the_memory_cap_reaches_the_run(monkeypatch):
+    fake_run(monkeypatch, "import resource, sys\n"
+                          "sys.exit(0 if resource.getrlimit(resource.RLIMIT_AS)[0] == 3000 * 2 ** 20 else 5)")
+    assert run_one(kitchen_task(), "landmark", "literal", 5.0, memory_limit_mb=3000)["exit_code"] == 0
 
 
-def test_memout_during_invariant_synthesis_stays_a_memout(monkeypatch):
+def test_memout_during_invariant_synthesis_is_the_memout_exit(runner, app, monkeypatch):
     from fast_downward.translate import invariant_finder
 
     def exhausted(*args, **kwargs):
         raise MemoryError
 
     monkeypatch.setattr(invariant_finder, "find_invariants", exhausted)
-    assert run_one(kitchen_task(), "landmark", "consistent", 5.0)["status"] == "memout"
+    domain, problem = kitchen(1)
+    assert runner.invoke(app, ["excuse", str(domain), str(problem), "--semantics", "consistent"]).exit_code == 22
 
 
-def test_run_suite_records_each_run_in_its_own_process(tmp_path: Path):
-    rows = benchmark.run_suite([kitchen_task()], ["landmark"], ["literal"], 30.0, jobs=1, memory_limit_mb=8192)
-    assert [(r["status"], r["size"], r["excuse"]) for r in rows] == [("excuse-found", 1, "+(open pinkdrawer)")]
+def family(n: int) -> list[BenchTask]:
+    return [BenchTask(f"d-task0{i}-a", "d", f"task0{i}", "a", "", "", "") for i in range(1, n + 1)]
+
+
+def test_a_stopping_strategy_gives_up_on_a_family_after_its_first_unfinished_task(monkeypatch):
+    statuses = {"task01": "excuse-found", "task02": "timeout", "task03": "excuse-found"}
+    ran = []
+
+    def fake(task, strategy, semantics, *args):
+        ran.append((task.task, strategy))
+        return benchmark._complete({"id": task.id, "task": task.task, "strategy": strategy, "semantics": semantics,
+                                    "status": statuses[task.task] if strategy == "baseline" else "excuse-found"})
+
+    monkeypatch.setattr(benchmark, "run_one", fake)
+    rows = benchmark.run_suite(list(reversed(family(3))), ["landmark", "baseline"], ["literal"], 60.0, jobs=2)
+    assert sorted(ran) == [("task01", "baseline"), ("task01", "landmark"), ("task02", "baseline"),
+                           ("task02", "landmark"), ("task03", "landmark")]
+    by = {(r["task"], r["strategy"]): r for r in rows}
+    assert by["task03", "baseline"]["status"] == "not-run"
+    assert by["task03", "baseline"]["excuse"] == "not run: task02 was not finished"
+
+
+def test_a_resumed_run_keeps_its_rows_and_its_stops(monkeypatch):
+    ran = []
+
+    def fake(task, strategy, semantics, *args):
+        ran.append(task.task)
+        return benchmark._complete({"id": task.id, "task": task.task, "strategy": strategy, "semantics": semantics,
+                                    "status": "excuse-found"})
+
+    monkeypatch.setattr(benchmark, "run_one", fake)
+    previous = [benchmark._complete({"id": "d-task01-a", "task": "task01", "strategy": "baseline",
+                                     "semantics": "literal", "status": "timeout"})]
+    rows = benchmark.run_suite(family(2), ["baseline"], ["literal"], 60.0, jobs=1, previous=previous)
+    assert ran == []
+    assert [r["status"] for r in rows] == ["timeout", "not-run"]
+
+
+@pytest.mark.parametrize("jobs", [1, 2])
+def test_run_suite_records_each_run_in_its_own_process(jobs):
+    rows = benchmark.run_suite([kitchen_task()], ["landmark", "baseline"], ["literal"], 30.0, jobs=jobs,
+                               memory_limit_mb=8192)
+    assert [(r["strategy"], r["status"], r["size"], r["excuse"]) for r in rows] == [
+        ("baseline", "excuse-found", 1, "+(open pinkdrawer)"), ("landmark", "excuse-found", 1, "+(open pinkdrawer)")]

@@ -315,3 +315,19 @@ def test_segment_refuses_to_write_over_its_own_input(runner, app, tmp_path):
     result = runner.invoke(app, ["segment", str(tmp_path / "t.csv"), "-o", str(tmp_path / "t.state.csv")])
     assert result.exit_code == 37 and "is an input of this run" in result.stderr
     assert (tmp_path / "t.state.csv").read_bytes() == before
+
+
+def test_out_of_memory_is_its_own_exit_code(runner, app, monkeypatch, tmp_path):
+    # A MemoryError anywhere in a command is the documented memout code, one line, no traceback,
+    # and the output file is not written.
+    import cli.excuse
+
+    def exhausted(*args, **kwargs):
+        raise MemoryError()
+
+    monkeypatch.setattr(cli.excuse, "find_excuses", exhausted)
+    out = tmp_path / "excuse.json"
+    result = runner.invoke(app, ["excuse", str(DOMAIN), str(PROBLEM), "--json", "-o", str(out)])
+    assert result.exit_code == 22
+    assert one_line(result) == "out of memory: the run needed more memory than the process may use"
+    assert not out.exists()
