@@ -43,7 +43,7 @@ SUBCOMMANDS: dict[str, Subcommand] = {
         "own skills reach the goal. The human then only demonstrates how to reach it.",
     ),
     "plan": Subcommand(
-        "cli.plan", "plan", "Plan with pyperplan; print the plan in IPC format (exit 10 if unsolvable).",
+        "cli.plan", "plan", "Plan optimally (A* with LM-cut); print the plan in IPC format (exit 10 if unsolvable).",
     ),
     "segment": Subcommand(
         "cli.segment", "segment",

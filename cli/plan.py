@@ -23,14 +23,14 @@ def plan(
     domain: Annotated[str, typer.Argument(help="Domain PDDL file ('-' = stdin).")],
     problem: Annotated[str, typer.Argument(help="Problem PDDL file ('-' = stdin).")],
     search: Annotated[
-        str, typer.Option("--search", help=f"Pyperplan configuration: {', '.join(SEARCHES)}.")
+        str, typer.Option("--search", help=f"Search: {', '.join(SEARCHES)} (astar-lmcut is guided-lfd's own; the rest are pyperplan's).")
     ] = DEFAULT_SEARCH,
     output: OutputOption = "-",
     json_out: JsonOption = False,
     time_limit: TimeLimitOption = None,
     quiet: QuietOption = False,
 ) -> None:
-    """Plan with pyperplan; print the plan in IPC format (exit 10 if unsolvable)."""
+    """Plan optimally (A* with LM-cut); print the plan in IPC format (exit 10 if unsolvable)."""
     if search not in SEARCHES:
         raise OptionError(f"--search {search}: unknown search (expected one of: {', '.join(SEARCHES)})")
     time_limit = check_time_limit(time_limit)

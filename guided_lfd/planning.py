@@ -1,8 +1,12 @@
-"""Planning with pyperplan's searches on guided-lfd's ground tasks.
+"""Planning on guided-lfd's ground tasks: guided-lfd's A* with LM-cut, and pyperplan's searches.
 
-The ground task is handed to pyperplan as a :class:`pyperplan.task.Task`;
-negative preconditions and goals, which pyperplan does not support, are
-compiled into complement atoms ``(not-<atom>)`` kept up to date by every action.
+The default, ``astar-lmcut``, is :func:`guided_lfd.search.astar` over the
+actions reachable from the initial state and relevant to the goal.  The
+``pyperplan-*`` configurations (and ``bfs``, ``gbfs-hff``: the baseline's
+planner calls) hand the ground task to pyperplan as a
+:class:`pyperplan.task.Task`; negative preconditions and goals, which
+pyperplan does not support, are compiled into complement atoms
+``(not-<atom>)`` kept up to date by every action.
 """
 
 from __future__ import annotations
@@ -13,18 +17,14 @@ from contextlib import contextmanager
 from dataclasses import dataclass
 from typing import Callable, Iterator
 
-from pyperplan.heuristics.blind import BlindHeuristic
-from pyperplan.heuristics.lm_cut import LmCutHeuristic
-from pyperplan.heuristics.relaxation import hFFHeuristic, hMaxHeuristic
-from pyperplan.search import astar_search, breadth_first_search, greedy_best_first_search
-from pyperplan.task import Operator, Task
-
 from guided_lfd.deadline import deadline_after, watchdog
 from guided_lfd.grounding import GroundAction, GroundTask, bits
 
-#: Registered pyperplan configurations: name -> (search, heuristic or None, optimal?).
+#: Registered configurations: name -> (search, heuristic or None, optimal?).  ``guided`` is
+#: guided-lfd's own A*; the other searches are pyperplan's (imported when used).
 SEARCHES: dict[str, tuple[str, str | None, bool]] = {
-    "astar-lmcut": ("astar", "lmcut", True),
+    "astar-lmcut": ("guided", "lmcut", True),
+    "pyperplan-astar-lmcut": ("astar", "lmcut", True),
     "astar-hmax": ("astar", "hmax", True),
     "bfs": ("bfs", None, True),
     "gbfs-hff": ("gbfs", "hff", False),
@@ -49,6 +49,8 @@ def time_limit(seconds: float | None, what: str = "search") -> Iterator[None]:
 
 def to_pyperplan(task: GroundTask, init: int | None = None, actions: list[GroundAction] | None = None):
     """Build a pyperplan ``Task`` (with complement atoms for negative conditions)."""
+    from pyperplan.task import Operator, Task
+
     init = task.init if init is None else init
     actions = task.actions if actions is None else actions
     negated = task.goal_neg
@@ -90,13 +92,20 @@ def find_plan(
     time_limit_s: float | None = None,
     actions: list[GroundAction] | None = None,
 ) -> PlanResult:
-    """Plan with a registered pyperplan configuration (see :data:`SEARCHES`).
+    """Plan with a registered configuration (see :data:`SEARCHES`).
 
     A ``None`` plan is a proof of unsolvability: all searches registered here
     are complete and exhaust the reachable state space before giving up.
     """
     kind, heuristic, optimal = SEARCHES[search]
     start = time.perf_counter()
+    if kind == "guided":
+        return _guided_astar(task, init, actions, time_limit_s, search, start)
+    from pyperplan.heuristics.blind import BlindHeuristic
+    from pyperplan.heuristics.lm_cut import LmCutHeuristic
+    from pyperplan.heuristics.relaxation import hFFHeuristic, hMaxHeuristic
+    from pyperplan.search import astar_search, breadth_first_search, greedy_best_first_search
+
     ptask = to_pyperplan(task, init, actions)
     heuristics: dict[str, Callable] = {"lmcut": LmCutHeuristic, "hmax": hMaxHeuristic, "hff": hFFHeuristic}
     with time_limit(time_limit_s, "planner"):
@@ -110,6 +119,19 @@ def find_plan(
         return PlanResult(None, search, optimal, elapsed)
     by_name = {a.name: a for a in (task.actions if actions is None else actions)}
     return PlanResult([by_name[op.name] for op in ops], search, optimal, elapsed)
+
+
+def _guided_astar(task: GroundTask, init: int | None, actions: list[GroundAction] | None,
+                  time_limit_s: float | None, search: str, start: float) -> PlanResult:
+    """guided-lfd's A* with LM-cut over the reachable, relevant actions."""
+    from guided_lfd.search import astar, planning_actions
+
+    init = task.init if init is None else init
+    deadline = None if time_limit_s is None else time.monotonic() + time_limit_s
+    usable = planning_actions(task, init, actions)
+    with time_limit(time_limit_s, "planner"):  # LM-cut of one state can be long on a big task
+        plan = astar(usable, init, task.goal_pos, task.goal_neg, deadline=deadline)
+    return PlanResult(plan, search, True, time.perf_counter() - start)
 
 
 def plan_task(domain, problem, search: str = DEFAULT_SEARCH, time_limit_s: float | None = None) -> tuple[GroundTask, PlanResult]:

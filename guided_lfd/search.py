@@ -1,0 +1,171 @@
+"""Optimal planning on guided-lfd's ground tasks: pruning and A* with LM-cut.
+
+* :func:`reachable_actions`: the actions a delete-relaxed run from a state
+  can apply (what a planner's reachability grounding keeps); the others can
+  never be applied in any state reachable from there.
+* :func:`relevant_actions`: of those, the ones backward relevance from the
+  goal keeps (an action that changes no atom the goal depends on is never
+  needed in an optimal plan).
+* :func:`astar`: A* with the LM-cut heuristic of :class:`RelaxedTask` (the
+  heuristic pyperplan's ``astar -H lmcut`` uses, on flat integer tables),
+  states as bit masks, applicable actions found through an index on one
+  precondition each.  The plan is optimal: LM-cut is admissible and A*
+  re-opens a state reached again more cheaply.
+"""
+
+from __future__ import annotations
+
+import heapq
+import itertools
+import time
+from typing import Sequence
+
+from guided_lfd.errors import SearchTimeout
+from guided_lfd.grounding import GroundAction, GroundTask, bits
+from guided_lfd.relaxation import INF, RelaxedTask
+
+
+def reachable_actions(actions: Sequence[GroundAction], state: int) -> list[GroundAction]:
+    """The actions a delete-relaxed run from ``state`` reaches, in their order.
+
+    Negative preconditions are taken as satisfiable (an over-approximation:
+    an atom true now may be deleted later), so nothing applicable in a state
+    reachable from ``state`` is left out.
+    """
+    waiting: dict[int, list[int]] = {}
+    missing = [0] * len(actions)
+    ready: list[int] = []
+    for ai, act in enumerate(actions):
+        need = [i for i in act.pre_pos_ids if not state >> i & 1]
+        missing[ai] = len(need)
+        if not need:
+            ready.append(ai)
+        for i in need:
+            waiting.setdefault(i, []).append(ai)
+    reached = [False] * len(actions)
+    true: set[int] = set()
+    while ready:
+        ai = ready.pop()
+        if reached[ai]:
+            continue
+        reached[ai] = True
+        for i in actions[ai].add_ids:
+            if i in true or state >> i & 1:
+                continue
+            true.add(i)
+            for other in waiting.pop(i, ()):
+                missing[other] -= 1
+                if not missing[other]:
+                    ready.append(other)
+    return [act for ai, act in enumerate(actions) if reached[ai]]
+
+
+def relevant_actions(task: GroundTask, actions: Sequence[GroundAction]) -> list[GroundAction]:
+    """The actions backward relevance from the goal keeps (see ``excuse.space.relevance``)."""
+    from guided_lfd.excuse.space import relevance
+
+    return relevance(task, list(actions))[1]
+
+
+def planning_actions(task: GroundTask, state: int, actions: Sequence[GroundAction] | None = None) -> list[GroundAction]:
+    """The actions an optimal plan from ``state`` may use: reachable, then relevant."""
+    return relevant_actions(task, reachable_actions(task.actions if actions is None else actions, state))
+
+
+class _Successors:
+    """Applicable actions of a state, through an index on one positive precondition per action."""
+
+    def __init__(self, actions: Sequence[GroundAction]) -> None:
+        # Index each action under its precondition that is a key of the fewest
+        # actions so far: buckets stay small, so a state checks few actions.
+        load: dict[int, int] = {}
+        buckets: dict[int, list[int]] = {}
+        self.always: list[int] = []
+        for ai, act in enumerate(actions):
+            if not act.pre_pos_ids:
+                self.always.append(ai)
+                continue
+            key = min(act.pre_pos_ids, key=lambda i: load.get(i, 0))
+            load[key] = load.get(key, 0) + 1
+            buckets.setdefault(key, []).append(ai)
+        self.keys = sorted(buckets)
+        self.mask = sum(1 << k for k in self.keys)
+        self.buckets = buckets
+
+    def candidates(self, state: int) -> list[int]:
+        """Actions whose indexed precondition holds in ``state`` (the others cannot apply)."""
+        out = list(self.always)
+        buckets = self.buckets
+        for k in bits(state & self.mask):
+            out.extend(buckets[k])
+        return out
+
+
+def astar(
+    actions: Sequence[GroundAction],
+    init: int,
+    goal_pos: int,
+    goal_neg: int,
+    relaxed: RelaxedTask | None = None,
+    deadline: float | None = None,
+) -> list[GroundAction] | None:
+    """An optimal plan from ``init`` with ``actions`` (None: proved unsolvable).
+
+    ``relaxed`` is the LM-cut table over the same actions and goal (built
+    here if not given); action costs are its ``base_costs``.
+    Raises :class:`SearchTimeout` past ``deadline`` (a ``time.monotonic()`` value).
+    """
+    actions = list(actions)
+    relaxed = relaxed or RelaxedTask(actions, goal_pos, goal_neg)
+    lmcut = relaxed.lmcut
+    cost = relaxed.base_costs
+    pre_pos = [a.pre_pos for a in actions]
+    pre_neg = [a.pre_neg for a in actions]
+    add = [a.add for a in actions]
+    keep = [~(a.delete & ~a.add) for a in actions]  # adds win over deletes
+    successors = _Successors(actions)
+    h_of: dict[int, float] = {init: lmcut(init)}
+    if h_of[init] == INF:
+        return None
+    g_of: dict[int, int] = {init: 0}
+    parent: dict[int, tuple[int, int]] = {}
+    tie = itertools.count()
+    heap: list[tuple[float, float, int, int, int]] = [(h_of[init], h_of[init], 0, 0, init)]
+    pop, push = heapq.heappop, heapq.heappush
+    expanded = 0
+    # Hot loop: one pass per expansion; plain lists and locals on purpose.
+    while heap:
+        _, _, _, g, state = pop(heap)
+        if g > g_of[state]:
+            continue  # reached again more cheaply since this entry was pushed
+        if state & goal_pos == goal_pos and not state & goal_neg:
+            return _path(actions, parent, state)
+        expanded += 1
+        if deadline is not None and not expanded & 63 and time.monotonic() > deadline:
+            raise SearchTimeout("planner exceeded its time limit")
+        for ai in successors.candidates(state):
+            pp = pre_pos[ai]
+            if state & pp != pp or state & pre_neg[ai]:
+                continue
+            nxt = (state & keep[ai]) | add[ai]
+            ng = g + cost[ai]
+            if ng >= g_of.get(nxt, INF):
+                continue
+            g_of[nxt] = ng
+            parent[nxt] = (state, ai)
+            h = h_of.get(nxt)
+            if h is None:
+                h = h_of[nxt] = lmcut(nxt)
+            if h == INF:
+                continue
+            push(heap, (ng + h, h, next(tie), ng, nxt))
+    return None
+
+
+def _path(actions: list[GroundAction], parent: dict[int, tuple[int, int]], state: int) -> list[GroundAction]:
+    plan: list[GroundAction] = []
+    while state in parent:
+        state, ai = parent[state]
+        plan.append(actions[ai])
+    plan.reverse()
+    return plan
