@@ -30,7 +30,7 @@ def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("command", choices=["generate", "run", "report", "all"])
     parser.add_argument("--ipc", type=Path, default=ROOT / "data" / "benchmarks" / "ipc")
-    parser.add_argument("--tasks", default="task01,task02,task03,task04",
+    parser.add_argument("--tasks", default=",".join(f"task{i:02d}" for i in range(1, 11)),
                         help="comma-separated IPC task names per domain")
     parser.add_argument("--suite", type=Path, default=SUITE)
     parser.add_argument("--results", type=Path, default=RESULTS)
