@@ -26,6 +26,8 @@ RESULT_FIELDS = [
     "wall_s", "exit_code", "time_s", "search_time_s", "candidates", "planner_calls", "expanded", "excuse",
 ]
 SOLVED = ("excuse-found", "no-excuse")
+#: Statuses of a run that gave up within its limits (counted at the limit in whole-run speed-ups).
+GAVE_UP = ("timeout", "memout", "not-run")
 
 
 @dataclass(frozen=True)
@@ -193,11 +195,17 @@ def run_one(task: BenchTask, strategy: str, semantics: str, time_limit: float,
         row.update(status="error", excuse=f"{type(exc).__name__}: {exc}"[:300])
         return _complete(row)
     start = time.perf_counter()
+    # The memory cap is set on the started process (prlimit), not in a pre-exec hook:
+    # those are unsafe while other threads run, and the local executor is threads.
+    proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    if memory_limit_mb:
+        cap_memory(proc.pid, memory_limit_mb)
     try:
-        proc = subprocess.run(cmd, capture_output=True, text=True, timeout=time_limit + KILL_GRACE_S,
-                              preexec_fn=(lambda: limit_memory(memory_limit_mb)) if memory_limit_mb else None)
-        code, stdout, stderr = proc.returncode, proc.stdout, proc.stderr
+        stdout, stderr = proc.communicate(timeout=time_limit + KILL_GRACE_S)
+        code = proc.returncode
     except subprocess.TimeoutExpired:
+        proc.kill()
+        proc.communicate()
         code, stdout, stderr = None, "", ""
     row.update(wall_s=round(time.perf_counter() - start, 4), exit_code="" if code is None else code)
     try:
@@ -232,6 +240,24 @@ def _complete(row: dict[str, Any]) -> dict[str, Any]:
     return {k: row[k] for k in RESULT_FIELDS}
 
 
+def _soft_limit(megabytes: int, hard: int) -> int:
+    import resource
+
+    limit = megabytes * 1024 * 1024
+    return limit if hard == resource.RLIM_INFINITY else min(limit, hard)
+
+
+def cap_memory(pid: int, megabytes: int) -> None:
+    """Cap process ``pid``'s address space (soft limit, never above its hard limit)."""
+    import resource
+
+    try:
+        _, hard = resource.prlimit(pid, resource.RLIMIT_AS)
+        resource.prlimit(pid, resource.RLIMIT_AS, (_soft_limit(megabytes, hard), hard))
+    except ProcessLookupError:
+        pass  # it has ended already
+
+
 def limit_memory(megabytes: int | None) -> None:
     """Cap this process's address space, so that running out raises MemoryError.
 
@@ -246,10 +272,7 @@ def limit_memory(megabytes: int | None) -> None:
     # Only the soft limit, and never above a hard limit already in force
     # (``ulimit -v``, a cluster job): raising it would fail every run.
     _, hard = resource.getrlimit(resource.RLIMIT_AS)
-    limit = megabytes * 1024 * 1024
-    if hard != resource.RLIM_INFINITY:
-        limit = min(limit, hard)
-    resource.setrlimit(resource.RLIMIT_AS, (limit, hard))
+    resource.setrlimit(resource.RLIMIT_AS, (_soft_limit(megabytes, hard), hard))
 
 
 class RowLog:
@@ -502,8 +525,9 @@ def _compare(rows: list[dict[str, Any]], label: str, default: str, baseline: str
             large_d += ok_d
             large_b += ok_b
         if (ok_d or ok_b) and d is not None and b is not None:
-            d_wall = whole_run_s(d) if ok_d else time_limit
-            b_wall = whole_run_s(b) if ok_b else time_limit
+            # A run that gave up counts at the limit; a crashed or failed one says nothing.
+            d_wall = whole_run_s(d) if ok_d else time_limit if d["status"] in GAVE_UP else None
+            b_wall = whole_run_s(b) if ok_b else time_limit if b["status"] in GAVE_UP else None
             if d_wall is not None and b_wall is not None and (not ok_b or b_wall >= NONTRIVIAL_S):
                 nontrivial.append(b_wall / max(d_wall, 1e-4))
         if ok_d and ok_b:
@@ -619,19 +643,28 @@ def _parts_table(rows: list[dict[str, Any]]) -> list[str]:
     return out
 
 
-def _limit_section(rows: list[dict[str, Any]], time_limit: float) -> list[str]:
-    """How far whole runs went past the time limit (``--time-limit`` bounds the whole run)."""
+def limit_section(rows: list[dict[str, Any]], time_limit: float,
+                  label: Callable[[dict[str, Any]], str] | None = None) -> list[str]:
+    """Markdown lines: how far whole runs went past the time limit (``--time-limit`` bounds the whole run).
+
+    ``label`` names a row (default: its id, strategy and semantics).
+    """
+    label = label or (lambda r: f"{r['id']} {r['strategy']} {r['semantics']}")
     walls = [(float(r["wall_s"]), r) for r in rows if r.get("wall_s") not in ("", None)]
     if not walls:
         return []
     worst, worst_row = max(walls, key=lambda item: item[0])
     over = [(w, r) for w, r in walls if w > time_limit + 1.0]
-    skipped = sum(r["status"] == "not-run" for r in rows)
     out = ["", "## Time limit", "",
-           f"Runs: {len(walls)}; longest whole run {worst:.2f} s ({worst_row['id']} {worst_row['strategy']} "
-           f"{worst_row['semantics']}: {worst_row['status']}), {worst - time_limit:+.2f} s against the "
-           f"{time_limit:g} s limit; runs more than 1 s past it: {len(over)}."]
-    out += [f"- {r['id']} {r['strategy']} {r['semantics']}: {w:.2f} s ({r['status']})" for w, r in over]
+           f"Runs: {len(walls)}; longest whole run {worst:.2f} s ({label(worst_row)}: {worst_row['status']}), "
+           f"{worst - time_limit:+.2f} s against the {time_limit:g} s limit; runs more than 1 s past it: {len(over)}."]
+    out += [f"- {label(r)}: {w:.2f} s ({r['status']})" for w, r in over]
+    return out
+
+
+def _limit_section(rows: list[dict[str, Any]], time_limit: float) -> list[str]:
+    out = limit_section(rows, time_limit)
+    skipped = sum(r["status"] == "not-run" for r in rows)
     if skipped:
         out += ["", f"Runs not made: {skipped}. A baseline run is not made on the later tasks of a family "
                 "(domain, removed action, semantics) after the first task of that family it does not finish "

@@ -108,6 +108,8 @@ def test_nontrivial_whole_run_speedup_counts_unfinished_runs_at_the_limit():
         row("t4", "literal", "baseline", "not-run", total=""),
         row("t5", "literal", "landmark", "timeout", total=60.2),          # neither: left out
         row("t5", "literal", "baseline", "timeout", total=60.4),
+        row("t6", "literal", "landmark", "excuse-found", 1, total=0.5),   # baseline crashed: says nothing
+        row("t6", "literal", "baseline", "crashed", total=3.0),
     ]
     for r in rows:
         r["wall_s"] = r["time_s"]

@@ -85,7 +85,7 @@ def test_memory_limit_stays_below_a_hard_limit_already_in_force():
 
 
 def test_the_memory_cap_reaches_the_run(monkeypatch):
-    fake_run(monkeypatch, "import resource, sys\n"
+    fake_run(monkeypatch, "import resource, sys, time\ntime.sleep(0.3)\n"
                           "sys.exit(0 if resource.getrlimit(resource.RLIMIT_AS)[0] == 3000 * 2 ** 20 else 5)")
     assert run_one(kitchen_task(), "landmark", "literal", 5.0, memory_limit_mb=3000)["exit_code"] == 0
 

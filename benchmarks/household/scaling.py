@@ -32,6 +32,7 @@ ROOT = HERE.parent.parent
 sys.path.insert(0, str(ROOT))
 
 from guided_lfd import household  # noqa: E402
+from guided_lfd.benchmark import limit_section  # noqa: E402
 
 TASKS = HERE / "tasks"
 RESULTS = HERE / "results"
@@ -175,7 +176,8 @@ def report(rows: list[dict], time_limit: float, out_dir: Path) -> str:
                 disagreements += 1
                 bl_cell += " **size differs**"
             lines.append(f"| {task} | {actions.get(task, '-')} | {sem} | {lm_cell} | {bl_cell} |")
-    lines += ["", f"Size disagreements between the strategies where both finish: {disagreements}.", ""]
+    lines += ["", f"Size disagreements between the strategies where both finish: {disagreements}."]
+    lines += limit_section(rows, time_limit, lambda r: f"{r['task']} {r['strategy']} {r['semantics']}") + [""]
     series: dict[str, list[tuple[float, float]]] = {}
     for r in rows:
         if _solved(r) and r["task"] in actions:

@@ -33,6 +33,7 @@ from guided_lfd.pddl.model import (
     Predicate,
     Problem,
 )
+from guided_lfd.pddl import fast_reader
 from guided_lfd.pddl.source import SourceMap, Token, read_text
 
 # Keywords of PDDL features beyond STRIPS, with the requirement they belong to.
@@ -425,6 +426,9 @@ def parse_domain(path: str | Path) -> Domain:
     src = _source_map(name, "domain")
     _check_kind(src, "domain")
     _check_features(src, "domain")
+    fast = fast_reader.read_domain(src, name)
+    if fast is not None:
+        return fast
     reader = _new_reader()
     _tarski_parse(reader, "domain", src)
     return _domain_from_tarski(reader, src, name)
@@ -452,11 +456,26 @@ def parse_task(domain_path: str | Path, problem_path: str | Path) -> tuple[Domai
     psrc = _source_map(pname, "problem")
     _check_kind(psrc, "problem")
     _check_features(psrc, "problem")
+    # The fast path first (Fast Downward's translator parser); anything it
+    # does not accept goes through tarski, for its result or its error.
+    domain = fast_reader.read_domain(dsrc, dname)
+    if domain is not None:
+        _check_domain_reference(psrc, domain)
+        problem = fast_reader.read_problem(psrc, pname, domain)
+        if problem is not None:
+            return domain, problem
     reader = _new_reader()
     _tarski_parse(reader, "domain", dsrc)
     domain = _domain_from_tarski(reader, dsrc, dname)
     domain_constants = dict(domain.constants)
-    # The problem must name the domain it was given with.
+    _check_domain_reference(psrc, domain)
+    _tarski_parse(reader, "problem", psrc)
+    problem = _problem_from_tarski(reader, psrc, pname, domain_constants)
+    return domain, problem
+
+
+def _check_domain_reference(psrc: SourceMap, domain: Domain) -> None:
+    """The problem must name the domain it was given with."""
     dom_ref = psrc.section(":domain")
     if dom_ref is not None and len(dom_ref.items) > 1 and isinstance(dom_ref.items[1], Token):
         ref = dom_ref.items[1]
@@ -465,9 +484,6 @@ def parse_task(domain_path: str | Path, problem_path: str | Path) -> tuple[Domai
                 f"problem is for domain '{ref.text}', but the domain file defines '{domain.spellings.get(domain.name, domain.name)}'",
                 psrc.location(ref.line, ref.col),
             )
-    _tarski_parse(reader, "problem", psrc)
-    problem = _problem_from_tarski(reader, psrc, pname, domain_constants)
-    return domain, problem
 
 
 def _problem_from_tarski(reader, src: SourceMap, path: str, domain_constants: dict[str, str]) -> Problem:

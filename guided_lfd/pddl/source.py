@@ -210,16 +210,16 @@ class SourceMap:
             return self.location(tok.line, tok.col)
         return self.location(self.define().line, self.define().col)
 
-    def text_with_types_parents_first(self) -> str:
-        """The text with the ``:types`` section reordered so parents come first.
+    def types_parents_first(self) -> list[tuple[str, str | None]] | None:
+        """The ``:types`` declarations as (name, parent or None), parents before children.
 
-        PDDL allows ``(:types truck - vehicle vehicle - object)``; tarski needs
-        ``vehicle`` declared before it is used as a parent.  Line breaks are
-        kept, so positions outside the section do not move.
+        None when there is no ``:types`` section or it holds a list (``either``,
+        left for the feature check).  Raises :class:`PddlSemanticError` on a
+        cycle or a type declared twice.
         """
         section = self.section(":types")
         if section is None:
-            return self.text
+            return None
         names: list[str] = []
         parent: dict[str, str] = {}
         pending: list[str] = []
@@ -234,7 +234,10 @@ class SourceMap:
                 i += 2
                 continue
             if not isinstance(item, Token):
-                return self.text  # '(either ...)': leave it for the feature check
+                return None
+            if item.lower in {n.lower() for n in names}:
+                raise PddlSemanticError(f"type '{item.text}' is declared twice in :types",
+                                        self.location(item.line, item.col))
             names.append(item.text)
             pending.append(item.text)
             i += 1
@@ -257,7 +260,23 @@ class SourceMap:
                     "type hierarchy has a cycle: " + ", ".join(f"{n} - {parent[n]}" for n in cycle),
                     self.location(section.line, section.col),
                 )
-        decl = " ".join(f"{n} - {parent[n]}" if n in parent else n for n in ordered)
+        return [(n, parent.get(n)) for n in ordered]
+
+    def text_with_types_parents_first(self) -> str:
+        """The text with the ``:types`` section reordered so parents come first.
+
+        PDDL allows ``(:types truck - vehicle vehicle - object)``; tarski needs
+        ``vehicle`` declared before it is used as a parent.  A type declared
+        without a parent is written ``- object`` (bare, the next group would
+        take it in).  Line breaks are kept, so positions outside the section
+        do not move.
+        """
+        ordered = self.types_parents_first()
+        if ordered is None:
+            return self.text
+        section = self.section(":types")
+        assert section is not None
+        decl = " ".join(n if up is None and n.lower() == "object" else f"{n} - {up or 'object'}" for n, up in ordered)
         old = self.text[section.start : section.end + 1]
         new = f"(:types {decl}" + "\n" * old.count("\n") + ")"
         return self.text[: section.start] + new + self.text[section.end + 1 :]

@@ -1,0 +1,160 @@
+"""The reader's fast path (Fast Downward's translator parser) reads what tarski reads, the same way.
+
+The fast path only ever accepts: whatever it does not take goes through
+tarski, for its model or its error.  So on every input the outcome must be
+the one the tarski path alone gives, model and error message alike.
+"""
+
+from __future__ import annotations
+
+import random
+
+import pytest
+
+from conftest import ROOT
+from guided_lfd.errors import GuidedLfdError
+from guided_lfd.pddl import fast_reader, reader
+
+
+def _outcome(domain: str, problem: str):
+    try:
+        dom, prob = reader.parse_task(domain, problem)
+    except GuidedLfdError as exc:
+        return ("error", type(exc).__name__, str(exc))
+    return ("ok", dom.name, dom.requirements, repr(dom.actions), repr(dom.predicates), repr(dom.types),
+            repr(dom.constants), dom.spellings, prob.name, prob.domain_name, repr(sorted(prob.init)),
+            repr(prob.goal), repr(prob.objects), prob.spellings)
+
+
+def _tarski_only(monkeypatch, domain: str, problem: str):
+    monkeypatch.setattr(fast_reader, "read_domain", lambda *args: None)
+    try:
+        return _outcome(domain, problem)
+    finally:
+        monkeypatch.undo()
+
+
+def _pairs() -> list[tuple[str, str]]:
+    pairs = []
+    for folder in ("data", "tests/data"):
+        for path in sorted((ROOT / folder).rglob("*.pddl")):
+            for name in ("domain.pddl", "robot.pddl", "human.pddl"):
+                domain = path.parent / name
+                if domain.exists() and path.name not in ("domain.pddl", "robot.pddl", "human.pddl"):
+                    pairs.append((str(domain), str(path)))
+    return pairs
+
+
+def test_every_pair_of_the_corpus_reads_the_same_both_ways(monkeypatch):
+    pairs = _pairs()
+    assert len(pairs) > 100
+    fast_taken = valid = 0
+    for domain, problem in pairs:
+        both = _outcome(domain, problem)
+        assert both == _tarski_only(monkeypatch, domain, problem), problem
+        if both[0] == "ok":
+            valid += 1
+            fast_taken += _fast_reads(domain, problem)
+    # The fast path is the path: nearly every valid pair of the corpus takes it.
+    assert valid > 100 and fast_taken >= 0.9 * valid
+
+
+def _fast_reads(domain: str, problem: str) -> bool:
+    dsrc = reader._source_map(domain, "domain")
+    psrc = reader._source_map(problem, "problem")
+    dom = fast_reader.read_domain(dsrc, domain)
+    return dom is not None and fast_reader.read_problem(psrc, problem, dom) is not None
+
+
+def test_damaged_files_give_the_same_model_or_error_both_ways(tmp_path, monkeypatch):
+    """Seeded damage to the kitchen files: fast path or not, the same model or the same message."""
+    domain_text = (ROOT / "data/domains/kitchen-2/robot.pddl").read_text()
+    problem_text = (ROOT / "data/domains/kitchen-2/problem.pddl").read_text()
+    pieces = ["(", ")", " ", "?x", "- ", "and ", "not ", ":effect ", "; note\n", "\n", "foo ", ":", "AND ", "Not ",
+              "(= ?a ?b)", "- object ", "(not (= ?x ?y)) ", ":precondition ", "either "]
+    rng = random.Random(11)
+    domain, problem = tmp_path / "d.pddl", tmp_path / "p.pddl"
+    outcomes = set()
+    for _ in range(300):
+        damage_domain = rng.random() < 0.7
+        chars = list(domain_text if damage_domain else problem_text)
+        for _ in range(rng.randint(1, 3)):
+            at = rng.randrange(len(chars))
+            if rng.random() < 0.6:
+                chars.insert(at, rng.choice(pieces))
+            else:
+                del chars[at]
+        damaged = "".join(chars)
+        domain.write_text(damaged if damage_domain else domain_text)
+        problem.write_text(problem_text if damage_domain else damaged)
+        result = _outcome(str(domain), str(problem))
+        assert result == _tarski_only(monkeypatch, str(domain), str(problem))
+        outcomes.add(result[0] if result[0] == "ok" else result[1])
+    assert {"ok", "PddlSyntaxError", "PddlSemanticError"} <= outcomes
+
+
+P = "(define (problem q) (:domain d) (:objects o) (:init (p o)) (:goal (not (p o))))"
+ACT = "(:action a :parameters (?x) :precondition (p ?x) :effect (not (p ?x)))"
+CASES = {
+    # taken by the fast path: the same model as tarski's
+    "plain": (True, f"(define (domain d) (:predicates (p ?x)) {ACT})", P),
+    "equality, negation, constants": (True, "(define (domain d) (:requirements :strips :equality :negative-preconditions) "
+        "(:constants k) (:predicates (p ?x) (q ?x ?y)) (:action a :parameters (?x ?y) :precondition (and (p ?x) "
+        "(not (= ?x ?y)) (not (q ?x k))) :effect (and (q ?x ?y) (not (p ?x)))))", P),
+    "parentless type before its child": (True, "(define (domain d) (:types truck - vehicle vehicle place) "
+        "(:predicates (p ?x - vehicle)) (:action a :parameters (?x - truck) :precondition (p ?x) :effect (not (p ?x))))",
+        "(define (problem q) (:domain d) (:objects o - truck l - place) (:init (p o)) (:goal (not (p o))))"),
+    "capitalised names": (True, f"(define (domain d) (:predicates (p ?x)) {ACT})",
+        "(define (problem q) (:domain d) (:objects PinkDrawer) (:init (p PinkDrawer)) (:goal (not (p pinkdrawer))))"),
+    # left to tarski (its model, or its error)
+    "capitalised keyword": (False, f"(define (DOMAIN d) (:predicates (p ?x)) {ACT})", P),
+    "no parameters": (False, "(define (domain d) (:predicates (p)) (:action a :precondition (p) :effect (not (p))))",
+        "(define (problem q) (:domain d) (:init (p)) (:goal (not (p))))"),
+    "no precondition": (False, "(define (domain d) (:predicates (p ?x)) (:action a :parameters (?x) :effect (p ?x)))", P),
+    "nested and in an effect": (False, "(define (domain d) (:predicates (p ?x) (q ?x)) (:action a :parameters (?x) "
+        ":precondition (p ?x) :effect (and (not (p ?x)) (and (q ?x)))))", P),
+    "reserved word as a name": (False, f"(define (domain d) (:predicates (p ?x)) {ACT})",
+        "(define (problem q) (:domain d) (:objects min) (:init (p min)) (:goal (not (p min))))"),
+    "double negation": (False, "(define (domain d) (:predicates (p ?x)) (:action a :parameters (?x) "
+        ":precondition (not (not (p ?x))) :effect (not (p ?x))))", P),
+    "type cycle": (False, "(define (domain d) (:types a - b b - a) (:predicates (p ?x - b)) (:action m :parameters "
+        "(?x - b) :precondition (p ?x) :effect (not (p ?x))))", "(define (problem q) (:domain d) (:objects o - b) "
+        "(:init (p o)) (:goal (not (p o))))"),
+    "untyped after typed": (False, "(define (domain d) (:types t) (:predicates (p ?x)) " + ACT + ")",
+        "(define (problem q) (:domain d) (:objects a - t b) (:init (p a) (p b)) (:goal (not (p a))))"),
+    "sections out of order": (False, "(define (domain d) (:predicates (p ?x)) (:types t) " + ACT + ")", P),
+    "sections out of order, again": (False, "(define (domain d) (:predicates (p ?x)) (:types t) " + ACT + ")", P),
+    "type name as a predicate": (False, "(define (domain d) (:types t) (:predicates (t ?x)) (:action a :parameters "
+        "(?x) :precondition (t ?x) :effect (not (t ?x))))", "(define (problem q) (:domain d) (:objects o - t) "
+        "(:init (t o)) (:goal (not (t o))))"),
+    "action without effects": (False, "(define (domain d) (:predicates (p ?x)) (:action a :parameters (?x) "
+        ":precondition (p ?x) :effect (and)))", P),
+    "repeated initial fact": (False, f"(define (domain d) (:predicates (p ?x)) {ACT})",
+        "(define (problem q) (:domain d) (:objects o) (:init (p o) (p o)) (:goal (not (p o))))"),
+    "contradicting effects": (True, "(define (domain d) (:predicates (p ?x)) (:action a :parameters (?x) "
+        ":precondition (p ?x) :effect (and (p ?x) (not (p ?x)))))", P),
+    "parameter of a supertype": (False, "(define (domain d) (:types a b - a) (:predicates (p ?x - b)) (:action m "
+        ":parameters (?x - a) :precondition (p ?x) :effect (not (p ?x))))", "(define (problem q) (:domain d) "
+        "(:objects o - b) (:init (p o)) (:goal (not (p o))))"),
+}
+
+
+@pytest.mark.parametrize("case", list(CASES))
+def test_corner_cases_read_the_same_both_ways(tmp_path, monkeypatch, case):
+    fast, domain_text, problem_text = CASES[case]
+    (tmp_path / "d.pddl").write_text(domain_text)
+    (tmp_path / "p.pddl").write_text(problem_text)
+    d, p = str(tmp_path / "d.pddl"), str(tmp_path / "p.pddl")
+    assert _outcome(d, p) == _tarski_only(monkeypatch, d, p)
+    try:
+        taken = _fast_reads(d, p)
+    except GuidedLfdError:
+        taken = False  # the source map itself refuses it
+    assert taken is fast
+
+
+def test_the_fast_path_reads_the_kitchens_and_ipc_tasks():
+    for domain, problem in [("data/domains/kitchen-1/robot.pddl", "data/domains/kitchen-1/problem.pddl"),
+                            ("data/benchmarks/ipc/depot/domain.pddl", "data/benchmarks/ipc/depot/task05.pddl"),
+                            ("data/benchmarks/ipc/sokoban/domain.pddl", "data/benchmarks/ipc/sokoban/task03.pddl")]:
+        assert _fast_reads(str(ROOT / domain), str(ROOT / problem))
