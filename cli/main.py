@@ -201,7 +201,38 @@ def main(
 def run() -> None:
     """Console-script entry point."""
     import cli
+    from guided_lfd.deadline import keep_until_exit
 
     cli.run_started = cli.PROCESS_STARTED  # --time-limit counts start-up too
     pause_gc()  # until the command starts its work: see cli/startup.py
-    app()
+    keep_until_exit()
+    try:
+        app()
+        code: Any = 0
+    except SystemExit as exc:
+        code = exc.code
+    _end(code)
+
+
+def _end(code: Any) -> None:
+    """Flush the output and end the process without tearing the interpreter down.
+
+    Every output file is complete by now (written atomically); what is left
+    is freeing the run's objects, a second or more on a large task, and after
+    a time limit that is time past the limit.  So the process just ends.
+    """
+    import atexit
+    import os
+
+    if code is None:
+        code = 0
+    elif not isinstance(code, int):
+        print(code, file=sys.stderr)
+        code = 1
+    atexit._run_exitfuncs()  # what libraries registered still runs (logging's flush, ...)
+    for stream in (sys.stdout, sys.stderr):
+        try:
+            stream.flush()
+        except (OSError, ValueError):  # a closed pipe or stream: nothing more can be said
+            pass
+    os._exit(code)

@@ -28,6 +28,33 @@ from guided_lfd.errors import SearchTimeout
 #: stop first and keep what was found; the watchdog is the safety net.
 GRACE_S = 0.25
 
+#: Objects kept alive until the process ends (None: not asked for; see :func:`linger`).
+_LINGERING: list[object] | None = None
+
+
+def keep_until_exit() -> None:
+    """Let :func:`linger` keep objects alive until the process ends.
+
+    For a process that ends without tearing down its interpreter (the
+    console script ends with ``os._exit``): freeing a search's millions of
+    frontier entries when a deadline stops it takes about a second, which is
+    spent after the time limit and helps no one.
+    """
+    global _LINGERING
+    if _LINGERING is None:
+        _LINGERING = []
+
+
+def lingering() -> bool:
+    """Whether :func:`keep_until_exit` was called (the process will not free its objects)."""
+    return _LINGERING is not None
+
+
+def linger(*objects: object) -> None:
+    """Keep ``objects`` alive until the process ends, if :func:`keep_until_exit` was called."""
+    if _LINGERING is not None:
+        _LINGERING.extend(objects)
+
 
 def deadline_after(seconds: float | None, start: float | None = None) -> float | None:
     """The ``time.monotonic()`` value ``seconds`` after ``start`` (default: now); None = no limit."""

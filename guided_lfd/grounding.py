@@ -16,6 +16,7 @@ from dataclasses import dataclass, field
 from itertools import product
 from typing import Iterable, Sequence
 
+from guided_lfd.deadline import linger
 from guided_lfd.errors import Location, SearchTimeout, TaskTooLarge
 from guided_lfd.pddl.model import EQUALITY, ActionSchema, Atom, Domain, Literal, Problem, objects_by_type
 
@@ -176,6 +177,7 @@ def ground(
     schemas = domain.actions if actions is None else actions
     by_type = objects_by_type(domain, problem)
     ground_actions: list[GroundAction] = []
+    linger(ground_actions)  # see guided_lfd.deadline.linger
     key_index = {(a.predicate, *a.args): i for a, i in index.items()}
     for schema in schemas:
         for k, act in enumerate(_ground_schema(schema, by_type, index, problem.init, static, key_index)):

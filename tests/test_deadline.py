@@ -83,3 +83,69 @@ def test_plan_time_limit_bounds_grounding_too(runner, app, tmp_path):
     result = runner.invoke(app, ["plan", str(dom), prob, "--time-limit", "0.3"])
     assert result.exit_code == EXIT_TIME_LIMIT
     assert time.monotonic() - start < 0.3 + 1.0
+
+
+def _fresh(code: str) -> str:
+    import subprocess
+    import sys
+
+    from conftest import ROOT
+
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT, timeout=60)
+    assert out.returncode == 0, out.stderr
+    return out.stdout.strip()
+
+
+def test_linger_keeps_objects_only_when_the_process_will_not_free_them():
+    code = ("import weakref\nfrom guided_lfd import deadline\nclass Big: pass\n"
+            "a = Big(); ra = weakref.ref(a); deadline.linger(a); del a\n"
+            "deadline.keep_until_exit()\n"
+            "b = Big(); rb = weakref.ref(b); deadline.linger(b); del b\n"
+            "print(ra() is None, rb() is not None, deadline.lingering())\n")
+    assert _fresh(code) == "True True True"
+
+
+def test_the_console_script_ends_with_its_exit_code_and_all_its_output(tmp_path):
+    import subprocess
+    import sys
+    from pathlib import Path
+
+    from conftest import ROOT, kitchen
+
+    exe = Path(sys.executable).with_name("guided-lfd")
+    domain, problem = kitchen(1)
+    ok = subprocess.run([str(exe), "excuse", str(domain), str(problem), "--json", "--quiet"], capture_output=True,
+                        text=True, cwd=ROOT, timeout=60)
+    assert ok.returncode == 0 and json.loads(ok.stdout)["status"] == "excuse-found" and ok.stderr == ""
+    missing = subprocess.run([str(exe), "plan", str(tmp_path / "none.pddl"), str(problem)], capture_output=True,
+                             text=True, cwd=ROOT, timeout=60)
+    assert missing.returncode == 30 and "file not found" in missing.stderr
+    # A reader that stops early: no complaint at exit, the command's own exit code.
+    piped = subprocess.run(f"'{exe}' excuse '{domain}' '{problem}' --json --quiet | head -c 1", shell=True,
+                           capture_output=True, text=True, cwd=ROOT, timeout=60)
+    assert piped.stdout == "{" and "Exception ignored" not in piped.stderr
+
+
+def test_a_timed_out_search_ends_within_the_limit_from_the_shell(tmp_path):
+    # blocks task01 without stack: the baseline does not finish; the process ends near its limit.
+    import subprocess
+    import sys
+    from dataclasses import replace
+    from pathlib import Path
+
+    from conftest import ROOT
+    from guided_lfd.pddl.reader import parse_domain
+    from guided_lfd.pddl.writer import domain_to_pddl
+
+    exe = Path(sys.executable).with_name("guided-lfd")
+    blocks = ROOT / "data" / "benchmarks" / "ipc" / "blocks"
+    full = parse_domain(blocks / "domain.pddl")
+    robot = tmp_path / "robot.pddl"
+    robot.write_text(domain_to_pddl(replace(full, actions=[a for a in full.actions if a.name != "stack"])))
+    start = time.monotonic()
+    out = subprocess.run([str(exe), "excuse", str(robot), str(blocks / "task01.pddl"), "--strategy", "baseline",
+                          "--time-limit", "2", "--json", "--quiet"], capture_output=True, text=True, cwd=ROOT,
+                         timeout=60)
+    wall = time.monotonic() - start
+    assert out.returncode == EXIT_TIME_LIMIT and json.loads(out.stdout)["status"] == "timeout"
+    assert wall < 3.0

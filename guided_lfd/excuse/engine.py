@@ -15,7 +15,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from guided_lfd.deadline import check as check_deadline
-from guided_lfd.deadline import deadline_after, watchdog
+from guided_lfd.deadline import deadline_after, linger, lingering, watchdog
 from guided_lfd.errors import SearchTimeout
 from guided_lfd.excuse.check import Change, check_excuse, excuse_state
 from guided_lfd.excuse.lmcut import RelaxedExcuseTask
@@ -178,6 +178,7 @@ def find_excuses(
     deadline = deadline_after(options.time_limit, start)
     check_option_names(domain, options)
     run = _Run(domain, problem, options, progress, start, deadline)
+    linger(run)  # with its task, space and oracle (see guided_lfd.deadline.linger)
     # Grounding a house creates millions of small objects and no cycles that
     # matter: the cyclic collector's full passes over them cost more than the
     # rest of set-up (measured: 35 s -> 18 s on 180k ground actions).
@@ -190,6 +191,12 @@ def find_excuses(
         return run.timed_out()
     finally:
         if collecting:
+            if lingering():
+                # Everything the run allocated sits in the youngest generation and
+                # stays alive: the first collection after enabling would walk all
+                # of it (seconds on a large task, after the time limit).  Frozen,
+                # the collector never looks at it again.
+                gc.freeze()
             gc.enable()
 
 
@@ -260,6 +267,7 @@ class _Run:
         self._enter("relaxed task")
         relaxed = RelaxedExcuseTask(space)
         oracle = ReachabilityOracle(space, self.deadline)
+        linger(task, relaxed, oracle)
         self._enter("already solvable?")
         plan0 = None
         if relaxed.reaches_goal_unchanged(task.init):  # else unsolvable without a search

@@ -189,6 +189,9 @@ class ReachabilityOracle:
         parents: dict[int, tuple[int, GroundAction] | None] = {start: None}
         counter = 0
         heap = [(self._goal_distance(start), counter, start)]
+        # The last call's frontier stays referenced until the next call: a
+        # deadline that stops this one does not wait for it to be freed.
+        self._scratch = (parents, heap)
         expanded = 0
         found: int | None = None
         # The loop is the oracle's hot path: successor generation and the goal

@@ -14,6 +14,7 @@ import time
 from dataclasses import dataclass, field
 from typing import Callable, Iterator, Protocol
 
+from guided_lfd.deadline import linger
 from guided_lfd.errors import SearchTimeout
 from guided_lfd.excuse.lmcut import INF, Bound, RelaxedExcuseTask
 from guided_lfd.excuse.reach import ReachabilityOracle
@@ -116,6 +117,7 @@ class LandmarkSearch:
         heap: list[tuple[float, int, int, int]] = [(0, 0, 0, 0)]
         inherited: dict[int, list[tuple[int, int]] | None] = {0: None}
         seen = {0}
+        linger(heap, inherited, seen)  # never freed after a deadline (see guided_lfd.deadline)
         best: float | None = None
         solutions: list[int] = []
         plans: dict[int, list[GroundAction]] = {}
