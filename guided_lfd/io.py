@@ -13,6 +13,8 @@ from guided_lfd.pddl.source import read_text
 
 #: Version of every JSON document guided-lfd writes; bumped on incompatible change.
 FORMAT_VERSION = 1
+#: Document versions this release reads.
+READABLE_VERSIONS = (1,)
 
 
 def write_text(path: str | Path, text: str) -> None:
@@ -129,5 +131,11 @@ def read_json_document(path: str, kind: str, error: type, origin: str) -> tuple[
         raise error(f"JSON nested too deeply, expected {expected}", Location(path)) from None
     if not isinstance(doc, dict) or doc.get("format") != f"guided-lfd/{kind}":
         raise error(f"expected {expected} (from {origin})", Location(path, 1))
+    version = doc.get("format_version", FORMAT_VERSION)  # a document without one is read as version 1
+    if type(version) is not int or version not in READABLE_VERSIONS:
+        line = next((n for n, row in enumerate(text.splitlines(), 1) if '"format_version"' in row), 1)
+        readable = ", ".join(str(v) for v in READABLE_VERSIONS)
+        raise error(f"format_version {json.dumps(version)} of guided-lfd/{kind} is not one this release reads "
+                    f"(it reads version {readable})", Location(path, line))
     return text, doc
 

@@ -331,3 +331,28 @@ def test_out_of_memory_is_its_own_exit_code(runner, app, monkeypatch, tmp_path):
     assert result.exit_code == 22
     assert one_line(result) == "out of memory: the run needed more memory than the process may use"
     assert not out.exists()
+
+
+@pytest.mark.parametrize("version", ["2", "0", '"1"', "1.0", "null"])
+def test_a_document_of_an_unknown_format_version_is_refused(runner, app, tmp_path, version):
+    # An excuse document from another release: refused with the versions this one reads.
+    doc = tmp_path / "excuse.json"
+    doc.write_text('{\n  "format": "guided-lfd/excuse",\n  "format_version": ' + version + ',\n'
+                   '  "excuse": {"changes": [{"op": "add", "atom": "(open pinkdrawer)"}]}\n}\n')
+    human = kitchen(1, "human")[0]
+    result = runner.invoke(app, ["evaluate", str(DOMAIN), str(PROBLEM), "--human", str(human), "--excuse", str(doc)])
+    assert result.exit_code == 30
+    line = one_line(result)
+    assert f"{doc}:3: input error: " in line
+    assert f"format_version {version} of guided-lfd/excuse is not one this release reads (it reads version 1)" in line
+
+
+def test_a_document_of_this_format_version_still_reads():
+    from guided_lfd.io import read_json_document
+    from guided_lfd.errors import InputFileError
+
+    import tempfile
+    with tempfile.NamedTemporaryFile("w", suffix=".json", delete=False) as fh:
+        fh.write('{"format": "guided-lfd/excuse", "format_version": 1, "excuse": null}')
+    _, doc = read_json_document(fh.name, "excuse", InputFileError, "guided-lfd excuse --json")
+    assert doc["format_version"] == 1
