@@ -106,6 +106,7 @@ CASES = {
         "(define (problem q) (:domain d) (:objects o - truck l - place) (:init (p o)) (:goal (not (p o))))"),
     "capitalised names": (True, f"(define (domain d) (:predicates (p ?x)) {ACT})",
         "(define (problem q) (:domain d) (:objects PinkDrawer) (:init (p PinkDrawer)) (:goal (not (p pinkdrawer))))"),
+    "a comment ends the file, no line break": (True, f"(define (domain d) (:predicates (p ?x)) {ACT})\n; end", P + " ; end"),
     # left to tarski (its model, or its error)
     "capitalised keyword": (False, f"(define (DOMAIN d) (:predicates (p ?x)) {ACT})", P),
     "no parameters": (False, "(define (domain d) (:predicates (p)) (:action a :precondition (p) :effect (not (p))))",

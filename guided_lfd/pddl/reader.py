@@ -133,6 +133,8 @@ def _temp_pddl(text: str) -> Iterator[str]:
 
 #: A line comment as tarski's lexer reads it: ';' up to a line break, which must follow.
 _LINE_COMMENT = re.compile(r";[^\r\n]*(?=\r?\n)")
+#: A line comment that ends the file without a line break.
+_FINAL_COMMENT = re.compile(r";[^\r\n]*\Z")
 
 
 def without_comments(text: str) -> str:
@@ -152,6 +154,10 @@ def _tarski_parse(reader, kind: str, src: SourceMap) -> None:
     from tarski import errors as terr
 
     text = src.text_with_types_parents_first()
+    if _FINAL_COMMENT.search(text):
+        # A line comment may end the file (PDDL comments run to the end of the
+        # line); tarski's lexer wants a line break after it.  Adding one moves no token.
+        text += "\n"
     try:
         with _quiet_tarski():
             # Tarski's string entry points: the file ones would read back a temporary copy of the text.
