@@ -166,6 +166,16 @@ def test_type_cycle_is_named(runner, app, tmp_path):
     assert "type hierarchy has a cycle" in one_line(result)
 
 
+def test_a_type_declared_twice_is_named(runner, app, tmp_path):
+    # Read as "type hierarchy has a cycle:" with an empty list before.
+    domain = tmp_path / "d.pddl"
+    domain.write_text("(define (domain d) (:requirements :strips :typing)\n  (:types t u - object t)\n"
+                      "  (:predicates (p ?x - t)) (:action a :parameters (?x - t) :precondition (p ?x) :effect (not (p ?x))))")
+    result = runner.invoke(app, ["plan", str(domain), PROBLEM])
+    assert result.exit_code == 32
+    assert one_line(result) == f"{domain}:2:24: semantic error: type 't' is declared twice in :types"
+
+
 # --- segment / learn-domain / evaluate on hand-made demonstrations -------------------------------------------
 
 DEMO = DATA / "demo" / "open-drawer.csv"
