@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING, Annotated, Callable, TypeVar
 import typer
 
 from cli.startup import resume_gc
-from guided_lfd.errors import EXIT_INTERNAL, EXIT_MEMORY, GuidedLfdError, OptionError
+from guided_lfd.errors import EXIT_INTERNAL, EXIT_INTERRUPTED, EXIT_MEMORY, GuidedLfdError, OptionError
 from guided_lfd.io import write_text
 
 if TYPE_CHECKING:
@@ -174,7 +174,7 @@ def command(fn: F) -> F:
             raise typer.Exit(exc.exit_code) from None
         except KeyboardInterrupt:
             ui.error("interrupted")
-            raise typer.Exit(130) from None
+            raise typer.Exit(EXIT_INTERRUPTED) from None
         except RecursionError:
             ui.error("internal error: input nested too deeply")
             raise typer.Exit(EXIT_INTERNAL) from None

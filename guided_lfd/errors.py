@@ -29,6 +29,7 @@ code  meaning
 36    demonstration trace / segments error
 37    bad option value (cost specification, fixed predicate, ...)
 40    output could not be written
+130   interrupted (Ctrl-C)
 ====  ==========================================================
 """
 
@@ -55,6 +56,7 @@ EXIT_PLAN_FILE = 35
 EXIT_TRACE = 36
 EXIT_BAD_OPTION = 37
 EXIT_OUTPUT = 40
+EXIT_INTERRUPTED = 130
 
 #: Exit code -> short meaning; the README table and a test are generated from it.
 EXIT_CODES: dict[int, str] = {
@@ -77,6 +79,7 @@ EXIT_CODES: dict[int, str] = {
     EXIT_TRACE: "demonstration trace or segments error",
     EXIT_BAD_OPTION: "bad option value",
     EXIT_OUTPUT: "output could not be written",
+    EXIT_INTERRUPTED: "interrupted (Ctrl-C)",
 }
 
 

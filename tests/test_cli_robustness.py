@@ -366,3 +366,15 @@ def test_a_document_of_this_format_version_still_reads():
         fh.write('{"format": "guided-lfd/excuse", "format_version": 1, "excuse": null}')
     _, doc = read_json_document(fh.name, "excuse", InputFileError, "guided-lfd excuse --json")
     assert doc["format_version"] == 1
+
+
+def test_ctrl_c_is_its_own_documented_exit_code(runner, app, monkeypatch):
+    import cli.excuse
+
+    def interrupted(*args, **kwargs):
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(cli.excuse, "find_excuses", interrupted)
+    result = runner.invoke(app, ["excuse", str(DOMAIN), str(PROBLEM)])
+    assert result.exit_code == 130
+    assert one_line(result) == "interrupted"
