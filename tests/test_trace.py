@@ -54,6 +54,8 @@ def _edit(tmp_path, trace_lines=None, state_text=None, line=None, new=None):
         (5, "0.0333,right,0.1,0.2,0.9,half,,PinkDrawer", "t.csv:6:6: trace error: column 'grip': expected open or closed"),
         (5, "0.0333,right,0.1,0.2,0.9,open,,Sofa", "t.csv:6:8: trace error: column 'act_on': object 'Sofa' is never declared"),
         (5, "5.0,right,0.1,0.2,0.9,open,,PinkDrawer", "t.csv:8:1: trace error: column 'time': time goes backwards for the right hand"),
+        (1, "-0.5,right,0.1,0.2,0.9,open,,", "t.csv:2:1: trace error: column 'time': -0.5 is before the start; "
+                                             "expected seconds since the start (>= 0)"),
     ],
 )
 def test_bad_trace_rows_name_file_row_and_column(tmp_path, line, new, message):
@@ -69,6 +71,8 @@ def test_empty_trace_and_state_errors(tmp_path):
         load_demonstration(_edit(tmp_path, trace_lines=["time,hand,x,y,z,grip,in_hand,act_on"]))
     with pytest.raises(TraceError, match=r"t.state.csv:4:2: trace error: column 'fluent': object 'sofa' is never declared"):
         load_demonstration(_edit(tmp_path, state_text='time,fluent,value\n0,"object(A,item)",true\n0,clear(A),true\n0,clear(Sofa),true\n'))
+    with pytest.raises(TraceError, match=r"t.state.csv:3:1: trace error: column 'time': -2 is before the start"):
+        load_demonstration(_edit(tmp_path, state_text='time,fluent,value\n0,"object(A,item)",true\n-2,clear(A),true\n'))
     with pytest.raises(TraceError, match=r"column 'fluent': expected pred\(Arg,...\), got 'clear A'"):
         load_demonstration(_edit(tmp_path, state_text='time,fluent,value\n0,"object(A,item)",true\n0,clear A,true\n'))
 

@@ -136,6 +136,17 @@ def _numbers(frame: pd.DataFrame, path: str, column: str) -> np.ndarray:
     return values
 
 
+def _times(frame: pd.DataFrame, path: str) -> np.ndarray:
+    """The ``time`` column: finite seconds since the start, so never negative."""
+    values = _numbers(frame, path, "time")
+    bad = np.flatnonzero(values < 0)
+    if bad.size:
+        row = int(bad[0])
+        raise TraceError(f"column 'time': {frame['time'].iloc[row].strip()} is before the start; "
+                         "expected seconds since the start (>= 0)", _where(path, frame, row, "time"))
+    return values
+
+
 def parse_fluent(text: str) -> Atom:
     """``inside(RedPlate,PinkDrawer)`` -> ``(inside redplate pinkdrawer)``."""
     match = _FLUENT.match(text)
@@ -156,7 +167,7 @@ def load_state(path: str, span: tuple[float, float] | None = None,
     have caused it otherwise.
     """
     frame = _csv(read_text(path, "an environment state CSV (time,fluent,value)"), path, STATE_COLUMNS)
-    times = _numbers(frame, path, "time")
+    times = _times(frame, path)
     objects: dict[str, str] = {}
     spellings: dict[str, str] = {}
     type_row: dict[str, int] = {}  # the first row declaring an object of each type
@@ -234,7 +245,7 @@ def load_demonstration(trace_path: str, state_path: str | None = None) -> Demons
     state_path = state_path or default_state_path(trace_path)
     frame = _csv(read_text(trace_path, "a hand trace CSV (time,hand,x,y,z,grip,in_hand,act_on)"),
                  trace_path, TRACE_COLUMNS)
-    times = _numbers(frame, trace_path, "time")
+    times = _times(frame, trace_path)
     objects, initial, events, spellings = load_state(state_path, (float(times.min()), float(times.max())))
     for axis in ("x", "y", "z"):
         frame[axis] = _numbers(frame, trace_path, axis)
