@@ -161,10 +161,15 @@ def robot_domain_file(task: BenchTask, folder: Path) -> Path:
     return path
 
 
+def cli_command() -> list[str]:
+    """The installed ``guided-lfd`` beside this interpreter (or the same entry point run by it)."""
+    exe = Path(sys.executable).with_name("guided-lfd")
+    return [str(exe)] if exe.exists() else [sys.executable, "-c", "from cli.main import run; run()"]
+
+
 def command_line(task: BenchTask, strategy: str, semantics: str, time_limit: float, robot_file: Path) -> list[str]:
     """The ``guided-lfd excuse`` command a user would type for this run."""
-    exe = Path(sys.executable).with_name("guided-lfd")
-    cmd = [str(exe)] if exe.exists() else [sys.executable, "-c", "from cli.main import run; run()"]
+    cmd = cli_command()
     cmd += ["excuse", str(robot_file), task.problem_file, "--semantics", semantics, "--strategy", strategy,
             "--time-limit", f"{time_limit:g}", "--json", "--quiet"]
     if task.fixed_from:
@@ -240,39 +245,25 @@ def _complete(row: dict[str, Any]) -> dict[str, Any]:
     return {k: row[k] for k in RESULT_FIELDS}
 
 
-def _soft_limit(megabytes: int, hard: int) -> int:
-    import resource
-
-    limit = megabytes * 1024 * 1024
-    return limit if hard == resource.RLIM_INFINITY else min(limit, hard)
-
-
 def cap_memory(pid: int, megabytes: int) -> None:
-    """Cap process ``pid``'s address space (soft limit, never above its hard limit)."""
+    """Cap process ``pid``'s address space, so that running out raises MemoryError there.
+
+    Without a cap, a run whose frontier outgrows the machine (the baseline's
+    breadth-first search on sokoban task04 filled a 24 GiB machine) is killed by the
+    kernel's OOM killer, and may take the run beside it down too.  Only the soft
+    limit is set, and never above a hard limit already in force (``ulimit -v``,
+    a cluster job): raising it would fail every run.
+    """
     import resource
 
     try:
         _, hard = resource.prlimit(pid, resource.RLIMIT_AS)
-        resource.prlimit(pid, resource.RLIMIT_AS, (_soft_limit(megabytes, hard), hard))
+        limit = megabytes * 1024 * 1024
+        if hard != resource.RLIM_INFINITY:
+            limit = min(limit, hard)
+        resource.prlimit(pid, resource.RLIMIT_AS, (limit, hard))
     except ProcessLookupError:
         pass  # it has ended already
-
-
-def limit_memory(megabytes: int | None) -> None:
-    """Cap this process's address space, so that running out raises MemoryError.
-
-    Without a cap, a run whose frontier outgrows the machine (the baseline's
-    breadth-first search on sokoban task04 filled a 24 GiB machine) is killed by the
-    kernel's OOM killer, and may take the run beside it down too.
-    """
-    if not megabytes:
-        return
-    import resource
-
-    # Only the soft limit, and never above a hard limit already in force
-    # (``ulimit -v``, a cluster job): raising it would fail every run.
-    _, hard = resource.getrlimit(resource.RLIMIT_AS)
-    resource.setrlimit(resource.RLIMIT_AS, (_soft_limit(megabytes, hard), hard))
 
 
 class RowLog:

@@ -2,7 +2,11 @@
 
 from __future__ import annotations
 
+import random
+import subprocess
+import sys
 from pathlib import Path
+from typing import Iterator
 
 import pytest
 
@@ -44,3 +48,33 @@ def kitchen(n: int, who: str = "robot") -> tuple[str, str]:
 
 
 BLOCKS = DATA / "blocks"
+
+
+def fresh_interpreter(code: str) -> str:
+    """What a fresh interpreter prints running ``code`` (for process-wide state: limits, lingering)."""
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT, timeout=60)
+    assert out.returncode == 0, out.stderr
+    return out.stdout
+
+
+def damaged_tasks(tmp_path: Path, domain_text: str, problem_text: str, pieces: list[str], seed: int,
+                  count: int) -> Iterator[tuple[str, str]]:
+    """``count`` seeded damages (1-3 inserted pieces or deleted characters) of a domain (70%) or its problem.
+
+    Yields the (domain, problem) paths under ``tmp_path``, rewritten for each damage.
+    """
+    rng = random.Random(seed)
+    domain, problem = tmp_path / "d.pddl", tmp_path / "p.pddl"
+    for _ in range(count):
+        damage_domain = rng.random() < 0.7
+        chars = list(domain_text if damage_domain else problem_text)
+        for _ in range(rng.randint(1, 3)):
+            at = rng.randrange(len(chars))
+            if rng.random() < 0.6:
+                chars.insert(at, rng.choice(pieces))
+            else:
+                del chars[at]
+        damaged = "".join(chars)
+        domain.write_text(damaged if damage_domain else domain_text)
+        problem.write_text(problem_text if damage_domain else damaged)
+        yield str(domain), str(problem)

@@ -2,13 +2,12 @@
 
 from __future__ import annotations
 
-import subprocess
 import sys
 from pathlib import Path
 
 import pytest
 
-from conftest import ROOT, kitchen
+from conftest import ROOT, fresh_interpreter, kitchen
 from guided_lfd import benchmark
 from guided_lfd.benchmark import RESULT_FIELDS, BenchTask, read_suite, run_one
 
@@ -63,23 +62,21 @@ def test_a_run_far_past_its_limit_is_killed_as_a_timeout(monkeypatch):
 
 def printed_by(code: str) -> list[str]:
     """Words a fresh interpreter prints running ``code`` (limits must not leak into the test process)."""
-    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT, timeout=60)
-    assert out.returncode == 0, out.stderr
-    return out.stdout.split()
+    return fresh_interpreter(code).split()
 
 
 def test_memory_limit_caps_the_soft_limit_and_a_huge_allocation_fails():
-    code = ("import resource\nfrom guided_lfd.benchmark import limit_memory\n"
-            "limit_memory(2048)\n"
+    code = ("import os, resource\nfrom guided_lfd.benchmark import cap_memory\n"
+            "cap_memory(os.getpid(), 2048)\n"
             "print(resource.getrlimit(resource.RLIMIT_AS)[0] == 2048 * 2 ** 20)\n"
             "try:\n    bytearray(4 * 1024 ** 3)\nexcept MemoryError:\n    print('memout')\n")
     assert printed_by(code) == ["True", "memout"]
 
 
 def test_memory_limit_stays_below_a_hard_limit_already_in_force():
-    code = ("import resource\nfrom guided_lfd.benchmark import limit_memory\n"
+    code = ("import os, resource\nfrom guided_lfd.benchmark import cap_memory\n"
             "resource.setrlimit(resource.RLIMIT_AS, (3 * 2 ** 30, 3 * 2 ** 30))\n"
-            "limit_memory(8192)\n"
+            "cap_memory(os.getpid(), 8192)\n"
             "print(resource.getrlimit(resource.RLIMIT_AS) == (3 * 2 ** 30, 3 * 2 ** 30))\n")
     assert printed_by(code) == ["True"]
 

@@ -8,6 +8,7 @@ import time
 
 import pytest
 
+from conftest import fresh_interpreter
 from guided_lfd import household
 from guided_lfd.deadline import check, deadline_after, watchdog
 from guided_lfd.errors import EXIT_TIME_LIMIT, SearchTimeout
@@ -85,24 +86,13 @@ def test_plan_time_limit_bounds_grounding_too(runner, app, tmp_path):
     assert time.monotonic() - start < 0.3 + 1.0
 
 
-def _fresh(code: str) -> str:
-    import subprocess
-    import sys
-
-    from conftest import ROOT
-
-    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT, timeout=60)
-    assert out.returncode == 0, out.stderr
-    return out.stdout.strip()
-
-
 def test_linger_keeps_objects_only_when_the_process_will_not_free_them():
     code = ("import weakref\nfrom guided_lfd import deadline\nclass Big: pass\n"
             "a = Big(); ra = weakref.ref(a); deadline.linger(a); del a\n"
             "deadline.keep_until_exit()\n"
             "b = Big(); rb = weakref.ref(b); deadline.linger(b); del b\n"
             "print(ra() is None, rb() is not None, deadline.lingering())\n")
-    assert _fresh(code) == "True True True"
+    assert fresh_interpreter(code).strip() == "True True True"
 
 
 def test_the_console_script_ends_with_its_exit_code_and_all_its_output(tmp_path):

@@ -7,11 +7,9 @@ the one the tarski path alone gives, model and error message alike.
 
 from __future__ import annotations
 
-import random
-
 import pytest
 
-from conftest import ROOT
+from conftest import ROOT, damaged_tasks
 from guided_lfd.errors import GuidedLfdError
 from guided_lfd.pddl import fast_reader, reader
 
@@ -72,23 +70,10 @@ def test_damaged_files_give_the_same_model_or_error_both_ways(tmp_path, monkeypa
     problem_text = (ROOT / "data/domains/kitchen-2/problem.pddl").read_text()
     pieces = ["(", ")", " ", "?x", "- ", "and ", "not ", ":effect ", "; note\n", "\n", "foo ", ":", "AND ", "Not ",
               "(= ?a ?b)", "- object ", "(not (= ?x ?y)) ", ":precondition ", "either "]
-    rng = random.Random(11)
-    domain, problem = tmp_path / "d.pddl", tmp_path / "p.pddl"
     outcomes = set()
-    for _ in range(300):
-        damage_domain = rng.random() < 0.7
-        chars = list(domain_text if damage_domain else problem_text)
-        for _ in range(rng.randint(1, 3)):
-            at = rng.randrange(len(chars))
-            if rng.random() < 0.6:
-                chars.insert(at, rng.choice(pieces))
-            else:
-                del chars[at]
-        damaged = "".join(chars)
-        domain.write_text(damaged if damage_domain else domain_text)
-        problem.write_text(problem_text if damage_domain else damaged)
-        result = _outcome(str(domain), str(problem))
-        assert result == _tarski_only(monkeypatch, str(domain), str(problem))
+    for domain, problem in damaged_tasks(tmp_path, domain_text, problem_text, pieces, seed=11, count=300):
+        result = _outcome(domain, problem)
+        assert result == _tarski_only(monkeypatch, domain, problem)
         outcomes.add(result[0] if result[0] == "ok" else result[1])
     assert {"ok", "PddlSyntaxError", "PddlSemanticError"} <= outcomes
 

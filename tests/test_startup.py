@@ -19,7 +19,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from conftest import ROOT, kitchen
+from conftest import ROOT, damaged_tasks, kitchen
 
 ROBOT, PROBLEM = kitchen(1)
 HUMAN, _ = kitchen(1, "human")
@@ -346,31 +346,16 @@ def test_reading_without_comments_changes_no_result_nor_error(tmp_path, monkeypa
     Syntax errors can quote comments (or stop inside one): those are
     re-read from the text as written.
     """
-    import random
-
     from guided_lfd.pddl import reader
 
     domain_text = (ROOT / ROBOT).read_text()
     problem_text = (ROOT / PROBLEM).read_text()
     pieces = ["(", ")", " ", "?x", "- ", "and ", "not ", ":effect ", "; note\n", ";x", "\n", "foo ", "\r\n", ";(\n", ":"]
-    rng = random.Random(7)
-    domain, problem = tmp_path / "d.pddl", tmp_path / "p.pddl"
     outcomes = set()
-    for _ in range(250):
-        damage_domain = rng.random() < 0.7
-        chars = list(domain_text if damage_domain else problem_text)
-        for _ in range(rng.randint(1, 3)):
-            at = rng.randrange(len(chars))
-            if rng.random() < 0.6:
-                chars.insert(at, rng.choice(pieces))
-            else:
-                del chars[at]
-        damaged = "".join(chars)
-        domain.write_text(damaged if damage_domain else domain_text)
-        problem.write_text(problem_text if damage_domain else damaged)
-        fast = _parse_outcome(str(domain), str(problem))
+    for domain, problem in damaged_tasks(tmp_path, domain_text, problem_text, pieces, seed=7, count=250):
+        fast = _parse_outcome(domain, problem)
         monkeypatch.setattr(reader, "without_comments", lambda text: text)
-        as_written = _parse_outcome(str(domain), str(problem))
+        as_written = _parse_outcome(domain, problem)
         monkeypatch.undo()
         assert fast == as_written
         outcomes.add(fast[0] if fast[0] == "ok" else fast[1])

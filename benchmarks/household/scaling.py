@@ -32,7 +32,7 @@ ROOT = HERE.parent.parent
 sys.path.insert(0, str(ROOT))
 
 from guided_lfd import household  # noqa: E402
-from guided_lfd.benchmark import limit_section  # noqa: E402
+from guided_lfd.benchmark import cli_command, limit_section  # noqa: E402
 
 TASKS = HERE / "tasks"
 RESULTS = HERE / "results"
@@ -59,14 +59,9 @@ def generate(series=household.SERIES) -> list[dict]:
     return out
 
 
-def _command() -> list[str]:
-    exe = Path(sys.executable).with_name("guided-lfd")
-    return [str(exe)] if exe.exists() else [sys.executable, "-c", "from cli.main import run; run()"]
-
-
 def run_one(task: dict, semantics: str, strategy: str, time_limit: float) -> dict:
     """One whole run of the command line; its row."""
-    cmd = [*_command(), "excuse", str(task["domain"]), str(task["problem"]), "--semantics", semantics,
+    cmd = [*cli_command(), "excuse", str(task["domain"]), str(task["problem"]), "--semantics", semantics,
            "--strategy", strategy, "--time-limit", f"{time_limit:g}", "--json", "--quiet"]
     start = time.perf_counter()
     try:
