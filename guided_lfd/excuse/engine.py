@@ -122,13 +122,22 @@ def _changes_of(task: GroundTask, changes: int) -> list[Change]:
     return sorted(out, key=lambda c: (c.atom, c.added))
 
 
+#: The most a search for the robot's optimal plan may take, and the least
+#: it is given; in between, as long as the run took so far.
+ROBOT_PLAN_MAX_S = 10.0
+ROBOT_PLAN_MIN_S = 1.0
+
+
 def _robot_plan(task: GroundTask, space: ChangeSpace, oracle: ReachabilityOracle, state: int,
-                fallback: list[GroundAction], optimal: bool, deadline: float | None) -> tuple[list[GroundAction], bool]:
+                fallback: list[GroundAction], optimal: bool, deadline: float | None,
+                started: float) -> tuple[list[GroundAction], bool]:
     """An optimal robot plan from ``state`` if it can be had in time, else ``fallback``.
 
     The search's witness is shortened first; when its length meets LM-cut's
     lower bound it is optimal without a planner run (household tasks, most
-    small ones).  Otherwise A* + LM-cut plans from scratch.
+    small ones).  Otherwise A* + LM-cut plans from scratch, for at most as
+    long as the run took until now (within 1-10 s): the excuse is what the
+    user waits for, and an optimal plan may not double the wait.
     """
     task_goal = (task.goal_pos, task.goal_neg)
     fallback = shorten_plan(fallback, state, *task_goal)
@@ -142,7 +151,10 @@ def _robot_plan(task: GroundTask, space: ChangeSpace, oracle: ReachabilityOracle
         return fallback, False
     from guided_lfd.planning import find_plan
 
-    budget = 10.0 if deadline is None else min(10.0, deadline - time.monotonic())
+    now = time.monotonic()
+    budget = min(ROBOT_PLAN_MAX_S, max(ROBOT_PLAN_MIN_S, now - started))
+    if deadline is not None:
+        budget = min(budget, deadline - now)
     if budget <= 0:
         return fallback, False
     try:
@@ -277,7 +289,8 @@ class _Run:
                 return self.report("timeout", candidates=0, planner_calls=1, phase=self.phase)
         if plan0 is not None:
             self._enter("robot plan")
-            plan, _ = _robot_plan(task, space, oracle, task.init, plan0, options.optimal_plans, self.deadline)
+            plan, _ = _robot_plan(task, space, oracle, task.init, plan0, options.optimal_plans, self.deadline,
+                                  self.start)
             _verify(self.domain, self.problem, [], plan, space)
             return self.report("already-solvable", [a.name for a in plan], candidates=0, planner_calls=1)
 
@@ -293,7 +306,7 @@ class _Run:
         for changes in outcome.solutions:
             state = task.init ^ changes
             plan, optimal = _robot_plan(task, space, oracle, state, outcome.plans[changes], options.optimal_plans,
-                                        self.deadline)
+                                        self.deadline, self.start)
             change_list = _changes_of(task, changes)
             _verify(self.domain, self.problem, change_list, plan, space)
             self.excuses.append(Excuse(change_list, space.cost(changes),

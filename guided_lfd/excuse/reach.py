@@ -9,12 +9,20 @@ excuse search:
 * every state of an exhausted (failed) search is remembered as *dead*, and
   every state on a found plan as *alive* with its remaining plan, so later
   candidates stop as soon as they meet a known state;
-* on large tasks a check first hill-climbs on h^FF with helpful actions
-  (a plan in about plan-length heuristic evaluations; a relaxed dead end
-  proves the goal unreachable at once);
-* otherwise, or when hill-climbing gives up, the search is greedy
-  best-first on the number of unsatisfied goal atoms, which is complete
-  (duplicate detection, finite space).
+* a check first asks h^2 (:mod:`guided_lfd.h2`) whether the goal is
+  reachable at all when pairs of facts must be reachable together: that
+  refutes most candidates that are not excuses in milliseconds, without
+  searching (an instrument calibrated but not powered on stays so);
+* on large tasks it then hill-climbs on h^FF with helpful actions (a plan
+  in about plan-length heuristic evaluations; a relaxed dead end proves the
+  goal unreachable at once);
+* what is still undecided goes to a portfolio run in turns: greedy
+  best-first search on the number of unsatisfied goal atoms (cheap per
+  state: it refutes by exhausting the states), lazy greedy search on h^FF
+  with helpful actions (it confirms plans where the goal count wanders
+  plateaus of interchangeable objects), and the rest of the h^2 check on a
+  large task.  Both searches are complete (duplicate detection, finite
+  space); the first to decide answers.
 """
 
 from __future__ import annotations
@@ -23,10 +31,12 @@ import heapq
 import time
 from collections import deque
 from dataclasses import dataclass
+from typing import Any, Generator, Iterator
 
 from guided_lfd.errors import SearchTimeout
 from guided_lfd.excuse.space import ChangeSpace
 from guided_lfd.grounding import GroundAction, bits
+from guided_lfd.h2 import PairReachability
 from guided_lfd.relaxation import RelaxedTask
 
 #: Relevant actions from which reachability checks first hill-climb on h^FF.
@@ -34,6 +44,13 @@ GUIDED_MIN_ACTIONS = 1000
 #: Heuristic evaluations a hill-climb may spend (plus 4 per step of the
 #: first relaxed plan) before the complete search takes over.
 HILL_CLIMB_EVALUATIONS = 50
+#: Time the h^2 pair check gets before anything else on a candidate (it
+#: decides most IPC candidates in a few milliseconds; on a house it goes on
+#: as a portfolio member beside the searches).
+PAIR_CHECK_FIRST_S = 0.02
+#: Time a portfolio member runs before the member with the least time so far
+#: takes its turn.
+PORTFOLIO_SLICE_S = 0.02
 
 
 @dataclass
@@ -44,6 +61,8 @@ class ReachStats:
     expanded: int = 0
     memo_hits: int = 0
     hill_climbs: int = 0  # calls answered by hill-climbing on h^FF
+    pair_proofs: int = 0  # calls answered "unreachable" by the h^2 pair check
+    ff_searches: int = 0  # calls answered by the h^FF search of the portfolio
 
 
 class ReachabilityOracle:
@@ -64,6 +83,7 @@ class ReachabilityOracle:
         # small ones the goal-count search is cheaper than one h^FF pass.
         self.guided = len(self.actions) >= GUIDED_MIN_ACTIONS
         self._relaxed: RelaxedTask | None = None
+        self._pairs: PairReachability | None = None
         # Index actions by one positive precondition so successor generation
         # skips most inapplicable actions; actions without one are always tried
         # (bucket 0, entries with pre_pos = 0).
@@ -97,6 +117,12 @@ class ReachabilityOracle:
         if self._relaxed is None:
             self._relaxed = RelaxedTask(self.actions, self.goal_pos, self.goal_neg)
         return self._relaxed
+
+    def pairs(self) -> PairReachability:
+        """The h^2 pair check over the relevant actions (built on first use)."""
+        if self._pairs is None:
+            self._pairs = PairReachability(self.relaxed_task())
+        return self._pairs
 
     def _hill_climb(self, start: int) -> list[tuple[int, GroundAction, int]] | None | bool:
         """Enforced hill-climbing on h^FF with helpful actions (Hoffmann and Nebel 2001).
@@ -178,7 +204,17 @@ class ReachabilityOracle:
         """A plan from ``state`` to the goal, or None if the goal is unreachable."""
         self.stats.calls += 1
         start = state & self.mask
-        if self.guided and start not in self.alive and start not in self.dead:
+        if start in self.alive:
+            self.stats.memo_hits += 1
+            return self._record([], start)
+        if start in self.dead:
+            self.stats.memo_hits += 1
+            return None
+        pairs = self.pairs().steps(start)
+        verdict = _run_for(pairs, PAIR_CHECK_FIRST_S)
+        if verdict is False:
+            return self._proved_dead(start)
+        if self.guided:
             climbed = self._hill_climb(start)
             if climbed is None:
                 self.dead.add(start)
@@ -186,69 +222,192 @@ class ReachabilityOracle:
             if climbed is not False and climbed:
                 self.stats.hill_climbs += 1
                 return self._record(climbed, climbed[-1][2])
+        members = [self._goal_count_search(start), self._ff_search(start)]
+        if verdict is None:  # the pair check did not finish in its first slice: it goes on beside the searches
+            members.append(pairs)
+        # The last call's searches stay referenced until the next call: a
+        # deadline that stops this one does not wait for them to be freed.
+        self._scratch = members
+        index, result = self._portfolio(members)
+        if index == 2:
+            return self._proved_dead(start)
+        if index == 1:
+            self.stats.ff_searches += 1
+        kind, found = result
+        if kind == "dead":
+            self.dead.update(found)
+            return None
+        steps, end = found
+        return self._record(steps, end)
+
+    def _proved_dead(self, start: int) -> None:
+        self.stats.pair_proofs += 1
+        self.dead.add(start)
+        return None
+
+    def _portfolio(self, members: list[Generator]) -> tuple[int, Any]:
+        """Run the members in turns, each when it has had the least time, until one decides.
+
+        Returns (member index, its verdict).  The goal-count search is cheap
+        per state and refutes small spaces; the h^FF search confirms a plan
+        in about plan-length evaluations; the pair check refutes with no
+        search at all.  Interleaved, a call costs at most a few times what the
+        member suited to the candidate would have cost alone.
+        """
+        spent = [0.0] * len(members)
+        live = set(range(len(members)))
+        deadline = self.deadline
+        while True:
+            index = min(live, key=spent.__getitem__)
+            member = members[index]
+            began = time.monotonic()
+            try:
+                while True:  # at least one step per turn
+                    next(member)
+                    now = time.monotonic()
+                    if now - began >= PORTFOLIO_SLICE_S:
+                        break
+            except StopIteration as done:
+                if done.value is not True:  # True: the pair check could not refute; the searches go on
+                    return index, done.value
+                live.discard(index)
+                now = time.monotonic()
+            spent[index] += now - began
+            if deadline is not None and now > deadline:
+                raise SearchTimeout("excuse search exceeded its time limit")
+
+    def _successors(self, s: int) -> Iterator[tuple[GroundAction, int]]:
+        """(action, next state) for every relevant action applicable in ``s``."""
+        buckets = [self._unconditional] if self._unconditional else []
+        keys = s & self._key_mask
+        while keys:
+            low = keys & -keys
+            keys ^= low
+            buckets.append(self._by_first_pre[low.bit_length() - 1])
+        for bucket in buckets:
+            for act, pre_pos, pre_neg, delete, add in bucket:
+                if (s & pre_pos) == pre_pos and not s & pre_neg:
+                    yield act, (s & ~delete) | add
+
+    def _ff_search(self, start: int) -> Generator[None, None, tuple[str, Any]]:
+        """Lazy greedy best-first search on h^FF with helpful actions preferred (a portfolio member).
+
+        Lazy, as Fast Downward's ``lazy_greedy``: a state is evaluated when it
+        is expanded, its successors queued with its value; helpful successors
+        also enter a second queue, and the two queues take turns.  States the
+        relaxation proves dead are pruned and remembered.  Complete: when both
+        queues run dry, every state reached is dead.
+        """
+        ff = self.relaxed_task()
+        goal_pos, goal_neg, mask = self.goal_pos, self.goal_neg, self.mask
+        alive, dead, actions = self.alive, self.dead, self.actions
+        parents: dict[int, tuple[int, GroundAction] | None] = {}
+        queues: list[list[tuple[int, int, int, tuple[int, GroundAction] | None]]] = [[(0, 0, start, None)], []]
+        counter = turn = 0
+        pop, push = heapq.heappop, heapq.heappush
+        while queues[0] or queues[1]:
+            turn ^= 1
+            queue = queues[1] if (turn and queues[1]) or not queues[0] else queues[0]
+            _, _, s, parent = pop(queue)
+            if s in parents:
+                continue
+            parents[s] = parent
+            if s in alive or not (goal_pos & ~s or goal_neg & s):
+                return "plan", (_path(parents, s), s)
+            if s in dead:
+                continue
+            yield
+            relaxed = ff.relaxed_plan(s)
+            if relaxed is None:
+                dead.add(s)
+                continue
+            h = len(relaxed[0])
+            for act, t in self._successors(s):
+                if t not in parents and t not in dead:
+                    counter += 1
+                    push(queues[0], (h, counter, t, (s, act)))
+            for ai in ff.helpful(s, relaxed[1]):
+                act = actions[ai]
+                t = (s & ~act.delete) | (act.add & mask)
+                if t not in parents and t not in dead:
+                    counter += 1
+                    push(queues[1], (h, counter, t, (s, act)))
+        return "dead", parents
+
+    def _goal_count_search(self, start: int) -> Generator[None, None, tuple[str, Any]]:
+        """Greedy best-first search on the number of unsatisfied goal atoms (a portfolio member).
+
+        Complete (duplicate detection, finite space) and cheap per state, so
+        it is the member that refutes a candidate by exhausting its states.
+        """
         parents: dict[int, tuple[int, GroundAction] | None] = {start: None}
         counter = 0
         heap = [(self._goal_distance(start), counter, start)]
-        # The last call's frontier stays referenced until the next call: a
-        # deadline that stops this one does not wait for it to be freed.
-        self._scratch = (parents, heap)
         expanded = 0
-        found: int | None = None
         # The loop is the oracle's hot path: successor generation and the goal
         # distance are inlined (a generator and two calls per state cost more
         # than the bit operations themselves).  States are already projected on
         # the relevant atoms, and so are the stored add effects.
         goal_pos, goal_neg = self.goal_pos, self.goal_neg
         alive, dead, by_first = self.alive, self.dead, self._by_first_pre
-        unconditional, key_mask, deadline = self._unconditional, self._key_mask, self.deadline
+        unconditional, key_mask = self._unconditional, self._key_mask
         memo_hits = 0
         pop, push = heapq.heappop, heapq.heappush
-        while heap:
-            _, _, s = pop(heap)
-            if s in alive:
-                found = s
-                memo_hits += 1
-                break
-            if not (goal_pos & ~s or goal_neg & s):
-                alive[s] = None
-                found = s
-                break
-            expanded += 1
-            if deadline is not None and not expanded & 63 and time.monotonic() > deadline:
-                self.stats.expanded += expanded
-                self.stats.memo_hits += memo_hits
-                raise SearchTimeout("excuse search exceeded its time limit")
-            buckets = [unconditional] if unconditional else []
-            keys = s & key_mask
-            while keys:
-                low = keys & -keys
-                keys ^= low
-                buckets.append(by_first[low.bit_length() - 1])
-            for bucket in buckets:
-                for act, pre_pos, pre_neg, delete, add in bucket:
-                    if (s & pre_pos) != pre_pos or s & pre_neg:
-                        continue
-                    t = (s & ~delete) | add
-                    if t in parents:
-                        continue
-                    if t in dead:
-                        memo_hits += 1
-                        continue
-                    parents[t] = (s, act)
-                    counter += 1
-                    push(heap, ((goal_pos & ~t).bit_count() + (goal_neg & t).bit_count(), counter, t))
-        self.stats.memo_hits += memo_hits
-        self.stats.expanded += expanded
-        if found is None:
-            self.dead.update(parents)
-            return None
-        # Path from start to the meeting state, then the remembered rest.
-        steps: list[tuple[int, GroundAction, int]] = []
-        s = found
-        while parents[s] is not None:
-            prev, act = parents[s]  # type: ignore[misc]
-            steps.append((prev, act, s))
-            s = prev
-        steps.reverse()
-        return self._record(steps, found)
+        try:
+            while heap:
+                _, _, s = pop(heap)
+                if s in alive:
+                    memo_hits += 1
+                    return "plan", (_path(parents, s), s)
+                if not (goal_pos & ~s or goal_neg & s):
+                    alive[s] = None
+                    return "plan", (_path(parents, s), s)
+                expanded += 1
+                if not expanded & 255:
+                    yield
+                buckets = [unconditional] if unconditional else []
+                keys = s & key_mask
+                while keys:
+                    low = keys & -keys
+                    keys ^= low
+                    buckets.append(by_first[low.bit_length() - 1])
+                for bucket in buckets:
+                    for act, pre_pos, pre_neg, delete, add in bucket:
+                        if (s & pre_pos) != pre_pos or s & pre_neg:
+                            continue
+                        t = (s & ~delete) | add
+                        if t in parents:
+                            continue
+                        if t in dead:
+                            memo_hits += 1
+                            continue
+                        parents[t] = (s, act)
+                        counter += 1
+                        push(heap, ((goal_pos & ~t).bit_count() + (goal_neg & t).bit_count(), counter, t))
+            return "dead", parents
+        finally:
+            self.stats.memo_hits += memo_hits
+            self.stats.expanded += expanded
 
+
+def _path(parents: dict[int, tuple[int, GroundAction] | None], end: int) -> list[tuple[int, GroundAction, int]]:
+    """The steps (state, action, next state) from the search's start to ``end``."""
+    steps: list[tuple[int, GroundAction, int]] = []
+    s = end
+    while parents[s] is not None:
+        prev, act = parents[s]  # type: ignore[misc]
+        steps.append((prev, act, s))
+        s = prev
+    steps.reverse()
+    return steps
+
+
+def _run_for(steps: Generator[None, None, bool], seconds: float) -> bool | None:
+    """Advance ``steps`` for about ``seconds``: its answer, or None if it is not done by then."""
+    began = time.monotonic()
+    try:
+        while time.monotonic() - began < seconds:
+            next(steps)
+    except StopIteration as done:
+        return bool(done.value)
+    return None

@@ -216,7 +216,9 @@ class LandmarkSearch:
         return SearchOutcome(sorted(solutions), plans, status, candidates, oracle.stats.calls, expanded,
                              {"evaluations": evaluations, "oracle_expanded": oracle.stats.expanded,
                               "oracle_memo_hits": oracle.stats.memo_hits,
-                              "oracle_hill_climbs": oracle.stats.hill_climbs})
+                              "oracle_hill_climbs": oracle.stats.hill_climbs,
+                              "oracle_pair_proofs": oracle.stats.pair_proofs,
+                              "oracle_ff_searches": oracle.stats.ff_searches})
 
 
 def colex_subsets(atoms: list[int], size: int, end: int | None = None) -> Iterator[int]:

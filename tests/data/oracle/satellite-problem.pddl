@@ -1,0 +1,5 @@
+(define (problem satellite-mini-1)
+  (:domain satellite-mini)
+  (:objects sat0 - satellite cam0 - instrument star0 phen1 - direction image - mode)
+  (:init (on_board cam0 sat0) (supports cam0 image) (pointing sat0 star0) (power_avail sat0))
+  (:goal (have_image phen1 image)))

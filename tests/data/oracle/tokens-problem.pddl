@@ -1,0 +1,5 @@
+(define (problem tokens-3)
+  (:domain tokens)
+  (:objects a b c - slot)
+  (:init (full a) (full b))
+  (:goal (and (full a) (full b) (full c))))

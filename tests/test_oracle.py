@@ -1,0 +1,141 @@
+"""The reachability oracle: the h^2 pair check and the portfolio of searches, against brute force."""
+
+from __future__ import annotations
+
+import itertools
+from collections import deque
+from pathlib import Path
+
+import pytest
+from hypothesis import HealthCheck, given, settings
+
+from guided_lfd.excuse import reach
+from guided_lfd.excuse.engine import ExcuseOptions, find_excuses
+from guided_lfd.excuse.reach import ReachabilityOracle
+from guided_lfd.excuse.space import Semantics, build_space
+from guided_lfd.grounding import ground
+from guided_lfd.h2 import PairReachability
+from guided_lfd.pddl.reader import parse_task
+from test_excuse_engine import _parse_random, brute_force, small_tasks
+
+DATA = Path(__file__).parent / "data" / "oracle"
+
+
+def _oracle(domain, problem) -> ReachabilityOracle:
+    task = ground(domain, problem)
+    return ReachabilityOracle(build_space(task, Semantics.LITERAL, [], [], []))
+
+
+def _bfs_reaches_goal(task, state: int) -> bool:
+    """Plain breadth-first search over every ground action: the reference."""
+    seen, queue = {state}, deque([state])
+    while queue:
+        s = queue.popleft()
+        if task.satisfies_goal(s):
+            return True
+        for act in task.actions:
+            if act.applicable(s):
+                t = act.apply(s)
+                if t not in seen:
+                    seen.add(t)
+                    queue.append(t)
+    return False
+
+
+def _every_state(task):
+    for values in itertools.product((0, 1), repeat=len(task.atoms)):
+        yield sum(v << i for i, v in enumerate(values))
+
+
+@settings(max_examples=80, deadline=None, suppress_health_check=[HealthCheck.too_slow, HealthCheck.function_scoped_fixture])
+@given(pddl=small_tasks())
+def test_pair_check_never_refutes_a_reachable_goal(tmp_path_factory, pddl):
+    """h^2 is admissible: "unreachable" only where no plan exists, from every state of a random task."""
+    domain, problem = _parse_random(tmp_path_factory, "h2", pddl)
+    oracle = _oracle(domain, problem)
+    task, pairs = oracle.space.task, oracle.pairs()
+    for state in _every_state(task):
+        if not pairs.reachable(state & oracle.mask):
+            assert not _bfs_reaches_goal(task, state)
+
+
+def test_pair_check_refutes_a_calibrated_instrument_that_is_not_powered():
+    """switch_on deletes calibrated: calibrated and power_on never hold together (h^1 cannot see it)."""
+    domain, problem = parse_task(DATA / "satellite-domain.pddl", DATA / "satellite-problem.pddl")
+    oracle = _oracle(domain, problem)
+    task = oracle.space.task
+    index = {str(a): i for i, a in enumerate(task.atoms)}
+    calibrated = task.init | 1 << index["(calibrated cam0)"]
+    assert oracle.relaxed_task().relaxed_plan(calibrated & oracle.mask) is not None  # h^1: reachable
+    assert not oracle.pairs().reachable(calibrated & oracle.mask)
+    assert oracle.solve(calibrated) is None
+    assert oracle.stats.pair_proofs == 1 and oracle.stats.expanded == 0  # no search was needed
+    powered = calibrated | 1 << index["(power_on cam0)"]
+    assert oracle.pairs().reachable(powered & oracle.mask)
+    assert oracle.solve(powered) is not None
+
+
+def test_excuse_search_uses_the_pair_check_and_finds_the_exact_excuse():
+    domain, problem = parse_task(DATA / "satellite-domain.pddl", DATA / "satellite-problem.pddl")
+    report = find_excuses(domain, problem, ExcuseOptions(semantics=Semantics.LITERAL, all_minimal=True))
+    assert [sorted(str(c) for c in e.changes) for e in report.excuses] == [
+        ["+(calibrated cam0)", "+(power_on cam0)"]]
+    assert report.statistics["oracle_pair_proofs"] >= 1
+
+
+def test_pair_check_cannot_refute_three_slots_and_the_search_does():
+    """Two tokens, three slots: every pair of full slots is reachable, all three are not."""
+    domain, problem = parse_task(DATA / "tokens-domain.pddl", DATA / "tokens-problem.pddl")
+    oracle = _oracle(domain, problem)
+    task = oracle.space.task
+    assert oracle.pairs().reachable(task.init & oracle.mask)
+    assert oracle.solve(task.init) is None
+    assert oracle.stats.pair_proofs == 0 and oracle.stats.expanded > 0
+    assert not _bfs_reaches_goal(task, task.init)
+
+
+def _never_decides(*_args):
+    while True:
+        yield
+
+
+@pytest.mark.parametrize("silenced", ["_goal_count_search", "_ff_search", "none"])
+@settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow, HealthCheck.function_scoped_fixture])
+@given(pddl=small_tasks())
+def test_each_portfolio_member_decides_like_brute_force(tmp_path_factory, monkeypatch, silenced, pddl):
+    """With one search silenced (it never decides), the other answers every check alone, and correctly.
+
+    Slices of 0 s make the members take turns step by step, so their
+    interleaving is exercised too.
+    """
+    monkeypatch.setattr(reach, "PORTFOLIO_SLICE_S", 0.0)
+    monkeypatch.setattr(reach, "PAIR_CHECK_FIRST_S", 0.0)
+    if silenced != "none":
+        monkeypatch.setattr(ReachabilityOracle, silenced, _never_decides)
+    domain, problem = _parse_random(tmp_path_factory, "pf", pddl)
+    oracle = _oracle(domain, problem)
+    task = oracle.space.task
+    for state in _every_state(task):
+        plan = oracle.solve(state)
+        assert (plan is not None) == _bfs_reaches_goal(task, state)
+        if plan is not None:
+            s = state
+            for act in plan:
+                assert act.applicable(s)
+                s = act.apply(s)
+            assert task.satisfies_goal(s)
+    for semantics in Semantics:
+        report = find_excuses(domain, problem, ExcuseOptions(semantics=semantics, all_minimal=True, max_size=3))
+        size, expected = brute_force(domain, problem, report.checked_groups)
+        if size not in (None, 0):
+            assert sorted(sorted(str(c) for c in e.changes) for e in report.excuses) == expected
+
+
+def test_the_ff_search_confirms_when_the_goal_count_search_cannot(monkeypatch):
+    """Kitchen-sized check with the goal-count member silenced: the h^FF member finds the plan."""
+    from conftest import kitchen
+
+    monkeypatch.setattr(ReachabilityOracle, "_goal_count_search", _never_decides)
+    report = find_excuses(*parse_task(*kitchen(1)), ExcuseOptions())
+    assert report.status == "excuse-found"
+    assert report.statistics["oracle_ff_searches"] >= 1
