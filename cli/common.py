@@ -14,7 +14,7 @@ import typer
 
 from cli.startup import resume_gc
 from guided_lfd.errors import EXIT_INTERNAL, EXIT_INTERRUPTED, EXIT_MEMORY, GuidedLfdError, OptionError
-from guided_lfd.io import write_text
+from guided_lfd.io import check_writable, write_text
 
 if TYPE_CHECKING:
     from rich.console import Console
@@ -140,6 +140,39 @@ def check_inputs(*paths: str) -> None:
     """Standard input can be read once: refuse ``-`` for two inputs."""
     if sum(1 for p in paths if p == "-") > 1:
         raise OptionError("'-' (standard input) can stand for only one input file")
+
+
+def _same_file(a: str, b: str) -> bool:
+    """Whether two path names reach the same file (links, ``..`` and hard links resolved)."""
+    try:
+        if os.path.exists(a) and os.path.exists(b):
+            return os.path.samefile(a, b)
+        return os.path.realpath(a) == os.path.realpath(b)
+    except OSError:  # an unresolvable name is no input: check_writable reports it
+        return False
+
+
+def check_files(inputs: list[str | None], outputs: dict[str, str | None]) -> None:
+    """Refuse, before any work, outputs that would replace an input or each other, or cannot be written.
+
+    ``inputs`` are the run's input file names (``-`` and None skipped);
+    ``outputs`` maps each output option (``--output``) to its file name.
+    Standard input may stand for one input only.
+    """
+    named = [p for p in inputs if p is not None]
+    check_inputs(*named)
+    files = [p for p in named if p != "-"]
+    given = [(option, path) for option, path in outputs.items() if path is not None and path != "-"]
+    for k, (option, path) in enumerate(given):
+        for source in files:
+            if _same_file(path, source):
+                raise OptionError(f"{option} {path} is an input of this run; expected another file")
+        for other_option, other in given[:k]:
+            if _same_file(path, other):
+                raise OptionError(f"{option} {path} is also {other_option}; expected another file")
+    for option, path in outputs.items():
+        if path is not None:
+            check_writable(path)
 
 
 def emit(output: str, text: str, success: bool) -> None:

@@ -8,14 +8,14 @@ from typing import Annotated
 
 import typer
 
-from cli.common import JsonOption, OutputOption, QuietOption, check_inputs, command, ui
+from cli.common import JsonOption, OutputOption, QuietOption, check_files, command, ui
 from guided_lfd.demonstration.learn import ground_actions, load_segments
 from guided_lfd.errors import EXIT_BAD_OPTION, EXIT_NO_EXCUSE, EXIT_TIME_LIMIT, InputFileError, Location, OptionError
 from guided_lfd.evaluate import DEFAULT_EXPLORATION_BOUND, Demonstration, excuse_problem, report_rows
 from guided_lfd.evaluate import evaluate as run_evaluation
 from guided_lfd.excuse.check import read_excuse
 from guided_lfd.excuse.engine import find_excuses
-from guided_lfd.io import check_writable, json_document, write_text
+from guided_lfd.io import json_document, write_text
 from guided_lfd.pddl.reader import parse_domain, parse_problem_for, parse_task
 
 
@@ -53,8 +53,7 @@ def evaluate(
     if csv_out and json_out:
         raise OptionError("--csv and --json: choose one output format")
     demos = demonstration or []
-    check_inputs(robot, problem, human, *[p for p in (excuse, nonminimal, merged) if p], *demos)
-    check_writable(output)
+    check_files([robot, problem, human, excuse, nonminimal, merged, *demos], {"--output": output})
     robot_domain, task = parse_task(robot, problem)
     human_domain = parse_domain(human)
     parse_problem_for(human_domain, problem)  # the human's domain must fit the task too

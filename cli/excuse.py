@@ -7,7 +7,7 @@ from typing import Annotated, Any
 import typer
 
 from cli.common import (
-    JsonOption, OutputOption, QuietOption, TimeLimitOption, check_inputs, check_time_limit, command, emit,
+    JsonOption, OutputOption, QuietOption, TimeLimitOption, check_files, check_time_limit, command, emit,
     plain_stderr, started_at, ui,
 )
 from guided_lfd import errors
@@ -15,7 +15,7 @@ from guided_lfd.deadline import deadline_after, watchdog
 from guided_lfd.excuse.engine import Excuse, ExcuseOptions, ExcuseReport, describe_change, find_excuses
 from guided_lfd.excuse.space import Semantics
 from guided_lfd.excuse.strategies import DEFAULT_STRATEGY, STRATEGIES
-from guided_lfd.io import check_writable, json_document, write_text
+from guided_lfd.io import json_document, write_text
 from guided_lfd.pddl.model import Problem
 from guided_lfd.pddl.reader import parse_domain, parse_task
 from guided_lfd.pddl.writer import problem_to_pddl
@@ -76,10 +76,7 @@ def excuse(
     if max_size is not None and max_size < 0:
         raise errors.OptionError(f"--max-size {max_size}: expected a number of changes >= 0")
     time_limit = check_time_limit(time_limit)
-    check_inputs(domain, problem, *(p for p in (invariants_from, fixed_from) if p))
-    check_writable(output)
-    if excuse_problem:
-        check_writable(excuse_problem)
+    check_files([domain, problem, invariants_from, fixed_from], {"--output": output, "--excuse-problem": excuse_problem})
     # The time limit bounds the whole run: reading the files counts too.
     started = started_at()
     with watchdog(deadline_after(time_limit, started), "reading the input"):

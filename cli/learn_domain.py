@@ -6,11 +6,11 @@ from typing import Annotated
 
 import typer
 
-from cli.common import OutputOption, QuietOption, check_inputs, command, ui
+from cli.common import OutputOption, QuietOption, check_files, command, ui
 from guided_lfd.demonstration.learn import learn_domain as learn
 from guided_lfd.demonstration.learn import load_segments
 from guided_lfd.errors import OptionError
-from guided_lfd.io import check_writable, write_text
+from guided_lfd.io import write_text
 from guided_lfd.pddl.model import pddl_name_problem
 from guided_lfd.pddl.reader import parse_domain
 from guided_lfd.pddl.writer import domain_to_pddl
@@ -30,8 +30,7 @@ def learn_domain(
     why = pddl_name_problem(name.lower())
     if why:
         raise OptionError(f"--name {name!r}: expected {why}")
-    check_inputs(*segments, *([prior] if prior else []))
-    check_writable(output)
+    check_files([*segments, prior], {"--output": output})
     documents = [(path, load_segments(path)) for path in segments]
     prior_domain = parse_domain(prior) if prior else None
     domain = learn(documents, prior_domain, name=name.lower())

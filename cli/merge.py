@@ -2,15 +2,14 @@
 
 from __future__ import annotations
 
-import os
 from dataclasses import replace
 from typing import Annotated
 
 import typer
 
-from cli.common import JsonOption, OutputOption, QuietOption, check_inputs, command, ui
+from cli.common import JsonOption, OutputOption, QuietOption, check_files, command, ui
 from guided_lfd.errors import OptionError
-from guided_lfd.io import check_writable, json_document, write_text
+from guided_lfd.io import json_document, write_text
 from guided_lfd.merge import merge_domains
 from guided_lfd.pddl.compile import compile_negative_preconditions
 from guided_lfd.pddl.model import pddl_name_problem
@@ -36,16 +35,12 @@ def merge(
     """Unite domains: equal actions kept once, name clashes renamed, every action's origin as a comment."""
     if (positive_for is None) != (problem_output is None):
         raise OptionError("--positive-for and --problem-output go together")
-    if problem_output is not None and (problem_output == output or (
-            output != "-" and os.path.realpath(problem_output) == os.path.realpath(output))):
+    if problem_output is not None and problem_output == output:
         raise OptionError("--problem-output must differ from --output")
     why = None if name is None else pddl_name_problem(name.lower())
     if why:
         raise OptionError(f"--name {name!r}: expected {why}")
-    check_inputs(prior, *learned, *([positive_for] if positive_for else []))
-    check_writable(output)
-    if problem_output is not None:
-        check_writable(problem_output)
+    check_files([prior, *learned, positive_for], {"--output": output, "--problem-output": problem_output})
     domains = [parse_domain(path) for path in (prior, *learned)]
     result = merge_domains(domains, name.lower() if name else None)
     header = "Merged by guided-lfd merge from: " + ", ".join((prior, *learned))

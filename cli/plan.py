@@ -7,12 +7,12 @@ from typing import Annotated
 import typer
 
 from cli.common import (
-    JsonOption, OutputOption, QuietOption, TimeLimitOption, check_inputs, check_time_limit, command, emit,
+    JsonOption, OutputOption, QuietOption, TimeLimitOption, check_files, check_time_limit, command, emit,
     started_at, ui,
 )
 from guided_lfd.deadline import deadline_after, remaining, watchdog
 from guided_lfd.errors import EXIT_UNSOLVABLE, OptionError
-from guided_lfd.io import check_writable, json_document, write_text
+from guided_lfd.io import json_document, write_text
 from guided_lfd.pddl.reader import parse_task
 from guided_lfd.planning import DEFAULT_SEARCH, SEARCHES, plan_task
 from guided_lfd.validate import PlanStep, format_plan, validate_plan
@@ -34,8 +34,7 @@ def plan(
     if search not in SEARCHES:
         raise OptionError(f"--search {search}: unknown search (expected one of: {', '.join(SEARCHES)})")
     time_limit = check_time_limit(time_limit)
-    check_inputs(domain, problem)
-    check_writable(output)
+    check_files([domain, problem], {"--output": output})
     # The time limit bounds the whole run (reading and grounding too).
     deadline = deadline_after(time_limit, started_at())
     with watchdog(deadline, "plan"):

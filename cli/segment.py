@@ -2,18 +2,17 @@
 
 from __future__ import annotations
 
-import os
 
 from typing import Annotated
 
 import typer
 
-from cli.common import OutputOption, QuietOption, check_inputs, command, ui
+from cli.common import OutputOption, QuietOption, check_files, command, ui
 from guided_lfd.demonstration.segment import segment as segment_trace
 from guided_lfd.demonstration.segment import segments_csv, segments_document
 from guided_lfd.demonstration.trace import default_state_path, load_demonstration
 from guided_lfd.errors import OptionError
-from guided_lfd.io import check_writable, json_document, write_text
+from guided_lfd.io import json_document, write_text
 
 
 @command
@@ -31,10 +30,7 @@ def segment(
     if trace == "-" and state is None:
         raise OptionError("TRACE '-' (standard input) has no TRACE.state.csv beside it; expected --state FILE")
     state_path = state or default_state_path(trace)
-    check_inputs(trace, state_path)
-    if output != "-" and any(p != "-" and os.path.realpath(p) == os.path.realpath(output) for p in (trace, state_path)):
-        raise OptionError(f"--output {output} is an input of this run; expected another file")
-    check_writable(output)
+    check_files([trace, state_path], {"--output": output})
     demo = load_demonstration(trace, state_path)
     segments = [s for s in segment_trace(demo) if include_idle or s.activity != "Idle"]
     if csv_out:

@@ -6,9 +6,9 @@ from typing import Annotated
 
 import typer
 
-from cli.common import JsonOption, OutputOption, QuietOption, check_inputs, command, emit
+from cli.common import JsonOption, OutputOption, QuietOption, check_files, command, emit
 from guided_lfd.errors import EXIT_PLAN_INVALID
-from guided_lfd.io import check_writable, json_document
+from guided_lfd.io import json_document
 from guided_lfd.pddl.reader import parse_task
 from guided_lfd.validate import parse_plan, validate_plan
 
@@ -23,8 +23,7 @@ def validate(
     quiet: QuietOption = False,
 ) -> None:
     """Execute PLAN from the problem's initial state; say which precondition of which step fails."""
-    check_inputs(domain, problem, plan_file)
-    check_writable(output)
+    check_files([domain, problem, plan_file], {"--output": output})
     dom, prob = parse_task(domain, problem)
     steps = parse_plan(plan_file, dom, prob)
     report = validate_plan(dom, prob.init, prob.goal, steps)

@@ -65,8 +65,12 @@ def _output_target(name: str) -> Path:
     """The file an output name stands for (links followed); refuses folders."""
     if name.endswith(("/", os.sep)) or not Path(name).name:
         raise OutputError("expected a file name, got a folder", Location(name))
-    target = Path(os.path.realpath(name))
-    if target.is_dir():
+    try:
+        target = Path(os.path.realpath(name))
+        is_dir = target.is_dir()
+    except OSError as exc:  # a name the OS refuses (too long, a loop of links, ...)
+        raise OutputError(f"cannot write ({exc.strerror or exc})", Location(name)) from None
+    if is_dir:
         raise OutputError("is a directory, expected a file name", Location(name))
     return target
 
@@ -97,6 +101,13 @@ def check_writable(path: str | Path) -> None:
     if name == "-":
         return
     target = _output_target(name)
+    try:
+        return _check_writable_target(name, target)
+    except OSError as exc:
+        raise OutputError(f"cannot write ({exc.strerror or exc})", Location(name)) from None
+
+
+def _check_writable_target(name: str, target: Path) -> None:
     if not target.parent.is_dir():
         raise OutputError("its folder does not exist", Location(name))
     if len(target.name) > 200:

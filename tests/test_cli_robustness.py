@@ -378,3 +378,86 @@ def test_ctrl_c_is_its_own_documented_exit_code(runner, app, monkeypatch):
     result = runner.invoke(app, ["excuse", str(DOMAIN), str(PROBLEM)])
     assert result.exit_code == 130
     assert one_line(result) == "interrupted"
+
+
+def _workspace(runner, app, tmp_path):
+    """Copies of a kitchen task, a plan, segments and an excuse document: every subcommand's inputs."""
+    import shutil
+
+    base = tmp_path / "in"
+    base.mkdir()
+    robot, problem = kitchen(1)
+    shutil.copy(robot, base / "robot.pddl")
+    shutil.copy(problem, base / "problem.pddl")
+    shutil.copy(kitchen(1, "human")[0], base / "human.pddl")
+    demo = ROOT / "data" / "demos" / "kitchen-1" / "P1-excuse"
+    for suffix in (".csv", ".state.csv"):
+        shutil.copy(f"{demo}{suffix}", base / f"t{suffix}")
+    for name, args in (("plan.txt", ["plan", "human.pddl", "problem.pddl"]),
+                       ("s.json", ["segment", "t.csv"]),
+                       ("e.json", ["excuse", "robot.pddl", "problem.pddl", "--json"]),
+                       ("learned.pddl", ["learn-domain", "s.json"])):
+        cwd = os.getcwd()
+        os.chdir(base)
+        try:
+            result = runner.invoke(app, [*args, "-q", "-o", name])
+        finally:
+            os.chdir(cwd)
+        assert result.exit_code == 0, (name, result.stderr)
+    return base
+
+
+#: Each subcommand with the input its -o (or second output) names, by a relative path through '..'.
+OWN_INPUTS = [
+    (["excuse", "robot.pddl", "problem.pddl", "-o"], "robot.pddl"),
+    (["excuse", "robot.pddl", "problem.pddl", "--excuse-problem"], "problem.pddl"),
+    (["plan", "human.pddl", "problem.pddl", "-o"], "problem.pddl"),
+    (["validate", "human.pddl", "problem.pddl", "plan.txt", "-o"], "plan.txt"),
+    (["learn-domain", "s.json", "-o"], "s.json"),
+    (["merge", "robot.pddl", "learned.pddl", "-o"], "learned.pddl"),
+    (["evaluate", "robot.pddl", "problem.pddl", "--human", "human.pddl", "--excuse", "e.json", "-o"], "e.json"),
+    (["segment", "t.csv", "-o"], "t.state.csv"),
+]
+
+
+@pytest.mark.parametrize("args,target", OWN_INPUTS, ids=[f"{a[0]}-{a[-1]}" for a, _ in OWN_INPUTS])
+@pytest.mark.parametrize("spelling", ["relative", "symlink"])
+def test_no_subcommand_writes_over_its_own_input(runner, app, tmp_path, args, target, spelling):
+    """-o naming an input (through '..' or a symbolic link) is refused before any work; the input is intact."""
+    base = _workspace(runner, app, tmp_path)
+    before = (base / target).read_bytes()
+    if spelling == "symlink":
+        (tmp_path / "link").symlink_to(base / target)
+        output = str(tmp_path / "link")
+    else:
+        output = f"../in/{target}"
+    cwd = os.getcwd()
+    os.chdir(base)
+    try:
+        result = runner.invoke(app, [*args, output])
+    finally:
+        os.chdir(cwd)
+    assert result.exit_code == 37, result.stderr
+    assert one_line(result).endswith("is an input of this run; expected another file")
+    assert (base / target).read_bytes() == before
+
+
+def test_two_outputs_naming_one_file_are_refused(runner, app, tmp_path):
+    robot, problem = kitchen(1)
+    out = tmp_path / "x.json"
+    result = runner.invoke(app, ["excuse", str(robot), str(problem), "-o", str(out),
+                                 "--excuse-problem", str(tmp_path / "." / "x.json")])
+    assert result.exit_code == 37
+    assert "is also --output" in one_line(result)
+    assert not out.exists()
+
+
+@pytest.mark.parametrize("name", ["a" * 300 + ".json", "a" * 300 + "/x.json"])
+@pytest.mark.parametrize("command", [["excuse", "robot", "problem"], ["plan", "human", "problem"]])
+def test_an_output_name_the_os_refuses_is_the_output_error(runner, app, tmp_path, name, command):
+    """A 300-character name is exit 40 with the OS's reason, not an internal error."""
+    files = {"robot": str(kitchen(1)[0]), "problem": str(kitchen(1)[1]), "human": str(kitchen(1, "human")[0])}
+    result = runner.invoke(app, [command[0], *(files[c] for c in command[1:]), "-o", str(tmp_path / name)])
+    assert result.exit_code == 40, result.stderr
+    line = one_line(result)
+    assert "output error" in line and ("too long" in line or "File name" in line)
