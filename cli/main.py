@@ -20,6 +20,7 @@ from typer.core import TyperCommand, TyperGroup
 
 from cli.coercion import QuickCoercionMixin
 from cli.startup import pause_gc
+from guided_lfd.errors import EXIT_BAD_OPTION
 from guided_lfd import __version__
 
 
@@ -164,9 +165,16 @@ def _one_line_usage_errors() -> None:
         out = file or sys.stderr
         command = self.ctx.command_path if getattr(self, "ctx", None) is not None else "guided-lfd"
         message = " ".join(self.format_message().split())
-        out.write(f"{command}: usage error: {message} (see --help)\n")
+        bad_value = isinstance(self, click_exceptions.BadParameter) and not isinstance(
+            self, click_exceptions.MissingParameter)
+        kind = "option error" if bad_value else "usage error"
+        out.write(f"{command}: {kind}: {message} (see --help)\n")
 
     click_exceptions.UsageError.show = show  # type: ignore[method-assign]
+    # A value an option does not accept is the same error whether the parser
+    # (--semantics foo, --max-size x) or the command (--strategy foo) finds it.
+    click_exceptions.BadParameter.exit_code = EXIT_BAD_OPTION
+    click_exceptions.MissingParameter.exit_code = click_exceptions.UsageError.exit_code
 
 
 _one_line_usage_errors()

@@ -62,7 +62,7 @@ EXIT_INTERRUPTED = 130
 EXIT_CODES: dict[int, str] = {
     EXIT_OK: "success",
     EXIT_INTERNAL: "internal error (a bug)",
-    EXIT_USAGE: "command-line usage error",
+    EXIT_USAGE: "command-line usage error (an unknown option, a missing argument)",
     EXIT_UNSOLVABLE: "task unsolvable",
     EXIT_NO_EXCUSE: "no excuse exists: a new skill must be demonstrated",
     EXIT_PLAN_INVALID: "plan invalid",
@@ -77,7 +77,7 @@ EXIT_CODES: dict[int, str] = {
     EXIT_MISMATCH: "inputs do not belong together (domain and problem, domains to merge)",
     EXIT_PLAN_FILE: "plan file error",
     EXIT_TRACE: "demonstration trace or segments error",
-    EXIT_BAD_OPTION: "bad option value",
+    EXIT_BAD_OPTION: "bad option value (refused by the parser or by the command alike)",
     EXIT_OUTPUT: "output could not be written",
     EXIT_INTERRUPTED: "interrupted (Ctrl-C)",
 }

@@ -52,8 +52,8 @@ def test_write_keeps_permissions(tmp_path):
         (["--time-limit", "nan"], 37, "--time-limit nan: expected a number of seconds > 0"),
         (["--time-limit", "-1"], 37, "--time-limit -1: expected a number of seconds > 0"),
         (["--max-size", "-1"], 37, "--max-size -1: expected a number of changes >= 0"),
-        (["--max-size", "x"], 2, "usage error"),
-        (["--semantics", "zz"], 2, "usage error"),
+        (["--max-size", "x"], 37, "option error: Invalid value for '--max-size'"),
+        (["--semantics", "zz"], 37, "option error: Invalid value for '--semantics'"),
         (["--cost", "open=\u0661"], 37, "is not a whole number"),
         (["--cost", "((open pinkdrawer))=1"], 37, "expected one atom"),
         (["--fixed", "OPEN", "--fixed", "sofa"], 37, "--fixed 'sofa': unknown predicate"),
@@ -63,6 +63,27 @@ def test_bad_option_values(runner, app, args, code, message):
     result = runner.invoke(app, ["excuse", DOMAIN, PROBLEM, *args])
     assert result.exit_code == code
     assert message in one_line(result)
+
+
+@pytest.mark.parametrize("args", [
+    ["plan", DOMAIN, PROBLEM, "--time-limit", "soon"],
+    ["plan", DOMAIN, PROBLEM, "--search", "zz"],
+    ["evaluate", DOMAIN, PROBLEM, "--human", DOMAIN, "--bound", "many"],
+    ["evaluate", DOMAIN, PROBLEM, "--human", DOMAIN, "--bound", "0"],
+    ["excuse", DOMAIN, PROBLEM, "--semantics", "zz"],
+    ["excuse", DOMAIN, PROBLEM, "--strategy", "zz"],
+])
+def test_a_bad_option_value_is_one_exit_code_in_every_subcommand(runner, app, args):
+    """The parser's refusals (not a number, not a choice) and the commands' own are both 37."""
+    result = runner.invoke(app, [str(a) for a in args])
+    assert result.exit_code == 37, result.stderr
+    assert "option error" in one_line(result)
+
+
+def test_unknown_options_and_missing_arguments_stay_usage_errors(runner, app):
+    for args in (["excuse", DOMAIN, PROBLEM, "--bogus"], ["excuse", DOMAIN]):
+        result = runner.invoke(app, [str(a) for a in args])
+        assert result.exit_code == 2 and "usage error" in one_line(result)
 
 
 def test_plan_unknown_search_and_huge_time_limit(runner, app):
