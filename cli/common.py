@@ -175,15 +175,20 @@ def check_files(inputs: list[str | None], outputs: dict[str, str | None]) -> Non
             check_writable(path)
 
 
-def emit(output: str, text: str, success: bool) -> None:
-    """Write a result; a failed run never replaces an existing output file.
+def emit(output: str, text: str, failure: str | None = None, structured: bool = True) -> None:
+    """Write a run's result; for a meaningful non-zero result also say why on stderr.
 
-    On failure the document still goes to stdout when that is the output.
+    ``failure`` is the one-line reason when the result is not a success (no
+    excuse, time limit, invalid plan): it always goes to stderr, ``--quiet``
+    included, and the document is written all the same, since its status says
+    what happened.  A text result on stdout is then left out (it would only
+    repeat the reason: no message appears on both streams).  A run that ends
+    in an error never gets here, so it writes nothing.
     """
-    if success or output == "-":
+    if failure is None or structured or output != "-":
         write_text(output, text)
-    else:
-        ui.info(f"[dim]{output} not written: the run did not succeed[/]")
+    if failure is not None:
+        ui.error(failure)
 
 
 def command(fn: F) -> F:

@@ -95,9 +95,9 @@ def excuse(
     else:
         text = _text(report, prob, spellings)
     code = EXIT_BY_STATUS[report.status]
-    # A timed-out run still writes its JSON document (status "timeout"): it
-    # is a result, and says how far the run got.
-    emit(output, text, success=code == errors.EXIT_OK or (as_json and report.status == "timeout"))
+    # Every outcome is a document (its status says what happened: a timed-out
+    # run says how far it got); a non-zero one also gets its reason on stderr.
+    emit(output, text, _summary(report, spellings) if code else None, structured=as_json)
     if excuse_problem and report.excuse is not None:
         header = (f"Excuse state of {problem} for {domain} ({report.semantics.value} semantics):\n"
                   + "\n".join(f"  {c}" for c in report.excuse.changes))
@@ -106,7 +106,6 @@ def excuse(
     ui.info(f"[dim]{report.strategy} search: {stats.get('candidates', 0)} candidate(s), "
             f"{stats.get('planner_calls', 0)} reachability check(s), {stats['time_s']:.2f} s[/]")
     if code:
-        ui.error(_summary(report, spellings))
         raise typer.Exit(code)
 
 

@@ -41,12 +41,14 @@ def plan(
         dom, prob = parse_task(domain, problem)
         task, result = plan_task(dom, prob, search, remaining(deadline))
     if result.plan is None:
+        reason = f"unsolvable: exhaustive {search} search found no plan ({result.time_s:.2f} s)"
         if json_out:
             emit(output, json_document("plan", {
                 "domain": domain, "problem": problem, "status": "unsolvable", "plan": None,
                 "search": search, "time_s": round(result.time_s, 4),
-            }), success=False)
-        ui.error(f"unsolvable: exhaustive {search} search found no plan ({result.time_s:.2f} s)")
+            }), reason)
+        else:
+            ui.error(reason)  # a text result has no plan to write
         raise typer.Exit(EXIT_UNSOLVABLE)
     steps = [PlanStep(a.schema, a.args) for a in result.plan]
     report = validate_plan(dom, prob.init, prob.goal, steps)

@@ -42,13 +42,19 @@ def validate(
         })
     elif report.valid:
         text = f"valid: {len(steps)} step(s), goal reached\n"
-    elif failure is not None:
-        where = f"{plan_file}:{failure.step.line}:{failure.step.col}: " if failure.step.line else ""
-        text = (f"{where}invalid: step {failure.index} {failure.step} is not applicable: "
-                f"precondition {', '.join(str(l) for l in failure.failed)} does not hold\n")
     else:
-        text = (f"invalid: all {len(steps)} step(s) apply, but the goal is not reached: "
-                f"{', '.join(str(l) for l in report.unsatisfied_goal)} does not hold\n")
-    emit(output, text, success=report.valid)
+        text = _reason(report, steps, plan_file) + "\n"
+    emit(output, text, None if report.valid else _reason(report, steps, plan_file), structured=json_out)
     if not report.valid:
         raise typer.Exit(EXIT_PLAN_INVALID)
+
+
+def _reason(report, steps: list, plan_file: str) -> str:
+    """Why the plan is invalid, in one line: the failing step and precondition, or the unmet goal."""
+    failure = report.first_failure
+    if failure is not None:
+        where = f"{plan_file}:{failure.step.line}:{failure.step.col}: " if failure.step.line else ""
+        return (f"{where}invalid: step {failure.index} {failure.step} is not applicable: "
+                f"precondition {', '.join(str(l) for l in failure.failed)} does not hold")
+    return (f"invalid: all {len(steps)} step(s) apply, but the goal is not reached: "
+            f"{', '.join(str(l) for l in report.unsatisfied_goal)} does not hold")

@@ -97,14 +97,66 @@ def test_stdin_twice_is_refused(runner, app):
     assert "standard input" in one_line(result)
 
 
-@pytest.mark.parametrize("args,code", [(["--max-size", "0"], 13), (["--time-limit", "0.000001"], 20)])
-def test_unsuccessful_excuse_does_not_replace_output(runner, app, tmp_path, args, code):
-    out = tmp_path / "keep.txt"
-    out.write_text("precious")
+@pytest.mark.parametrize("json_out", [False, True])
+@pytest.mark.parametrize("args,code,status,reason", [
+    (["--max-size", "0"], 13, "no-excuse-within-size", "no excuse within --max-size"),
+    (["--time-limit", "0.000001"], 20, "timeout", "time limit"),
+])
+def test_a_non_zero_excuse_result_writes_its_document_and_says_why(runner, app, tmp_path, args, code, status,
+                                                                    reason, json_out):
+    """The document is the result (its status says what happened); the reason is on stderr, --quiet too."""
+    import json
+
+    out = tmp_path / ("out.json" if json_out else "out.txt")
+    out.write_text("old")
     result = runner.invoke(app, ["excuse", *map(str, (BLOCKS / "domain-no-unstack.pddl", BLOCKS / "task03.pddl")),
-                                 "--strategy", "baseline", "-o", str(out), *args])
+                                 "--strategy", "baseline", "-o", str(out), "--quiet", *args])
     assert result.exit_code == code
-    assert out.read_text() == "precious"
+    assert reason in one_line(result)
+    text = out.read_text()
+    if json_out:
+        assert json.loads(text)["status"] == status
+    else:
+        assert reason in text
+
+
+def test_a_non_zero_text_result_on_stdout_is_not_said_twice(runner, app):
+    result = runner.invoke(app, ["excuse", *map(str, (BLOCKS / "domain-no-unstack.pddl", BLOCKS / "task03.pddl")),
+                                 "--max-size", "0", "-q"])
+    assert result.exit_code == 13
+    assert "no excuse within --max-size" in one_line(result)
+    assert result.stdout == ""
+
+
+def test_an_invalid_plan_writes_its_report_and_names_the_step_on_stderr(runner, app, tmp_path):
+    import json
+
+    domain, problem = kitchen(1, "human")
+    plan = tmp_path / "bad.plan"
+    plan.write_text("(close_drawer pinkdrawer)\n")
+    for json_out in (False, True):
+        out = tmp_path / ("v.json" if json_out else "v.txt")
+        result = runner.invoke(app, ["validate", str(domain), str(problem), str(plan), "-o", str(out), "-q",
+                                     *(["--json"] if json_out else [])])
+        assert result.exit_code == 12
+        line = one_line(result)
+        assert f"{plan}:1:1: invalid: step 1" in line and "does not hold" in line
+        if json_out:
+            assert json.loads(out.read_text())["valid"] is False
+        else:
+            assert out.read_text() == line + "\n"
+
+
+def test_an_unsolvable_plan_json_is_written_with_its_reason(runner, app, tmp_path):
+    import json
+
+    out = tmp_path / "plan.json"
+    result = runner.invoke(app, ["plan", str(DATA / "oracle" / "tokens-domain.pddl"),
+                                 str(DATA / "oracle" / "tokens-problem.pddl"), "--json", "-o", str(out), "-q"])
+    assert result.exit_code == 10
+    assert one_line(result).startswith("unsolvable:")
+    doc = json.loads(out.read_text())
+    assert doc["status"] == "unsolvable" and doc["plan"] is None
 
 
 def test_unwritable_second_output_fails_before_anything_is_written(runner, app, tmp_path):

@@ -222,7 +222,7 @@ def _rich_prints(message: str, markup: bool) -> str:
 
 MESSAGES = [
     "[dim]landmark search: 1 candidate(s), 2 reachability check(s), 0.02 s[/]",
-    "[dim]out.json not written: the run did not succeed[/]",
+    "[dim]out.json written[/]",
     "plan of length 3 found by astar-lmcut in 0.00 s (optimal), validated",
     "[dim][/]", "", " lead and trail ", "a" * 300, "x:y", ":smile:", "[bold]b[/bold]", "a [dim]b[/] c",
     "[dim]a[/][dim]b[/]", "path\\[1]", "tab\there", "line\nbreak", "caf\u00e9", "[dim]:+1:[/]", "[]", "[x]",
