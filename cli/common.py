@@ -142,6 +142,24 @@ def check_inputs(*paths: str) -> None:
         raise OptionError("'-' (standard input) can stand for only one input file")
 
 
+def output_format(output: str, json_out: bool = False, csv_out: bool = False, default: str = "text") -> str:
+    """``json``, ``csv`` or ``default``: the flags first, else the output file's extension (``-o r.json``)."""
+    if json_out and csv_out:
+        raise OptionError("--csv and --json: choose one output format")
+    if json_out:
+        return "json"
+    if csv_out:
+        return "csv"
+    suffix = output.lower().rsplit(".", 1)[-1] if output != "-" and "." in output else ""
+    if suffix in ("json", "csv") and suffix in _FORMATS_OF.get(default, (suffix,)):
+        return suffix
+    return default
+
+
+#: Which formats an extension may select, by a command's default format.
+_FORMATS_OF = {"text": ("json",), "json": ("json", "csv"), "pddl": ("json",), "table": ("json", "csv")}
+
+
 def _same_file(a: str, b: str) -> bool:
     """Whether two path names reach the same file (links, ``..`` and hard links resolved)."""
     try:

@@ -8,7 +8,7 @@ from typing import Annotated
 
 import typer
 
-from cli.common import JsonOption, OutputOption, QuietOption, check_files, command, ui
+from cli.common import JsonOption, OutputOption, QuietOption, check_files, output_format, command, ui
 from guided_lfd.demonstration.learn import ground_actions, load_segments
 from guided_lfd.errors import EXIT_BAD_OPTION, EXIT_NO_EXCUSE, EXIT_TIME_LIMIT, InputFileError, Location, OptionError
 from guided_lfd.evaluate import DEFAULT_EXPLORATION_BOUND, Demonstration, excuse_problem, report_rows
@@ -50,8 +50,8 @@ def evaluate(
     """F1 savings, predicted sizes, useful fraction, misdirected guidance, solvability after demonstration."""
     if bound < 1:
         raise OptionError(f"--bound {bound}: expected a number of states >= 1")
-    if csv_out and json_out:
-        raise OptionError("--csv and --json: choose one output format")
+    chosen = output_format(output, json_out, csv_out, default="table")
+    json_out, csv_out = chosen == "json", chosen == "csv"
     demos = demonstration or []
     check_files([robot, problem, human, excuse, nonminimal, merged, *demos], {"--output": output})
     robot_domain, task = parse_task(robot, problem)

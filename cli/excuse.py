@@ -7,7 +7,7 @@ from typing import Annotated, Any
 import typer
 
 from cli.common import (
-    JsonOption, OutputOption, QuietOption, TimeLimitOption, check_files, check_time_limit, command, emit,
+    JsonOption, OutputOption, QuietOption, TimeLimitOption, check_files, output_format, check_time_limit, command, emit,
     plain_stderr, started_at, ui,
 )
 from guided_lfd import errors
@@ -89,7 +89,7 @@ def excuse(
         )
     report = _run(dom, prob, options)
     spellings = {**prob.spellings, **dom.spellings}  # predicates as the domain writes them
-    as_json = json_out or output.lower().endswith(".json")
+    as_json = output_format(output, json_out) == "json"
     if as_json:
         text = json_document("excuse", _document(report, domain, problem, spellings))
     else:

@@ -7,7 +7,7 @@ from typing import Annotated
 
 import typer
 
-from cli.common import JsonOption, OutputOption, QuietOption, check_files, command, ui
+from cli.common import JsonOption, OutputOption, QuietOption, check_files, output_format, command, ui
 from guided_lfd.errors import OptionError
 from guided_lfd.io import json_document, write_text
 from guided_lfd.merge import merge_domains
@@ -41,6 +41,7 @@ def merge(
     if why:
         raise OptionError(f"--name {name!r}: expected {why}")
     check_files([prior, *learned, positive_for], {"--output": output, "--problem-output": problem_output})
+    json_out = output_format(output, json_out, default="pddl") == "json"
     domains = [parse_domain(path) for path in (prior, *learned)]
     result = merge_domains(domains, name.lower() if name else None)
     header = "Merged by guided-lfd merge from: " + ", ".join((prior, *learned))

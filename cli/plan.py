@@ -7,7 +7,7 @@ from typing import Annotated
 import typer
 
 from cli.common import (
-    JsonOption, OutputOption, QuietOption, TimeLimitOption, check_files, check_time_limit, command, emit,
+    JsonOption, OutputOption, QuietOption, TimeLimitOption, check_files, output_format, check_time_limit, command, emit,
     started_at, ui,
 )
 from guided_lfd.deadline import deadline_after, remaining, watchdog
@@ -35,6 +35,7 @@ def plan(
         raise OptionError(f"--search {search}: unknown search (expected one of: {', '.join(SEARCHES)})")
     time_limit = check_time_limit(time_limit)
     check_files([domain, problem], {"--output": output})
+    json_out = output_format(output, json_out) == "json"
     # The time limit bounds the whole run (reading and grounding too).
     deadline = deadline_after(time_limit, started_at())
     with watchdog(deadline, "plan"):

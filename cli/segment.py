@@ -7,7 +7,7 @@ from typing import Annotated
 
 import typer
 
-from cli.common import OutputOption, QuietOption, check_files, command, ui
+from cli.common import OutputOption, QuietOption, check_files, output_format, command, ui
 from guided_lfd.demonstration.segment import segment as segment_trace
 from guided_lfd.demonstration.segment import segments_csv, segments_document
 from guided_lfd.demonstration.trace import default_state_path, load_demonstration
@@ -22,6 +22,7 @@ def segment(
         str | None, typer.Option("--state", metavar="FILE", help="Environment state CSV (default: TRACE.state.csv).")
     ] = None,
     csv_out: Annotated[bool, typer.Option("--csv", help="Write CSV instead of JSON.")] = False,
+    json_out: Annotated[bool, typer.Option("--json", help="Write the versioned JSON document (the default).")] = False,
     include_idle: Annotated[bool, typer.Option("--idle/--no-idle", help="Keep Idle segments.")] = False,
     output: OutputOption = "-",
     quiet: QuietOption = False,
@@ -31,6 +32,7 @@ def segment(
         raise OptionError("TRACE '-' (standard input) has no TRACE.state.csv beside it; expected --state FILE")
     state_path = state or default_state_path(trace)
     check_files([trace, state_path], {"--output": output})
+    csv_out = output_format(output, json_out, csv_out, default="json") == "csv"
     demo = load_demonstration(trace, state_path)
     segments = [s for s in segment_trace(demo) if include_idle or s.activity != "Idle"]
     if csv_out:

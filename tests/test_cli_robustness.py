@@ -534,3 +534,43 @@ def test_an_output_name_the_os_refuses_is_the_output_error(runner, app, tmp_path
     assert result.exit_code == 40, result.stderr
     line = one_line(result)
     assert "output error" in line and ("too long" in line or "File name" in line)
+
+
+#: Each subcommand with a JSON document, run with -o NAME.json and no --json.
+BY_EXTENSION = [
+    (["excuse", "robot.pddl", "problem.pddl"], "json", "guided-lfd/excuse"),
+    (["plan", "human.pddl", "problem.pddl"], "json", "guided-lfd/plan"),
+    (["validate", "human.pddl", "problem.pddl", "plan.txt"], "json", "guided-lfd/validation"),
+    (["merge", "robot.pddl", "learned.pddl"], "json", "guided-lfd/merge"),
+    (["evaluate", "robot.pddl", "problem.pddl", "--human", "human.pddl", "--excuse", "e.json"], "json",
+     "guided-lfd/evaluation"),
+    (["evaluate", "robot.pddl", "problem.pddl", "--human", "human.pddl", "--excuse", "e.json"], "csv", "measure"),
+    (["segment", "t.csv"], "csv", "index"),
+    (["segment", "t.csv", "--json"], "json", "guided-lfd/segments"),
+]
+
+
+@pytest.mark.parametrize("args,suffix,marker", BY_EXTENSION, ids=[f"{a[0]}-{s}" for a, s, _ in BY_EXTENSION])
+def test_the_output_extension_selects_the_format(runner, app, tmp_path, args, suffix, marker):
+    """-o FILE.json writes JSON wherever there is --json (and FILE.csv writes CSV where there is --csv)."""
+    import json
+
+    base = _workspace(runner, app, tmp_path)
+    cwd = os.getcwd()
+    os.chdir(base)
+    try:
+        result = runner.invoke(app, [*args, "-q", "-o", f"result.{suffix}"])
+    finally:
+        os.chdir(cwd)
+    assert result.exit_code == 0, result.stderr
+    text = (base / f"result.{suffix}").read_text()
+    if suffix == "json":
+        assert json.loads(text)["format"] == marker
+    else:
+        assert text.splitlines()[0].split(",")[0] == marker
+
+
+def test_json_and_csv_together_are_refused(runner, app, tmp_path):
+    base = _workspace(runner, app, tmp_path)
+    result = runner.invoke(app, ["segment", str(base / "t.csv"), "--json", "--csv"])
+    assert result.exit_code == 37 and "choose one output format" in one_line(result)
