@@ -92,8 +92,15 @@ CASES = {
     "capitalised names": (True, f"(define (domain d) (:predicates (p ?x)) {ACT})",
         "(define (problem q) (:domain d) (:objects PinkDrawer) (:init (p PinkDrawer)) (:goal (not (p pinkdrawer))))"),
     "a comment ends the file, no line break": (True, f"(define (domain d) (:predicates (p ?x)) {ACT})\n; end", P + " ; end"),
+    "capitalised keyword": (True, f"(define (DOMAIN d) (:predicates (p ?x)) {ACT})", P),
+    "keywords in capitals": (True, "(DEFINE (DOMAIN d) (:REQUIREMENTS :STRIPS :TYPING :NEGATIVE-PRECONDITIONS) "
+        "(:TYPES t - OBJECT) (:PREDICATES (p ?x - t)) (:ACTION a :PARAMETERS (?x - t) :PRECONDITION (AND (p ?x)) "
+        ":EFFECT (AND (NOT (p ?x)))))", "(DEFINE (PROBLEM q) (:DOMAIN d) (:OBJECTS o - t) (:INIT (p o)) "
+        "(:GOAL (AND (NOT (p o)))))"),
     # left to tarski (its model, or its error)
-    "capitalised keyword": (False, f"(define (DOMAIN d) (:predicates (p ?x)) {ACT})", P),
+    "keywords in capitals, either": (False, "(define (domain d) (:types a b) (:predicates (p ?x - (EITHER a b))) "
+        "(:action m :parameters (?x - a) :precondition (p ?x) :effect (not (p ?x))))",
+        "(define (problem q) (:domain d) (:objects o - a) (:init (p o)) (:goal (not (p o))))"),
     "no parameters": (False, "(define (domain d) (:predicates (p)) (:action a :precondition (p) :effect (not (p))))",
         "(define (problem q) (:domain d) (:init (p)) (:goal (not (p))))"),
     "no precondition": (False, "(define (domain d) (:predicates (p ?x)) (:action a :parameters (?x) :effect (p ?x)))", P),

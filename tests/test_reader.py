@@ -94,3 +94,30 @@ def test_readme_documents_every_exit_code():
     readme = (ROOT / "README.md").read_text()
     for code in errors.EXIT_CODES:
         assert f"\n| {code} |" in readme, f"exit code {code} missing from README"
+
+
+def _keywords_in_capitals(text: str) -> str:
+    import re
+
+    text = re.sub(r"\((define|domain|problem|and|not)\b", lambda m: "(" + m.group(1).upper(), text)
+    return re.sub(r"(?<![;\w]):[a-z-]+", lambda m: m.group(0).upper(), text)
+
+
+@pytest.mark.parametrize("path", ["fast", "tarski"])
+def test_keywords_read_in_any_case(tmp_path, monkeypatch, path):
+    """DOMAIN, :REQUIREMENTS, :PARAMETERS, AND ... read as in lower case, on both reading paths."""
+    from guided_lfd.pddl import fast_reader
+
+    domain, problem = kitchen(1)
+    expected = parse_task(domain, problem)
+    (tmp_path / "d.pddl").write_text(_keywords_in_capitals(open(domain).read()))
+    (tmp_path / "p.pddl").write_text(_keywords_in_capitals(open(problem).read()))
+    assert ":REQUIREMENTS :STRIPS" in (tmp_path / "d.pddl").read_text()
+    if path == "tarski":
+        monkeypatch.setattr(fast_reader, "read_domain", lambda *a: None)
+    import dataclasses
+
+    for got, want in zip(parse_task(tmp_path / "d.pddl", tmp_path / "p.pddl"), expected):
+        for field in dataclasses.fields(want):
+            if field.name not in ("path", "source", "spellings"):  # where it was read, and how it was spelt
+                assert getattr(got, field.name) == getattr(want, field.name), field.name

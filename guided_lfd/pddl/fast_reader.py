@@ -31,16 +31,13 @@ from guided_lfd.pddl.source import SExpr, SourceMap, Token
 #: A name as tarski's grammar reads it (NAME: a letter, then letters, digits, '-', '_').
 _NAME = re.compile(r"[a-zA-Z][a-zA-Z0-9_-]*\Z")
 #: Words tarski's lexer reads as keywords: never names on the fast path.
-_RESERVED = {
+RESERVED_WORDS = {
     "define", "domain", "problem", "and", "not", "or", "imply", "exists", "forall", "when", "either", "object",
     "number", "int", "float", "assign", "increase", "decrease", "scale-up", "scale-down", "max", "min", "sin",
     "cos", "sqrt", "tan", "acos", "asin", "atan", "exp", "abs", "preference", "minimize", "maximize",
     "is-violated", "at-end", "always", "sometime", "within", "at-most-once", "sometime-after", "sometime-before",
     "always-within", "hold-during", "hold-after",
 }
-#: Keywords tarski's lexer reads in any case (its K_* tokens); other keywords only in lower case.
-_ANY_CASE = {"and", "not", "or", "imply", "exists", "forall", "when", ":init", ":precondition", ":effect", "define",
-             ":action", "increase", "decrease", "scale-up", "scale-down"}
 _DOMAIN_SECTIONS = (":requirements", ":types", ":constants", ":predicates")
 _PROBLEM_SECTIONS = (":requirements", ":objects")
 
@@ -80,8 +77,6 @@ def _nested(node: SExpr) -> list[Any]:
             low = text.lower()
             if not text.isascii() or "?" in text[1:]:
                 raise _NotPlain(text)
-            if low != text and low not in _ANY_CASE and (low in _RESERVED or low.startswith(":")):
-                raise _NotPlain(text)  # tarski reads some keywords in any case, some only in lower case
             out.append(low)
         else:
             out.append(_nested(item))
@@ -90,7 +85,7 @@ def _nested(node: SExpr) -> list[Any]:
 
 def _name(word: Any) -> str:
     """A declared name tarski reads as a name."""
-    if not isinstance(word, str) or not _NAME.match(word) or word in _RESERVED:
+    if not isinstance(word, str) or not _NAME.match(word) or word in RESERVED_WORDS:
         raise _NotPlain(str(word))
     return word
 

@@ -149,11 +149,33 @@ def without_comments(text: str) -> str:
     return _LINE_COMMENT.sub("", text)
 
 
+#: A token outside comments (comments are matched first and kept).
+_TOKEN_OR_COMMENT = re.compile(r";[^\r\n]*|[^\s();]+")
+
+
+def keywords_lowered(text: str) -> str:
+    """``text`` with every PDDL keyword in lower case, nothing else changed, no token moved.
+
+    PDDL is case-insensitive and Fast Downward reads ``DOMAIN`` or
+    ``:REQUIREMENTS``; tarski's grammar has some keywords in lower case only.
+    Keywords (``:``-words and the words tarski lexes as keywords) are never
+    names, so lowering them changes no name and its spelling.
+    """
+    def lower(match: re.Match) -> str:
+        word = match.group(0)
+        if word.startswith(";") or word.islower():
+            return word
+        low = word.lower()
+        return low if low.startswith(":") or low in fast_reader.RESERVED_WORDS else word
+
+    return _TOKEN_OR_COMMENT.sub(lower, text)
+
+
 def _tarski_parse(reader, kind: str, src: SourceMap) -> None:
     """Run tarski on the text of ``src`` and translate its errors."""
     from tarski import errors as terr
 
-    text = src.text_with_types_parents_first()
+    text = keywords_lowered(src.text_with_types_parents_first())
     if _FINAL_COMMENT.search(text):
         # A line comment may end the file (PDDL comments run to the end of the
         # line); tarski's lexer wants a line break after it.  Adding one moves no token.
