@@ -121,3 +121,23 @@ def test_keywords_read_in_any_case(tmp_path, monkeypatch, path):
         for field in dataclasses.fields(want):
             if field.name not in ("path", "source", "spellings"):  # where it was read, and how it was spelt
                 assert getattr(got, field.name) == getattr(want, field.name), field.name
+
+
+def test_an_action_without_precondition_reads(tmp_path):
+    """:precondition is optional in PDDL: the action has an empty one."""
+    domain = tmp_path / "d.pddl"
+    domain.write_text("(define (domain d) (:predicates (p ?x))\n  (:action a :parameters (?x) :effect (p ?x)))\n")
+    parsed = parse_domain(domain)
+    assert list(parsed.actions[0].precondition) == []
+    assert [str(a) for a in parsed.actions[0].add] == ["(p ?x)"]
+
+
+def test_an_error_after_an_action_without_precondition_is_located_as_written(tmp_path):
+    """tarski is given ':precondition (and)'; the columns it reports are mapped back to the file."""
+    line = ("(define (domain d) (:predicates (p ?x)) (:action a :parameters (?x) :effect (p ?x)) "
+            "(:action b :parameters (?x) :effect (p ?x) (p ?x)))")
+    (tmp_path / "d.pddl").write_text(line + "\n")
+    with pytest.raises(errors.PddlSyntaxError) as caught:
+        parse_domain(tmp_path / "d.pddl")
+    assert caught.value.location.line == 1
+    assert caught.value.location.col == line.rindex("(p ?x)") + 1

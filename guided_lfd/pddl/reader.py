@@ -34,7 +34,7 @@ from guided_lfd.pddl.model import (
     Problem,
 )
 from guided_lfd.pddl import fast_reader
-from guided_lfd.pddl.source import SourceMap, Token, read_text
+from guided_lfd.pddl.source import SExpr, SourceMap, Token, read_text
 
 # Keywords of PDDL features beyond STRIPS, with the requirement they belong to.
 _UNSUPPORTED_KEYWORDS = {
@@ -171,11 +171,56 @@ def keywords_lowered(text: str) -> str:
     return _TOKEN_OR_COMMENT.sub(lower, text)
 
 
+#: What tarski is given for an action written without ``:precondition``.
+_EMPTY_PRECONDITION = ":precondition (and) "
+
+
+def with_empty_preconditions(src: SourceMap, text: str) -> tuple[str, list[tuple[int, int]]]:
+    """``text`` with ``:precondition (and)`` before the ``:effect`` of each action that has none.
+
+    The precondition is optional in PDDL (and in Fast Downward); tarski's
+    grammar requires it.  Returns the text and the (line, column) of each
+    insertion, so positions tarski reports can be mapped back
+    (:func:`_as_in_source`).
+    """
+    inserts: list[tuple[int, int]] = []
+    for act in src.define().items:
+        if not isinstance(act, SExpr) or act.head() != ":action":
+            continue
+        words = [t for t in act.items if isinstance(t, Token)]
+        if any(t.lower == ":precondition" for t in words):
+            continue
+        effect = next((t for t in words if t.lower == ":effect"), None)
+        if effect is not None:
+            inserts.append((effect.line, effect.col))
+    if not inserts:
+        return text, []
+    starts = [0] + [m.end() for m in re.finditer("\n", text)]
+    pieces, last = [], 0
+    for line, col in inserts:
+        offset = starts[line - 1] + col - 1
+        pieces += [text[last:offset], _EMPTY_PRECONDITION]
+        last = offset
+    pieces.append(text[last:])
+    return "".join(pieces), inserts
+
+
+def _as_in_source(line: int, col: int, inserts: list[tuple[int, int]]) -> tuple[int, int]:
+    """A (line, 1-based column) of the text given to tarski, in the file as written."""
+    shift = sum(len(_EMPTY_PRECONDITION) for at_line, at_col in inserts if at_line == line and at_col <= col)
+    if shift and col - shift < min(c for l, c in inserts if l == line):
+        return line, min(c for l, c in inserts if l == line)  # inside an insertion: at the :effect it precedes
+    return line, col - shift
+
+
 def _tarski_parse(reader, kind: str, src: SourceMap) -> None:
     """Run tarski on the text of ``src`` and translate its errors."""
     from tarski import errors as terr
 
     text = keywords_lowered(src.text_with_types_parents_first())
+    inserts: list[tuple[int, int]] = []
+    if kind == "domain":
+        text, inserts = with_empty_preconditions(src, text)
     if _FINAL_COMMENT.search(text):
         # A line comment may end the file (PDDL comments run to the end of the
         # line); tarski's lexer wants a line break after it.  Adding one moves no token.
@@ -242,7 +287,8 @@ def _tarski_parse(reader, kind: str, src: SourceMap) -> None:
         text = str(exc).split("\n")[0] if str(exc) else type(exc).__name__
         match = _TARSKI_POS.search(text)
         if match:
-            line, col, rest = int(match.group(1)), int(match.group(2)) + 1, match.group(3)
+            line, col = _as_in_source(int(match.group(1)), int(match.group(2)) + 1, inserts)
+            rest = match.group(3)
             raise PddlSyntaxError(f"{rest} (expected a well-formed PDDL {kind})", src.location(line, col)) from None
         raise PddlSyntaxError(f"cannot parse {kind}: {text}", src.location(src.define().line, src.define().col)) from None
 
