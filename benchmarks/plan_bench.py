@@ -98,6 +98,12 @@ def run_task(domain: Path, problem: Path, limit: float, guided_first: bool) -> d
     return row
 
 
+def _read(row: dict) -> bool:
+    """Whether guided-lfd read the task (exits 30-39 are input errors: missing, syntax, unsupported ...)."""
+    status = row["guided_status"]
+    return not (status.startswith("exit 3") and len(status) == len("exit 30"))
+
+
 def summary(rows: list[dict], limit: float, command: str) -> str:
     """Markdown: median whole-run ratio on the tasks both solve, length agreement, per domain."""
     both = [r for r in rows if r["ratio"] != ""]
@@ -117,11 +123,19 @@ def summary(rows: list[dict], limit: float, command: str) -> str:
         lines.append(f"| {len(rows)} | {len(both)} | {len(g_only)} | {len(p_only)} | {statistics.median(ratios):.2f} "
                      f"| {geo:.2f} | {statistics.median(float(r['guided_wall_s']) for r in both):.2f} s "
                      f"| {statistics.median(float(r['pyperplan_wall_s']) for r in both):.2f} s | {len(differ)} |")
-    lines += ["", "| domain | both solve | median ratio | only guided-lfd | only pyperplan |", "|---|---|---|---|---|"]
+    lines += ["", "| domain | tasks | read | both solve | same length | median ratio | only guided-lfd "
+              "| only pyperplan |", "|---|---|---|---|---|---|---|---|"]
     for dom in sorted({r["domain"] for r in rows}):
-        sub = [float(r["ratio"]) for r in both if r["domain"] == dom]
-        lines.append(f"| {dom} | {len(sub)} | {statistics.median(sub):.2f} |" if sub else f"| {dom} | 0 | - |")
-        lines[-1] += (f" {sum(r['domain'] == dom for r in g_only)} | {sum(r['domain'] == dom for r in p_only)} |")
+        mine = [r for r in rows if r["domain"] == dom]
+        sub = [r for r in both if r["domain"] == dom]
+        ratio = f"{statistics.median(float(r['ratio']) for r in sub):.2f}" if sub else "-"
+        same = sum(str(r["guided_length"]) == str(r["pyperplan_length"]) for r in sub)
+        lines.append(f"| {dom} | {len(mine)} | {sum(_read(r) for r in mine)} | {len(sub)} | {same} | {ratio} "
+                     f"| {sum(r in g_only for r in mine)} | {sum(r in p_only for r in mine)} |")
+    refused = [r for r in rows if not _read(r)]
+    if refused:
+        lines += ["", f"Refused by the reader ({len(refused)}; the exit code says why, see the README's table):", ""]
+        lines += [f"- {r['domain']} {r['task']}: {r['guided_status']}" for r in refused]
     if differ:
         lines += ["", "Different plan lengths (a bug in one of them):", ""]
         lines += [f"- {r['domain']} {r['task']}: {r['guided_length']} vs {r['pyperplan_length']}" for r in differ]
@@ -132,16 +146,22 @@ def summary(rows: list[dict], limit: float, command: str) -> str:
 
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--tasks", default=",".join(f"task{i:02d}" for i in range(1, 11)))
+    parser.add_argument("--tasks", default=",".join(f"task{i:02d}" for i in range(1, 11)),
+                        help="comma-separated task names, or 'all': every task of the collection")
     parser.add_argument("--domains", default="", help="comma-separated domain names (default: all shipped)")
     parser.add_argument("--time-limit", type=float, default=30.0)
     parser.add_argument("--jobs", type=int, default=2)
     parser.add_argument("--out", type=Path, default=OUT)
+    parser.add_argument("--ipc", type=Path, default=IPC, help="the collection: one folder per domain")
     args = parser.parse_args(argv)
     wanted = set(args.domains.split(",")) if args.domains else None
-    work = [(d / "domain.pddl", d / f"{t}.pddl") for d in sorted(IPC.iterdir())
-            if (d / "domain.pddl").is_file() and (wanted is None or d.name in wanted)
-            for t in args.tasks.split(",") if (d / f"{t}.pddl").is_file()]
+    domains = [d for d in sorted(args.ipc.iterdir())
+               if (d / "domain.pddl").is_file() and (wanted is None or d.name in wanted)]
+    if args.tasks == "all":
+        work = [(d / "domain.pddl", p) for d in domains for p in sorted(d.glob("task*.pddl"))]
+    else:
+        work = [(d / "domain.pddl", d / f"{t}.pddl") for d in domains
+                for t in args.tasks.split(",") if (d / f"{t}.pddl").is_file()]
     rows: list[dict] = []
     with ThreadPoolExecutor(max_workers=max(1, args.jobs)) as pool:
         futures = [pool.submit(run_task, dom, prob, args.time_limit, k % 2 == 0) for k, (dom, prob) in enumerate(work)]
@@ -157,7 +177,8 @@ def main(argv: list[str] | None = None) -> int:
     writer.writeheader()
     writer.writerows(rows)
     (args.out / "plan.csv").write_text(buf.getvalue(), encoding="utf-8")
-    text = summary(rows, args.time_limit, "python benchmarks/plan_bench.py --jobs 2")
+    command = "python benchmarks/plan_bench.py " + " ".join(argv if argv is not None else sys.argv[1:])
+    text = summary(rows, args.time_limit, command.strip())
     (args.out / "summary.md").write_text(text, encoding="utf-8")
     print(text)
     return 0

@@ -313,7 +313,10 @@ def _visible_tokens(text: str) -> list[tuple]:
 
 
 def _corpus() -> list:
-    return sorted(p for folder in ("data", "tests/data") for p in (ROOT / folder).rglob("*.pddl"))
+    from test_fast_reader import _large_ipc_task
+
+    return sorted(p for folder in ("data", "tests/data") for p in (ROOT / folder).rglob("*.pddl")
+                  if not _large_ipc_task(p))
 
 
 def test_without_comments_gives_tarski_the_same_tokens():
