@@ -180,6 +180,9 @@ def check_files(inputs: list[str | None], outputs: dict[str, str | None]) -> Non
     named = [p for p in inputs if p is not None]
     check_inputs(*named)
     files = [p for p in named if p != "-"]
+    to_stdout = [option for option, path in outputs.items() if path == "-"]
+    if len(to_stdout) > 1:
+        raise OptionError(f"{' and '.join(to_stdout)} both name '-' (standard output); expected one of them a file")
     given = [(option, path) for option, path in outputs.items() if path is not None and path != "-"]
     for k, (option, path) in enumerate(given):
         for source in files:

@@ -574,3 +574,8 @@ def test_json_and_csv_together_are_refused(runner, app, tmp_path):
     base = _workspace(runner, app, tmp_path)
     result = runner.invoke(app, ["segment", str(base / "t.csv"), "--json", "--csv"])
     assert result.exit_code == 37 and "choose one output format" in one_line(result)
+
+
+def test_two_outputs_on_standard_output_are_refused(runner, app):
+    result = runner.invoke(app, ["excuse", DOMAIN, PROBLEM, "-o", "-", "--excuse-problem", "-"])
+    assert result.exit_code == 37 and "both name '-'" in one_line(result)

@@ -141,3 +141,29 @@ def test_an_error_after_an_action_without_precondition_is_located_as_written(tmp
         parse_domain(tmp_path / "d.pddl")
     assert caught.value.location.line == 1
     assert caught.value.location.col == line.rindex("(p ?x)") + 1
+
+
+def test_an_action_without_precondition_reads_in_a_typed_one_line_domain(tmp_path):
+    """The insertion goes before :effect as written, whatever tarski is given for :types."""
+    (tmp_path / "d.pddl").write_text("(define (domain d) (:requirements :typing) (:types t) (:predicates (p ?x - t)) "
+                                     "(:action a :parameters (?x - t) :effect (p ?x)))\n")
+    parsed = parse_domain(tmp_path / "d.pddl")
+    assert list(parsed.actions[0].precondition) == [] and parsed.actions[0].params == (("?x", "t"),)
+
+
+def test_columns_are_mapped_back_past_two_insertions_on_one_line(tmp_path):
+    line = ("(define (domain d) (:predicates (p ?x)) (:action a :parameters (?x) :effect (p ?x)) "
+            "(:action b :parameters (?x) :effect (p ?x)) (:action c :parameters (?x) :effect (p ?x) (p ?x)))")
+    (tmp_path / "d.pddl").write_text(line + "\n")
+    with pytest.raises(errors.PddlSyntaxError) as caught:
+        parse_domain(tmp_path / "d.pddl")
+    assert caught.value.location.col == line.rindex("(p ?x)") + 1
+
+
+def test_a_name_spelt_like_a_keyword_keeps_reading(tmp_path):
+    """Only keywords where a keyword goes are lowered: an object 'Max' stays a name."""
+    (tmp_path / "d.pddl").write_text("(define (domain d) (:requirements :typing) (:types t) (:predicates (p ?x - t)) "
+                                     "(:action a :parameters (?x - t) :precondition (not (p ?x)) :effect (p ?x)))\n")
+    (tmp_path / "p.pddl").write_text("(define (problem q) (:domain d) (:objects Max Anna - t) (:init) (:goal (p Max)))\n")
+    _, problem = parse_task(tmp_path / "d.pddl", tmp_path / "p.pddl")
+    assert set(problem.objects) == {"max", "anna"} and problem.spellings["max"] == "Max"

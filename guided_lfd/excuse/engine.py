@@ -128,16 +128,23 @@ ROBOT_PLAN_MAX_S = 10.0
 ROBOT_PLAN_MIN_S = 1.0
 
 
+def robot_plan_deadline(started: float) -> float:
+    """When the search for the robot's optimal plans must end: as long again as the run took (1-10 s)."""
+    now = time.monotonic()
+    return now + min(ROBOT_PLAN_MAX_S, max(ROBOT_PLAN_MIN_S, now - started))
+
+
 def _robot_plan(task: GroundTask, space: ChangeSpace, oracle: ReachabilityOracle, state: int,
                 fallback: list[GroundAction], optimal: bool, deadline: float | None,
-                started: float) -> tuple[list[GroundAction], bool]:
+                plans_until: float) -> tuple[list[GroundAction], bool]:
     """An optimal robot plan from ``state`` if it can be had in time, else ``fallback``.
 
     The search's witness is shortened first; when its length meets LM-cut's
     lower bound it is optimal without a planner run (household tasks, most
-    small ones).  Otherwise A* + LM-cut plans from scratch, for at most as
-    long as the run took until now (within 1-10 s): the excuse is what the
-    user waits for, and an optimal plan may not double the wait.
+    small ones).  Otherwise A* + LM-cut plans from scratch until
+    ``plans_until`` (:func:`robot_plan_deadline`, one for all the run's
+    excuses): the excuse is what the user waits for, and optimal plans may
+    not double the wait.
     """
     task_goal = (task.goal_pos, task.goal_neg)
     fallback = shorten_plan(fallback, state, *task_goal)
@@ -152,7 +159,7 @@ def _robot_plan(task: GroundTask, space: ChangeSpace, oracle: ReachabilityOracle
     from guided_lfd.planning import find_plan
 
     now = time.monotonic()
-    budget = min(ROBOT_PLAN_MAX_S, max(ROBOT_PLAN_MIN_S, now - started))
+    budget = plans_until - now
     if deadline is not None:
         budget = min(budget, deadline - now)
     if budget <= 0:
@@ -290,7 +297,7 @@ class _Run:
         if plan0 is not None:
             self._enter("robot plan")
             plan, _ = _robot_plan(task, space, oracle, task.init, plan0, options.optimal_plans, self.deadline,
-                                  self.start)
+                                  robot_plan_deadline(self.start))
             _verify(self.domain, self.problem, [], plan, space)
             return self.report("already-solvable", [a.name for a in plan], candidates=0, planner_calls=1)
 
@@ -303,10 +310,11 @@ class _Run:
         self.stats.update(candidates=outcome.candidates, planner_calls=outcome.planner_calls + 1,
                           nodes_expanded=outcome.expanded, **outcome.extra)
         self.phase = "robot plan"
+        plans_until = robot_plan_deadline(self.start)
         for changes in outcome.solutions:
             state = task.init ^ changes
             plan, optimal = _robot_plan(task, space, oracle, state, outcome.plans[changes], options.optimal_plans,
-                                        self.deadline, self.start)
+                                        self.deadline, plans_until)
             change_list = _changes_of(task, changes)
             _verify(self.domain, self.problem, change_list, plan, space)
             self.excuses.append(Excuse(change_list, space.cost(changes),

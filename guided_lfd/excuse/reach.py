@@ -229,6 +229,8 @@ class ReachabilityOracle:
         # deadline that stops this one does not wait for them to be freed.
         self._scratch = members
         index, result = self._portfolio(members)
+        for member in members:
+            member.close()  # decided: the others stop (their statistics are counted)
         if index == 2:
             return self._proved_dead(start)
         if index == 1:
@@ -298,11 +300,17 @@ class ReachabilityOracle:
         relaxation proves dead are pruned and remembered.  Complete: when both
         queues run dry, every state reached is dead.
         """
-        ff = self.relaxed_task()
-        goal_pos, goal_neg, mask = self.goal_pos, self.goal_neg, self.mask
-        alive, dead, actions = self.alive, self.dead, self.actions
         parents: dict[int, tuple[int, GroundAction] | None] = {}
         queues: list[list[tuple[int, int, int, tuple[int, GroundAction] | None]]] = [[(0, 0, start, None)], []]
+        try:
+            return (yield from self._ff_steps(self.relaxed_task(), queues, parents))
+        finally:
+            self.stats.expanded += len(parents)  # the states it expanded (or met alive)
+
+    def _ff_steps(self, ff: RelaxedTask, queues: list, parents: dict) -> Generator[None, None, tuple[str, Any]]:
+        """The loop of :meth:`_ff_search`, filling ``parents`` as it closes states."""
+        goal_pos, goal_neg, mask = self.goal_pos, self.goal_neg, self.mask
+        alive, dead, actions = self.alive, self.dead, self.actions
         counter = turn = 0
         pop, push = heapq.heappop, heapq.heappush
         while queues[0] or queues[1]:

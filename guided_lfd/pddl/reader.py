@@ -149,8 +149,10 @@ def without_comments(text: str) -> str:
     return _LINE_COMMENT.sub("", text)
 
 
-#: A token outside comments (comments are matched first and kept).
-_TOKEN_OR_COMMENT = re.compile(r";[^\r\n]*|[^\s();]+")
+#: A comment, a parenthesis, or a word (comments are matched first and kept).
+_TOKEN_OR_COMMENT = re.compile(r";[^\r\n]*|[()]|[^\s();]+")
+#: Type words tarski reads as keywords after '-' in a typed list.
+_KEYWORD_TYPES = {"object", "number"}
 
 
 def keywords_lowered(text: str) -> str:
@@ -158,15 +160,26 @@ def keywords_lowered(text: str) -> str:
 
     PDDL is case-insensitive and Fast Downward reads ``DOMAIN`` or
     ``:REQUIREMENTS``; tarski's grammar has some keywords in lower case only.
-    Keywords (``:``-words and the words tarski lexes as keywords) are never
-    names, so lowering them changes no name and its spelling.
+    Lowered are ``:``-words (never names), reserved words where a keyword
+    goes (first in a list: ``(AND``, ``(DOMAIN``) and ``OBJECT`` after
+    ``-``; a name such as ``Max`` elsewhere keeps its spelling.
     """
+    previous = ""
+
     def lower(match: re.Match) -> str:
+        nonlocal previous
         word = match.group(0)
-        if word.startswith(";") or word.islower():
+        if word.startswith(";"):
             return word
+        before, previous = previous, word
         low = word.lower()
-        return low if low.startswith(":") or low in fast_reader.RESERVED_WORDS else word
+        if low == word or len(low) != len(word):
+            return word  # already lower case, or a word whose lower case is not the same length
+        if low.startswith(":"):
+            return low
+        if before == "(" and low in fast_reader.RESERVED_WORDS or before == "-" and low in _KEYWORD_TYPES:
+            return low
+        return word
 
     return _TOKEN_OR_COMMENT.sub(lower, text)
 
@@ -175,18 +188,24 @@ def keywords_lowered(text: str) -> str:
 _EMPTY_PRECONDITION = ":precondition (and) "
 
 
-def with_empty_preconditions(src: SourceMap, text: str) -> tuple[str, list[tuple[int, int]]]:
-    """``text`` with ``:precondition (and)`` before the ``:effect`` of each action that has none.
+def with_empty_preconditions(src: SourceMap) -> tuple[str, list[tuple[int, int]]]:
+    """The text of ``src`` with ``:precondition (and)`` before the ``:effect`` of each action that has none.
 
     The precondition is optional in PDDL (and in Fast Downward); tarski's
     grammar requires it.  Returns the text and the (line, column) of each
     insertion, so positions tarski reports can be mapped back
-    (:func:`_as_in_source`).
+    (:func:`_as_in_source`).  Only actions after the ``:types`` section get
+    one, so that section's offsets stay valid for
+    :meth:`~guided_lfd.pddl.source.SourceMap.text_with_types_parents_first`.
     """
+    text = src.text
+    types = src.section(":types")
     inserts: list[tuple[int, int]] = []
     for act in src.define().items:
         if not isinstance(act, SExpr) or act.head() != ":action":
             continue
+        if types is not None and act.start < types.end:
+            continue  # out of order: tarski's error stands
         words = [t for t in act.items if isinstance(t, Token)]
         if any(t.lower == ":precondition" for t in words):
             continue
@@ -207,9 +226,17 @@ def with_empty_preconditions(src: SourceMap, text: str) -> tuple[str, list[tuple
 
 def _as_in_source(line: int, col: int, inserts: list[tuple[int, int]]) -> tuple[int, int]:
     """A (line, 1-based column) of the text given to tarski, in the file as written."""
-    shift = sum(len(_EMPTY_PRECONDITION) for at_line, at_col in inserts if at_line == line and at_col <= col)
-    if shift and col - shift < min(c for l, c in inserts if l == line):
-        return line, min(c for l, c in inserts if l == line)  # inside an insertion: at the :effect it precedes
+    width = len(_EMPTY_PRECONDITION)
+    shift = 0
+    for at_line, at_col in inserts:  # in order of position
+        if at_line != line:
+            continue
+        start = at_col + shift  # where this insertion begins in the text tarski read
+        if col < start:
+            break
+        if col < start + width:
+            return line, at_col  # inside the insertion: at the :effect it precedes
+        shift += width
     return line, col - shift
 
 
@@ -217,10 +244,8 @@ def _tarski_parse(reader, kind: str, src: SourceMap) -> None:
     """Run tarski on the text of ``src`` and translate its errors."""
     from tarski import errors as terr
 
-    text = keywords_lowered(src.text_with_types_parents_first())
-    inserts: list[tuple[int, int]] = []
-    if kind == "domain":
-        text, inserts = with_empty_preconditions(src, text)
+    text, inserts = with_empty_preconditions(src) if kind == "domain" else (src.text, [])
+    text = keywords_lowered(src.text_with_types_parents_first(text))
     if _FINAL_COMMENT.search(text):
         # A line comment may end the file (PDDL comments run to the end of the
         # line); tarski's lexer wants a line break after it.  Adding one moves no token.

@@ -262,8 +262,8 @@ class SourceMap:
                 )
         return [(n, parent.get(n)) for n in ordered]
 
-    def text_with_types_parents_first(self) -> str:
-        """The text with the ``:types`` section reordered so parents come first.
+    def text_with_types_parents_first(self, text: str | None = None) -> str:
+        """The text (or ``text``, the same up to the section's end) with ``:types`` reordered so parents come first.
 
         PDDL allows ``(:types truck - vehicle vehicle - object)``; tarski needs
         ``vehicle`` declared before it is used as a parent.  A type declared
@@ -271,15 +271,16 @@ class SourceMap:
         take it in).  Line breaks are kept, so positions outside the section
         do not move.
         """
+        text = self.text if text is None else text
         ordered = self.types_parents_first()
         if ordered is None:
-            return self.text
+            return text
         section = self.section(":types")
         assert section is not None
         decl = " ".join(n if up is None and n.lower() == "object" else f"{n} - {up or 'object'}" for n, up in ordered)
-        old = self.text[section.start : section.end + 1]
+        old = text[section.start : section.end + 1]
         new = f"(:types {decl}" + "\n" * old.count("\n") + ")"
-        return self.text[: section.start] + new + self.text[section.end + 1 :]
+        return text[: section.start] + new + text[section.end + 1 :]
 
     def _sections(self, sections: tuple[str, ...]) -> list[SExpr]:
         out = []
