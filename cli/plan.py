@@ -46,6 +46,7 @@ def plan(
         if json_out:
             emit(output, json_document("plan", {
                 "domain": domain, "problem": problem, "status": "unsolvable", "plan": None,
+                "cost": None, "optimal": None, "validated": None,
                 "search": search, "time_s": round(result.time_s, 4),
             }), reason)
         else:

@@ -49,6 +49,9 @@ def test_plan_cli_json_and_unsolvable_exit_code(runner, app):
     doc = json.loads(result.stdout)
     assert doc["format"] == "guided-lfd/plan" and doc["format_version"] == 1
     assert doc["status"] == "unsolvable" and doc["plan"] is None
+    solved = json.loads(runner.invoke(app, ["plan", *kitchen(1, "human"), "--json"]).stdout)
+    assert list(doc) == list(solved)  # the documented keys, whatever the status
+    assert doc["cost"] is None and doc["optimal"] is None and doc["validated"] is None
 
 
 def test_validate_names_failing_step_and_precondition(runner, app, tmp_path):
