@@ -167,3 +167,18 @@ def test_a_name_spelt_like_a_keyword_keeps_reading(tmp_path):
     (tmp_path / "p.pddl").write_text("(define (problem q) (:domain d) (:objects Max Anna - t) (:init) (:goal (p Max)))\n")
     _, problem = parse_task(tmp_path / "d.pddl", tmp_path / "p.pddl")
     assert set(problem.objects) == {"max", "anna"} and problem.spellings["max"] == "Max"
+
+
+def test_a_large_file_with_an_unclosed_list_is_read_once(tmp_path, monkeypatch):
+    """Beyond SECOND_OPINION_MAX_CHARS the open list is reported from the one pass (no tarski re-parse)."""
+    from guided_lfd.pddl import reader
+
+    def second_parse(*args):
+        raise AssertionError("parsed twice")
+
+    monkeypatch.setattr(reader, "_tarski_syntax_error", second_parse)
+    lines = "".join(f"  (p{k} ?x)\n" for k in range(reader.SECOND_OPINION_MAX_CHARS // 10))
+    (tmp_path / "d.pddl").write_text(f"(define (domain d)\n (:predicates\n{lines}")
+    with pytest.raises(errors.PddlSyntaxError) as caught:
+        parse_domain(tmp_path / "d.pddl")
+    assert "never closed" in caught.value.message and caught.value.location.line in (1, 2)
