@@ -114,6 +114,23 @@ TimeLimitOption = Annotated[
     float | None, typer.Option("--time-limit", help="Give up after this many seconds (exit 20).")
 ]
 
+MemoryLimitOption = Annotated[
+    int | None, typer.Option("--memory-limit", metavar="MIB",
+                             help="Address-space cap in MiB; a run that needs more ends with exit 22.")
+]
+
+
+def apply_memory_limit(megabytes: int | None) -> None:
+    """Cap this process's memory (``--memory-limit``): running out is then the memout exit, not the OOM killer."""
+    if megabytes is None:
+        return
+    if megabytes < 1:
+        raise OptionError(f"--memory-limit {megabytes}: expected a number of MiB >= 1")
+    from guided_lfd.memory import cap_own_memory
+
+    cap_own_memory(megabytes)
+
+
 def started_at() -> float:
     """When this run's clock started: the console script's start (see :mod:`cli`), else now."""
     import time

@@ -7,7 +7,8 @@ from typing import Annotated, Any
 import typer
 
 from cli.common import (
-    JsonOption, OutputOption, QuietOption, TimeLimitOption, check_files, output_format, check_time_limit, command, emit,
+    JsonOption, MemoryLimitOption, OutputOption, QuietOption, TimeLimitOption, apply_memory_limit, check_files,
+    check_time_limit, command, emit, output_format,
     plain_stderr, started_at, ui,
 )
 from guided_lfd import errors
@@ -67,6 +68,7 @@ def excuse(
     output: OutputOption = "-",
     json_out: JsonOption = False,
     time_limit: TimeLimitOption = None,
+    memory_limit: MemoryLimitOption = None,
     quiet: QuietOption = False,
 ) -> None:
     """Find a minimal excuse: the smallest change to the initial state after which the robot's
@@ -76,6 +78,7 @@ def excuse(
     if max_size is not None and max_size < 0:
         raise errors.OptionError(f"--max-size {max_size}: expected a number of changes >= 0")
     time_limit = check_time_limit(time_limit)
+    apply_memory_limit(memory_limit)
     check_files([domain, problem, invariants_from, fixed_from], {"--output": output, "--excuse-problem": excuse_problem})
     # The time limit bounds the whole run: reading the files counts too.
     started = started_at()

@@ -7,7 +7,8 @@ from typing import Annotated
 import typer
 
 from cli.common import (
-    JsonOption, OutputOption, QuietOption, TimeLimitOption, check_files, output_format, check_time_limit, command, emit,
+    JsonOption, MemoryLimitOption, OutputOption, QuietOption, TimeLimitOption, apply_memory_limit, check_files,
+    check_time_limit, command, emit, output_format,
     started_at, ui,
 )
 from guided_lfd.deadline import deadline_after, remaining, watchdog
@@ -28,12 +29,14 @@ def plan(
     output: OutputOption = "-",
     json_out: JsonOption = False,
     time_limit: TimeLimitOption = None,
+    memory_limit: MemoryLimitOption = None,
     quiet: QuietOption = False,
 ) -> None:
     """Plan optimally (A* with LM-cut); print the plan in IPC format (exit 10 if unsolvable)."""
     if search not in SEARCHES:
         raise OptionError(f"--search {search}: unknown search (expected one of: {', '.join(SEARCHES)})")
     time_limit = check_time_limit(time_limit)
+    apply_memory_limit(memory_limit)
     check_files([domain, problem], {"--output": output})
     json_out = output_format(output, json_out) == "json"
     # The time limit bounds the whole run (reading and grounding too).

@@ -20,6 +20,8 @@ from dataclasses import asdict, dataclass, replace
 from pathlib import Path
 from typing import Any, Callable, Iterable
 
+from guided_lfd.memory import cap_memory
+
 SUITE_FIELDS = ["id", "domain", "task", "removed_action", "domain_file", "problem_file", "fixed_from"]
 RESULT_FIELDS = [
     "id", "domain", "task", "removed_action", "semantics", "strategy", "status", "size", "cost",
@@ -243,27 +245,6 @@ def _complete(row: dict[str, Any]) -> dict[str, Any]:
     for key in RESULT_FIELDS:
         row.setdefault(key, "")
     return {k: row[k] for k in RESULT_FIELDS}
-
-
-def cap_memory(pid: int, megabytes: int) -> None:
-    """Cap process ``pid``'s address space, so that running out raises MemoryError there.
-
-    Without a cap, a run whose frontier outgrows the machine (the baseline's
-    breadth-first search on sokoban task04 filled a 24 GiB machine) is killed by the
-    kernel's OOM killer, and may take the run beside it down too.  Only the soft
-    limit is set, and never above a hard limit already in force (``ulimit -v``,
-    a cluster job): raising it would fail every run.
-    """
-    import resource
-
-    try:
-        _, hard = resource.prlimit(pid, resource.RLIMIT_AS)
-        limit = megabytes * 1024 * 1024
-        if hard != resource.RLIM_INFINITY:
-            limit = min(limit, hard)
-        resource.prlimit(pid, resource.RLIMIT_AS, (limit, hard))
-    except ProcessLookupError:
-        pass  # it has ended already
 
 
 class RowLog:

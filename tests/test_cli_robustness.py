@@ -579,3 +579,21 @@ def test_json_and_csv_together_are_refused(runner, app, tmp_path):
 def test_two_outputs_on_standard_output_are_refused(runner, app):
     result = runner.invoke(app, ["excuse", DOMAIN, PROBLEM, "-o", "-", "--excuse-problem", "-"])
     assert result.exit_code == 37 and "both name '-'" in one_line(result)
+
+
+def test_memory_limit_ends_a_run_with_the_memout_code():
+    """--memory-limit caps the process itself (a fresh one here): running out is exit 22, one line."""
+    import subprocess
+
+    from guided_lfd.benchmark import cli_command
+
+    proc = subprocess.run([*cli_command(), "excuse", DOMAIN, PROBLEM, "--memory-limit", "1"],
+                          capture_output=True, text=True, timeout=60)
+    assert proc.returncode == 22, proc.stderr
+    assert proc.stderr.strip() == "out of memory: the run needed more memory than the process may use"
+    assert proc.stdout == ""
+
+
+def test_memory_limit_must_be_positive(runner, app):
+    result = runner.invoke(app, ["plan", DOMAIN, PROBLEM, "--memory-limit", "0"])
+    assert result.exit_code == 37 and "--memory-limit 0" in one_line(result)
