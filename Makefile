@@ -35,7 +35,7 @@ test: setup
 	$(BIN)/python -m pytest -q -n $(JOBS)
 
 test-slow: setup
-	$(BIN)/python -m pytest -q -n $(JOBS) --slow
+	GUIDED_LFD_FUZZ_EXAMPLES=1000 $(BIN)/python -m pytest -q -n $(JOBS) --slow
 
 clean:
 	rm -rf $(VENV) build *.egg-info .pytest_cache .hypothesis

@@ -62,6 +62,13 @@ def plain_text(message: str, markup: bool) -> str | None:
     return message
 
 
+def one_line(message: str) -> str:
+    """``message`` with every character that is not printable (line breaks too) as its escape."""
+    if message.isprintable():
+        return message
+    return "".join(c if c.isprintable() else c.encode("unicode_escape").decode("ascii") for c in message)
+
+
 class Ui:
     """Where diagnostics go: stderr, silenced by ``--quiet`` (data never is).
 
@@ -98,7 +105,12 @@ class Ui:
             self.console.print(message)
 
     def error(self, message: str) -> None:
-        """A one-line error on stderr; shown even with ``--quiet``."""
+        """A one-line error on stderr; shown even with ``--quiet``.
+
+        Characters that are not printable (a line or record separator quoted
+        from a damaged input) are written as escapes, so the error stays one line.
+        """
+        message = one_line(message)
         if not self._print(message, markup=False):
             from rich.console import Console
 

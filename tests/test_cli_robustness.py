@@ -597,3 +597,16 @@ def test_memory_limit_ends_a_run_with_the_memout_code():
 def test_memory_limit_must_be_positive(runner, app):
     result = runner.invoke(app, ["plan", DOMAIN, PROBLEM, "--memory-limit", "0"])
     assert result.exit_code == 37 and "--memory-limit 0" in one_line(result)
+
+
+def test_an_error_quoting_a_control_character_stays_one_line(runner, app, tmp_path):
+    """Found by tests/test_fuzz.py: a record separator in a state file split the error in two lines."""
+    import shutil
+
+    demo = ROOT / "data" / "demos" / "kitchen-1" / "P1-excuse"
+    shutil.copy(f"{demo}.csv", tmp_path / "t.csv")
+    text = (demo.parent / "P1-excuse.state.csv").read_text().replace('"object(BlueDrawer', '"object\x1e0(BlueDrawer', 1)
+    (tmp_path / "t.state.csv").write_text(text)
+    result = runner.invoke(app, ["segment", str(tmp_path / "t.csv")])
+    assert result.exit_code == 36
+    assert "object\\x1e0(BlueDrawer" in one_line(result)
