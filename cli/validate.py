@@ -29,6 +29,7 @@ def validate(
     steps = parse_plan(plan_file, dom, prob)
     report = validate_plan(dom, prob.init, prob.goal, steps)
     failure = report.first_failure
+    reason = None if report.valid else _reason(report, steps, plan_file)
     if json_out:
         text = json_document("validation", {
             "domain": domain, "problem": problem, "plan": plan_file, "valid": report.valid,
@@ -44,8 +45,8 @@ def validate(
     elif report.valid:
         text = f"valid: {len(steps)} step(s), goal reached\n"
     else:
-        text = _reason(report, steps, plan_file) + "\n"
-    emit(output, text, None if report.valid else _reason(report, steps, plan_file), structured=json_out)
+        text = f"{reason}\n"
+    emit(output, text, reason, structured=json_out)
     if not report.valid:
         raise typer.Exit(EXIT_PLAN_INVALID)
 

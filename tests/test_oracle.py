@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import itertools
-from collections import deque
 from pathlib import Path
 
 import pytest
@@ -17,6 +16,7 @@ from guided_lfd.grounding import ground
 from guided_lfd.h2 import PairReachability
 from guided_lfd.pddl.reader import parse_task
 from test_excuse_engine import _parse_random, brute_force, small_tasks
+from test_optimal import _optimal_length
 
 DATA = Path(__file__).parent / "data" / "oracle"
 
@@ -28,18 +28,7 @@ def _oracle(domain, problem) -> ReachabilityOracle:
 
 def _bfs_reaches_goal(task, state: int) -> bool:
     """Plain breadth-first search over every ground action: the reference."""
-    seen, queue = {state}, deque([state])
-    while queue:
-        s = queue.popleft()
-        if task.satisfies_goal(s):
-            return True
-        for act in task.actions:
-            if act.applicable(s):
-                t = act.apply(s)
-                if t not in seen:
-                    seen.add(t)
-                    queue.append(t)
-    return False
+    return _optimal_length(task, state) is not None
 
 
 def _every_state(task):

@@ -300,47 +300,44 @@ class ReachabilityOracle:
         relaxation proves dead are pruned and remembered.  Complete: when both
         queues run dry, every state reached is dead.
         """
+        ff = self.relaxed_task()
         parents: dict[int, tuple[int, GroundAction] | None] = {}
         queues: list[list[tuple[int, int, int, tuple[int, GroundAction] | None]]] = [[(0, 0, start, None)], []]
-        try:
-            return (yield from self._ff_steps(self.relaxed_task(), queues, parents))
-        finally:
-            self.stats.expanded += len(parents)  # the states it expanded (or met alive)
-
-    def _ff_steps(self, ff: RelaxedTask, queues: list, parents: dict) -> Generator[None, None, tuple[str, Any]]:
-        """The loop of :meth:`_ff_search`, filling ``parents`` as it closes states."""
         goal_pos, goal_neg, mask = self.goal_pos, self.goal_neg, self.mask
         alive, dead, actions = self.alive, self.dead, self.actions
         counter = turn = 0
         pop, push = heapq.heappop, heapq.heappush
-        while queues[0] or queues[1]:
-            turn ^= 1
-            queue = queues[1] if (turn and queues[1]) or not queues[0] else queues[0]
-            _, _, s, parent = pop(queue)
-            if s in parents:
-                continue
-            parents[s] = parent
-            if s in alive or not (goal_pos & ~s or goal_neg & s):
-                return "plan", (_path(parents, s), s)
-            if s in dead:
-                continue
-            yield
-            relaxed = ff.relaxed_plan(s)
-            if relaxed is None:
-                dead.add(s)
-                continue
-            h = len(relaxed[0])
-            for act, t in self._successors(s):
-                if t not in parents and t not in dead:
-                    counter += 1
-                    push(queues[0], (h, counter, t, (s, act)))
-            for ai in ff.helpful(s, relaxed[1]):
-                act = actions[ai]
-                t = (s & ~act.delete) | (act.add & mask)
-                if t not in parents and t not in dead:
-                    counter += 1
-                    push(queues[1], (h, counter, t, (s, act)))
-        return "dead", parents
+        try:
+            while queues[0] or queues[1]:
+                turn ^= 1
+                queue = queues[1] if (turn and queues[1]) or not queues[0] else queues[0]
+                _, _, s, parent = pop(queue)
+                if s in parents:
+                    continue
+                parents[s] = parent
+                if s in alive or not (goal_pos & ~s or goal_neg & s):
+                    return "plan", (_path(parents, s), s)
+                if s in dead:
+                    continue
+                yield
+                relaxed = ff.relaxed_plan(s)
+                if relaxed is None:
+                    dead.add(s)
+                    continue
+                h = len(relaxed[0])
+                for act, t in self._successors(s):
+                    if t not in parents and t not in dead:
+                        counter += 1
+                        push(queues[0], (h, counter, t, (s, act)))
+                for ai in ff.helpful(s, relaxed[1]):
+                    act = actions[ai]
+                    t = (s & ~act.delete) | (act.add & mask)
+                    if t not in parents and t not in dead:
+                        counter += 1
+                        push(queues[1], (h, counter, t, (s, act)))
+            return "dead", parents
+        finally:
+            self.stats.expanded += len(parents)  # the states it expanded (or met alive)
 
     def _goal_count_search(self, start: int) -> Generator[None, None, tuple[str, Any]]:
         """Greedy best-first search on the number of unsatisfied goal atoms (a portfolio member).

@@ -12,7 +12,7 @@ names, arities, argument types).
 
 It only ever *accepts*: on anything unusual (a translator error or warning,
 a construct outside plain STRIPS, a form tarski's grammar does not take, a
-name it cannot type-check, a keyword in capitals) it returns None and the
+name it cannot type-check) it returns None and the
 reader takes the tarski path, which gives the precise ``file:line:col``
 error or the model.  Tests read every PDDL file of the repository, and
 hundreds of damaged ones, both ways and require the same outcome.
