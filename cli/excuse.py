@@ -148,7 +148,7 @@ def _summary(report: ExcuseReport, spellings: dict[str, str]) -> str:
     return ""
 
 
-def _excuse_dict(e: Excuse, spellings: dict[str, str], costs: dict[str, int] | None = None) -> dict[str, Any]:
+def _excuse_dict(e: Excuse, spellings: dict[str, str]) -> dict[str, Any]:
     return {
         "size": e.size,
         "cost": e.cost,
@@ -160,6 +160,7 @@ def _excuse_dict(e: Excuse, spellings: dict[str, str], costs: dict[str, int] | N
         "state": [str(a) for a in sorted(e.state)],
         "plan": e.plan,
         "plan_length": len(e.plan),
+        "plan_cost": e.plan_cost,
         "plan_optimal": e.plan_optimal,
         "validated": True,
     }
@@ -177,10 +178,16 @@ def _document(report: ExcuseReport, domain: str, problem: str, spellings: dict[s
         "excuse": _excuse_dict(first, spellings) if first else None,
         "alternatives": [_excuse_dict(e, spellings) for e in report.excuses[1:]],
         "robot_plan": report.robot_plan,
+        "robot_plan_cost": report.robot_plan_cost,
         "unachievable_goals": [str(g) for g in report.unachievable_goals],
         "invariants": sorted({g.invariant for g in report.invariant_groups}),
         "statistics": report.statistics,
     }
+
+
+def _cost_words(cost: int | None, prob: Problem) -> str:
+    """``, cost 15`` where actions have costs (under the problem's metric); nothing for unit costs."""
+    return f", cost {cost}" if prob.metric and cost is not None else ""
 
 
 def _text(report: ExcuseReport, prob: Problem, spellings: dict[str, str]) -> str:
@@ -189,7 +196,7 @@ def _text(report: ExcuseReport, prob: Problem, spellings: dict[str, str]) -> str
     if report.status == "already-solvable":
         plan = report.robot_plan or []
         lines.append(f"{name}: already solvable, no excuse needed (empty excuse).")
-        lines.append(f"Robot plan ({len(plan)} steps, validated):")
+        lines.append(f"Robot plan ({len(plan)} steps{_cost_words(report.robot_plan_cost, prob)}, validated):")
         lines += [f"  {i}. {step}" for i, step in enumerate(plan, 1)]
         return "\n".join(lines) + "\n"
     if not report.excuses:
@@ -202,7 +209,7 @@ def _text(report: ExcuseReport, prob: Problem, spellings: dict[str, str]) -> str
         for c in e.changes:
             lines.append(f"  {describe_change(c, spellings):<{width}}   {c}")
         kind = "optimal, validated" if e.plan_optimal else "validated"
-        lines.append(f"then the robot's own plan ({len(e.plan)} steps, {kind}):")
+        lines.append(f"then the robot's own plan ({len(e.plan)} steps{_cost_words(e.plan_cost, prob)}, {kind}):")
         lines += [f"  {i}. {step}" for i, step in enumerate(e.plan, 1)]
         if k < total:
             lines.append("")

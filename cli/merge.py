@@ -61,6 +61,7 @@ def merge(
             "inputs": [prior, *learned], "domain": text,
             "actions": [a.name for a in merged.actions],
             "duplicates": result.duplicates, "renamed": result.renamed, "refined": result.refined,
+            "costed": result.costed,
         })
     if problem_text is not None and problem_output is not None:
         write_text(problem_output, problem_text)

@@ -16,7 +16,7 @@ from guided_lfd.errors import EXIT_UNSOLVABLE, OptionError
 from guided_lfd.io import json_document, write_text
 from guided_lfd.pddl.reader import parse_task
 from guided_lfd.planning import DEFAULT_SEARCH, SEARCHES, plan_task
-from guided_lfd.validate import PlanStep, format_plan, validate_plan
+from guided_lfd.validate import PlanStep, cost_kind, format_plan, validate_plan
 
 
 @command
@@ -56,18 +56,22 @@ def plan(
             ui.error(reason)  # a text result has no plan to write
         raise typer.Exit(EXIT_UNSOLVABLE)
     steps = [PlanStep(a.schema, a.args) for a in result.plan]
-    report = validate_plan(dom, prob.init, prob.goal, steps)
+    report = validate_plan(dom, prob.init, prob.goal, steps, prob)
     if not report.valid:  # the planner and the validator disagree: a bug
         raise RuntimeError("planner returned a plan that does not validate")
     names = [a.name for a in result.plan]
+    cost = report.cost  # the validator's count, not the planner's
+    if cost != sum(a.cost for a in result.plan):
+        raise RuntimeError("planner and validator disagree on the plan's cost")
     if json_out:
         text = json_document("plan", {
             "domain": domain, "problem": problem, "status": "solved", "plan": names,
-            "cost": len(names), "optimal": result.optimal, "validated": True,
+            "cost": cost, "optimal": result.optimal, "validated": True,
             "search": search, "time_s": round(result.time_s, 4),
         })
     else:
-        text = format_plan(names)
+        text = format_plan(names, cost, cost_kind(prob))
     write_text(output, text)
-    ui.info(f"plan of length {len(names)} found by {search} in {result.time_s:.2f} s"
+    costs = f", cost {cost}" if prob.metric else ""
+    ui.info(f"plan of length {len(names)}{costs} found by {search} in {result.time_s:.2f} s"
             + (" (optimal)" if result.optimal else "") + ", validated")

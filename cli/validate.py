@@ -10,7 +10,7 @@ from cli.common import JsonOption, OutputOption, QuietOption, check_files, outpu
 from guided_lfd.errors import EXIT_PLAN_INVALID
 from guided_lfd.io import json_document
 from guided_lfd.pddl.reader import parse_task
-from guided_lfd.validate import parse_plan, validate_plan
+from guided_lfd.validate import cost_kind, parse_plan, validate_plan
 
 
 @command
@@ -27,7 +27,7 @@ def validate(
     json_out = output_format(output, json_out) == "json"
     dom, prob = parse_task(domain, problem)
     steps = parse_plan(plan_file, dom, prob)
-    report = validate_plan(dom, prob.init, prob.goal, steps)
+    report = validate_plan(dom, prob.init, prob.goal, steps, prob)
     failure = report.first_failure
     reason = None if report.valid else _reason(report, steps, plan_file)
     if json_out:
@@ -35,15 +35,18 @@ def validate(
             "domain": domain, "problem": problem, "plan": plan_file, "valid": report.valid,
             "steps": [
                 {"step": s.index, "action": str(s.step), "line": s.step.line, "applicable": s.ok,
-                 "failed_preconditions": [str(l) for l in s.failed]}
+                 "failed_preconditions": [str(l) for l in s.failed],
+                 "undefined_cost": None if s.undefined_cost is None else str(s.undefined_cost)}
                 for s in report.steps
             ],
             "goal_reached": failure is None and not report.unsatisfied_goal,
             # null when a step failed: the goal was never evaluated
             "unsatisfied_goal": None if failure is not None else [str(l) for l in report.unsatisfied_goal],
+            # the number of steps, or their total-cost under the problem's metric; null when invalid
+            "cost": report.cost if report.valid else None,
         })
     elif report.valid:
-        text = f"valid: {len(steps)} step(s), goal reached\n"
+        text = f"valid: {len(steps)} step(s), goal reached, cost {report.cost} ({cost_kind(prob)})\n"
     else:
         text = f"{reason}\n"
     emit(output, text, reason, structured=json_out)
@@ -56,6 +59,9 @@ def _reason(report, steps: list, plan_file: str) -> str:
     failure = report.first_failure
     if failure is not None:
         where = f"{plan_file}:{failure.step.line}:{failure.step.col}: " if failure.step.line else ""
+        if failure.undefined_cost is not None:
+            return (f"{where}invalid: step {failure.index} {failure.step} cannot be applied: "
+                    f"its cost {failure.undefined_cost} has no value in the problem's :init")
         return (f"{where}invalid: step {failure.index} {failure.step} is not applicable: "
                 f"precondition {', '.join(str(l) for l in failure.failed)} does not hold")
     return (f"invalid: all {len(steps)} step(s) apply, but the goal is not reached: "

@@ -18,7 +18,8 @@ from typing import Iterable, Sequence
 
 from guided_lfd.deadline import linger
 from guided_lfd.errors import Location, SearchTimeout, TaskTooLarge
-from guided_lfd.pddl.model import EQUALITY, ActionSchema, Atom, Domain, Literal, Problem, objects_by_type
+from guided_lfd.pddl.model import (EQUALITY, ActionSchema, Atom, Domain, Literal, MissingCostError, Problem,
+                                   action_cost, objects_by_type)
 
 #: Grounding limits: beyond them the task is refused (exit 21) instead of
 #: exhausting memory.  Both are far above what the searches can handle.
@@ -37,6 +38,8 @@ class GroundAction:
     pre_neg: int
     add: int
     delete: int
+    #: What the action costs (:func:`guided_lfd.pddl.model.action_cost`): 1 without action costs.
+    cost: int = 1
 
     # Index lists of the masks, for code that walks an action's atoms (the
     # relaxed tasks, relevance, LM-cut): filled in by the grounder, computed
@@ -180,7 +183,7 @@ def ground(
     linger(ground_actions)  # see guided_lfd.deadline.linger
     key_index = {(a.predicate, *a.args): i for a, i in index.items()}
     for schema in schemas:
-        for k, act in enumerate(_ground_schema(schema, by_type, index, problem.init, static, key_index)):
+        for k, act in enumerate(_ground_schema(schema, by_type, index, problem.init, static, key_index, problem)):
             ground_actions.append(act)
             if not k & 1023:
                 if len(ground_actions) > MAX_GROUND_ACTIONS:
@@ -236,8 +239,12 @@ def _ground_schema(
     init: frozenset[Atom],
     static: set[str],
     key_index: dict[tuple[str, ...], int] | None = None,
+    problem: Problem | None = None,
 ) -> Iterable[GroundAction]:
     params = [v for v, _ in schema.params]
+    # Costs: FD's semantics (see action_cost); a constant cost is worked out once.
+    costed = problem is not None and problem.metric
+    fixed_cost = 1 if not costed else (schema.cost or 0) if not isinstance(schema.cost, Atom) else None
     if key_index is None:
         key_index = {(a.predicate, *a.args): i for a, i in index.items()}
     pre = [(_key_function(lit.atom, params), lit.positive) for lit in schema.precondition
@@ -272,8 +279,16 @@ def _ground_schema(
             add |= 1 << idx
         for idx in del_ids:
             delete |= 1 << idx
+        cost = fixed_cost
+        if cost is None:
+            try:
+                cost = action_cost(schema, b, problem)  # type: ignore[arg-type]
+            except MissingCostError:
+                # PDDL: an effect on an undefined value makes the action inapplicable
+                # (Fast Downward only ever instantiates the ones that have values).
+                continue
         name = "(" + " ".join((schema.name, *values)) + ")"
-        act = GroundAction(name, schema.name, values, pre_pos, pre_neg, add, delete)
+        act = GroundAction(name, schema.name, values, pre_pos, pre_neg, add, delete, cost)
         # The index lists, sorted and without repeats, as bits() would give them.
         act.__dict__.update(pre_pos_ids=tuple(sorted(set(pos_ids))), pre_neg_ids=tuple(sorted(set(neg_ids))),
                             add_ids=tuple(sorted(set(add_ids))), delete_ids=tuple(sorted(set(del_ids))))

@@ -23,7 +23,7 @@ import itertools
 from dataclasses import dataclass, field, replace
 
 from guided_lfd.errors import Location, MergeError
-from guided_lfd.pddl.model import ActionSchema, Domain, Predicate, common_supertype, type_ancestors
+from guided_lfd.pddl.model import ActionSchema, Atom, Domain, Predicate, common_supertype, type_ancestors
 
 #: Actions with more parameters than this are compared by position only
 #: (all orderings of 8 parameters would be 40320 comparisons per pair).
@@ -40,6 +40,8 @@ class MergeResult:
     sources: dict[str, tuple[Domain, str]] = field(default_factory=dict)
     renamed: list[str] = field(default_factory=list)
     refined: list[str] = field(default_factory=list)
+    #: skills without a cost effect given cost 1 in a library with action costs
+    costed: list[str] = field(default_factory=list)
 
     def locate(self, action: str) -> Location:
         """Where a merged action is written in the file it came from."""
@@ -50,8 +52,8 @@ class MergeResult:
 
     @property
     def notes(self) -> list[str]:
-        """Every decision, in the order: refinements, duplicates, renames."""
-        return [*self.refined, *self.duplicates, *self.renamed]
+        """Every decision, in the order: refinements, duplicates, renames, costs given."""
+        return [*self.refined, *self.duplicates, *self.renamed, *self.costed]
 
 
 def _merge_types(merged: dict[str, str | None], declared_by_prior: set[str], domain: Domain,
@@ -137,6 +139,7 @@ def _key(action: ActionSchema, order: tuple[int, ...]) -> tuple:
         frozenset(l.substitute(binding) for l in action.precondition),
         frozenset(a.substitute(binding) for a in action.add),
         frozenset(a.substitute(binding) for a in action.delete),
+        action.cost.substitute(binding) if isinstance(action.cost, Atom) else action.cost,
     )
 
 
@@ -205,6 +208,7 @@ def merge_domains(domains: list[Domain], name: str | None = None) -> MergeResult
                                      f"({domain.path}); expected one type", domain.locate(const, ":constants"))
         _merge_predicates(predicates, types, domain, result)
     taken: set[str] = set()
+    costed = any(domain.functions for domain in domains)
     for domain in domains:
         for action in domain.actions:
             twin = next((kept for kept in actions if same_up_to_renaming(kept, action)), None)
@@ -224,7 +228,20 @@ def merge_domains(domains: list[Domain], name: str | None = None) -> MergeResult
                     f"renamed to {new_name}")
             taken.add(new_name)
             result.sources[new_name] = (domain, action.name)
-            actions.append(replace(action, name=new_name, origin=_origin(action, domain)))
+            cost = action.cost
+            if cost is None and costed and not domain.functions:
+                # A skill from a domain without costs joins a library with them: under the
+                # metric it would be free; it costs 1, as it did where it came from.
+                cost = 1
+                result.costed.append(f"{new_name} ({domain.path}) has no action cost: it costs 1")
+            actions.append(replace(action, name=new_name, origin=_origin(action, domain), cost=cost))
+    functions: dict[str, Predicate] = {}
+    for domain in domains:
+        for fname, fun in domain.functions.items():
+            if fname in functions and functions[fname].arity != fun.arity:
+                raise MergeError(f"function {fname} takes {functions[fname].arity} argument(s) and "
+                                 f"{fun.arity} ({domain.path}); expected one arity", domain.locate(fname, ":functions"))
+            functions.setdefault(fname, fun)
     merged = Domain(
         name=name or domains[0].name,
         requirements=tuple(requirements),
@@ -234,6 +251,7 @@ def merge_domains(domains: list[Domain], name: str | None = None) -> MergeResult
         actions=actions,
         path="<merged>",
         spellings=spellings,
+        functions=functions,
     )
     result.domain = merged
     return result

@@ -115,9 +115,12 @@ def find_plan(
             h = heuristics[heuristic](ptask) if heuristic else BlindHeuristic(ptask)
             ops = astar_search(ptask, h) if kind == "astar" else greedy_best_first_search(ptask, h)
     elapsed = time.perf_counter() - start
+    pool = task.actions if actions is None else actions
+    # Pyperplan's searches count steps: optimal only where every action costs 1.
+    optimal = optimal and all(a.cost == 1 for a in pool)
     if ops is None:
         return PlanResult(None, search, optimal, elapsed)
-    by_name = {a.name: a for a in (task.actions if actions is None else actions)}
+    by_name = {a.name: a for a in pool}
     return PlanResult([by_name[op.name] for op in ops], search, optimal, elapsed)
 
 

@@ -30,7 +30,7 @@ INF = float("inf")
 
 
 class RelaxedTask:
-    """The relaxed facts and actions of a fixed set of ground actions (costs default to 1)."""
+    """The relaxed facts and actions of a fixed set of ground actions (costs default to the actions' own)."""
 
     def __init__(self, actions: Sequence[GroundAction], goal_pos: int, goal_neg: int,
                  costs: Sequence[int] | None = None) -> None:
@@ -58,7 +58,7 @@ class RelaxedTask:
         pre.append(goal or [0])  # the artificial goal action, cost 0
         add.append([1])
         self.pre, self.add = pre, add
-        self.base_costs = [*(costs if costs is not None else [1] * len(self.actions)), 0]
+        self.base_costs = [*(costs if costs is not None else [a.cost for a in self.actions]), 0]
         self.prec_of: list[list[int]] = [[] for _ in range(self.n_facts)]
         self.achievers: list[list[int]] = [[] for _ in range(self.n_facts)]
         for ai, p in enumerate(pre):

@@ -10,7 +10,7 @@ import re
 from dataclasses import dataclass, field
 
 from guided_lfd.errors import InputFileError, Location, PlanFileError
-from guided_lfd.pddl.model import EQUALITY, Atom, Domain, Literal, Problem, objects_by_type
+from guided_lfd.pddl.model import EQUALITY, Atom, Domain, Literal, MissingCostError, Problem, action_cost, objects_by_type
 from guided_lfd.pddl.source import read_text
 
 
@@ -34,10 +34,12 @@ class StepReport:
     index: int
     step: PlanStep
     failed: list[Literal] = field(default_factory=list)
+    #: The step's cost term when the problem gives it no value (PDDL: then it cannot be applied).
+    undefined_cost: Atom | None = None
 
     @property
     def ok(self) -> bool:
-        return not self.failed
+        return not self.failed and self.undefined_cost is None
 
 
 @dataclass
@@ -47,6 +49,8 @@ class ValidationReport:
     steps: list[StepReport]
     unsatisfied_goal: list[Literal]
     final_state: frozenset[Atom]
+    #: What the steps applied cost (see :func:`plan_cost`); None unless the problem was given.
+    cost: int | None = None
 
     @property
     def valid(self) -> bool:
@@ -118,24 +122,41 @@ def parse_plan(path: str, domain: Domain, problem: Problem) -> list[PlanStep]:
     return parse_plan_text(text, path, domain, problem)
 
 
-def validate_plan(domain: Domain, state: frozenset[Atom] | set[Atom], goal: tuple[Literal, ...], steps: list[PlanStep]) -> ValidationReport:
-    """Execute ``steps`` from ``state``; stop at the first inapplicable step."""
+def validate_plan(domain: Domain, state: frozenset[Atom] | set[Atom], goal: tuple[Literal, ...], steps: list[PlanStep],
+                  problem: Problem | None = None) -> ValidationReport:
+    """Execute ``steps`` from ``state``; stop at the first inapplicable step.
+
+    With ``problem``, steps are also costed (:func:`guided_lfd.pddl.model.action_cost`): a step
+    whose cost has no value there cannot be applied, and the report carries the total cost.
+    """
     current = set(state)
     schemas = {a.name: a for a in domain.actions}
     reports: list[StepReport] = []
+    total = 0
     for i, step in enumerate(steps, start=1):
         schema = schemas[step.action]
         binding = {v: a for (v, _), a in zip(schema.params, step.args)}
         ground_pre = [lit.substitute(binding) for lit in schema.precondition]
         failed = [lit for lit in ground_pre if not holds(lit, current)]
-        reports.append(StepReport(i, step, failed))
-        if failed:
+        report = StepReport(i, step, failed)
+        reports.append(report)
+        if not failed and problem is not None:
+            try:
+                total += action_cost(schema, binding, problem)
+            except MissingCostError as exc:
+                report.undefined_cost = exc.term
+        if not report.ok:
             return ValidationReport(reports, [], frozenset(current))
         adds = {a.substitute(binding) for a in schema.add}
         dels = {a.substitute(binding) for a in schema.delete}
         current = (current - dels) | adds
     unsatisfied = [lit for lit in goal if not holds(lit, current)]
-    return ValidationReport(reports, unsatisfied, frozenset(current))
+    return ValidationReport(reports, unsatisfied, frozenset(current), None if problem is None else total)
+
+
+def cost_kind(problem: Problem) -> str:
+    """How a plan's cost is counted, in the words of the IPC plan format."""
+    return "general cost" if problem.metric else "unit cost"
 
 
 def holds(lit: Literal, state: set[Atom] | frozenset[Atom]) -> bool:
@@ -147,7 +168,7 @@ def holds(lit: Literal, state: set[Atom] | frozenset[Atom]) -> bool:
     return value == lit.positive
 
 
-def format_plan(steps: list[str], cost: int | None = None) -> str:
-    """A plan in the IPC format: one action per line and a cost comment."""
+def format_plan(steps: list[str], cost: int | None = None, kind: str = "unit cost") -> str:
+    """A plan in the IPC format: one action per line and a cost comment (``kind``: see :func:`cost_kind`)."""
     body = "".join(f"{s}\n" for s in steps)
-    return body + f"; cost = {len(steps) if cost is None else cost} (unit cost)\n"
+    return body + f"; cost = {len(steps) if cost is None else cost} ({kind})\n"

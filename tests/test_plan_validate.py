@@ -40,7 +40,7 @@ def test_plan_cli_prints_ipc_plan_and_validate_accepts_it(runner, app, tmp_path)
     plan_file.write_text(result.stdout)
     check = runner.invoke(app, ["validate", *kitchen(2, "human"), str(plan_file)])
     assert check.exit_code == 0
-    assert check.stdout == "valid: 4 step(s), goal reached\n"
+    assert check.stdout == "valid: 4 step(s), goal reached, cost 4 (unit cost)\n"
 
 
 def test_plan_cli_json_and_unsolvable_exit_code(runner, app):

@@ -55,7 +55,7 @@ BAD_INPUTS = [
     ("wrong-domain.pddl", "problem", errors.MismatchError, 34, "wrong-domain.pddl:2:10: mismatch: problem is for domain 'KITCHEN'"),
     ("requirement.pddl", "domain", errors.UnsupportedFeatureError, 33, "requirement.pddl:6:34: unsupported: unsupported requirement :conditional-effects"),
     ("conditional-effect.pddl", "domain", errors.UnsupportedFeatureError, 33, "conditional-effect.pddl:31:7: unsupported: 'when' needs :conditional-effects"),
-    ("numeric.pddl", "domain", errors.UnsupportedFeatureError, 33, "numeric.pddl:15:4: unsupported: ':functions' needs :numeric-fluents"),
+    ("numeric.pddl", "domain", errors.UnsupportedFeatureError, 33, "numeric.pddl:22:20: unsupported: 'increase' of a fluent other than total-cost: guided-lfd supports numbers only as :action-costs"),
     ("empty.pddl", "problem", errors.InputFileError, 30, "empty.pddl: input error: empty file"),
     ("blank.pddl", "domain", errors.PddlSyntaxError, 31, "blank.pddl:1:1: syntax error: no PDDL definition found"),
     ("missing.pddl", "problem", errors.InputFileError, 30, "missing.pddl: input error: file not found"),

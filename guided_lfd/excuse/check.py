@@ -120,7 +120,7 @@ def check_excuse(
     state = excuse_state(problem.init, changes)
     if all(_holds(lit, state) for lit in problem.goal) and changes:
         problems.append("the excuse state already satisfies the goal")
-    report = validate_plan(domain, state, problem.goal, plan)
+    report = validate_plan(domain, state, problem.goal, plan, problem)
     if not report.valid:
         failure = report.first_failure
         if failure is not None:

@@ -66,6 +66,8 @@ class Excuse:
     state: frozenset[Atom]
     plan: list[str]
     plan_optimal: bool
+    #: The plan's cost: its length, or its total-cost under the problem's metric (:action-costs).
+    plan_cost: int | None = None
 
     @property
     def size(self) -> int:
@@ -91,6 +93,7 @@ class ExcuseReport:
     invariant_groups: list[MutexGroup]
     robot_plan: list[str] | None = None  # when the task is already solvable
     checked_groups: list[tuple[frozenset[Atom], bool]] = field(default_factory=list)
+    robot_plan_cost: int | None = None  # the cost of ``robot_plan`` (see Excuse.plan_cost)
 
     @property
     def excuse(self) -> Excuse | None:
@@ -232,6 +235,7 @@ class _Run:
         self.excuses: list[Excuse] = []
         self.space: ChangeSpace | None = None
         self.unachievable: list[Literal] = []
+        self.robot_plan_cost: int | None = None
 
     def _enter(self, phase: str) -> None:
         self.phase = phase
@@ -246,8 +250,10 @@ class _Run:
         space = self.space
         groups = space.groups if space is not None else []
         checked = _group_atoms(space) if space is not None else []
+        robot_cost = self.robot_plan_cost if robot_plan is not None else None
         return ExcuseReport(status, sorted(self.excuses, key=_excuse_order), self.options.semantics,
-                            self.options.strategy, self.stats, self.unachievable, groups, robot_plan, checked)
+                            self.options.strategy, self.stats, self.unachievable, groups, robot_plan, checked,
+                            robot_cost)
 
     def timed_out(self) -> ExcuseReport:
         """The report when the time limit ended the run: excuses completed so far stay."""
@@ -299,6 +305,7 @@ class _Run:
             plan, _ = _robot_plan(task, space, oracle, task.init, plan0, options.optimal_plans, self.deadline,
                                   robot_plan_deadline(self.start))
             _verify(self.domain, self.problem, [], plan, space)
+            self.robot_plan_cost = sum(a.cost for a in plan)
             return self.report("already-solvable", [a.name for a in plan], candidates=0, planner_calls=1)
 
         self._enter("searching")
@@ -318,7 +325,8 @@ class _Run:
             change_list = _changes_of(task, changes)
             _verify(self.domain, self.problem, change_list, plan, space)
             self.excuses.append(Excuse(change_list, space.cost(changes),
-                                       excuse_state(self.problem.init, change_list), [a.name for a in plan], optimal))
+                                       excuse_state(self.problem.init, change_list), [a.name for a in plan], optimal,
+                                       sum(a.cost for a in plan)))
         status = {
             "found": "excuse-found",
             "none": "no-excuse",
@@ -350,7 +358,7 @@ def _verify(domain: Domain, problem: Problem, changes: list[Change], plan: list[
     if not changes:
         from guided_lfd.validate import validate_plan
 
-        if not validate_plan(domain, problem.init, problem.goal, steps).valid:
+        if not validate_plan(domain, problem.init, problem.goal, steps, problem).valid:
             raise RuntimeError("internal check failed: the robot plan does not validate")
         return
     problems = check_excuse(domain, problem, changes, steps, groups)

@@ -98,7 +98,7 @@ def compile_negative_preconditions(domain: Domain, problem: Problem,
         adds = set(act.add) | {flip(a) for a in act.delete if a.predicate in complement and a not in act.add}
         dels = set(act.delete) | {flip(a) for a in act.add if a.predicate in complement}
         actions.append(ActionSchema(act.name, act.params, tuple(literal(l) for l in act.precondition),
-                                    tuple(sorted(adds)), tuple(sorted(dels - adds)), act.origin))
+                                    tuple(sorted(adds)), tuple(sorted(dels - adds)), act.origin, act.cost))
     predicates = dict(domain.predicates)
     for pred, name in complement.items():
         predicates[name] = Predicate(name, domain.predicates[pred].params)

@@ -25,7 +25,7 @@ import threading
 from typing import Any
 
 from guided_lfd.errors import SearchTimeout
-from guided_lfd.pddl.model import EQUALITY, ActionSchema, Atom, Domain, Literal, Predicate, Problem
+from guided_lfd.pddl.model import EQUALITY, TOTAL_COST, ActionSchema, Atom, Domain, Literal, Predicate, Problem
 from guided_lfd.pddl.source import SExpr, SourceMap, Token
 
 #: A name as tarski's grammar reads it (NAME: a letter, then letters, digits, '-', '_').
@@ -38,7 +38,7 @@ RESERVED_WORDS = {
     "is-violated", "at-end", "always", "sometime", "within", "at-most-once", "sometime-after", "sometime-before",
     "always-within", "hold-during", "hold-after",
 }
-_DOMAIN_SECTIONS = (":requirements", ":types", ":constants", ":predicates")
+_DOMAIN_SECTIONS = (":requirements", ":types", ":constants", ":predicates", ":functions")
 _PROBLEM_SECTIONS = (":requirements", ":objects")
 
 _strict = threading.local()  # set while this module parses: the translator's warnings then decline
@@ -153,11 +153,34 @@ def _condition_shape(alist: Any) -> None:
         _atom_shape(alist)
 
 
+def _is_cost_effect(part: Any) -> bool:
+    return isinstance(part, list) and len(part) == 3 and part[0] == "increase" and part[1] == [TOTAL_COST]
+
+
+def _cost_effect(alist: Any) -> int | Atom | None:
+    """The ``(increase (total-cost) X)`` of an effect as the model has it (none or 0: None)."""
+    parts = alist[1:] if isinstance(alist, list) and alist[:1] == ["and"] else [alist]
+    costs = [part[2] for part in parts if _is_cost_effect(part)]
+    if not costs:
+        return None
+    if len(costs) > 1:
+        raise _NotPlain("two cost effects")
+    cost = costs[0]
+    if isinstance(cost, str):
+        if not cost.isdigit():
+            raise _NotPlain("cost")
+        return int(cost) or None
+    if not cost or not all(isinstance(w, str) for w in cost):
+        raise _NotPlain("cost term")
+    return Atom(_name(cost[0]), tuple(cost[1:]))
+
+
 def _effect_literals(alist: Any) -> list[tuple[bool, list[str]]]:
     """(positive?, atom) of a plain STRIPS effect in the order written (one 'and' at most, as in tarski's grammar)."""
     if not isinstance(alist, list) or not alist:
         raise _NotPlain("effect")
     parts = alist[1:] if alist[0] == "and" else [alist]
+    parts = [part for part in parts if not _is_cost_effect(part)]
     out: list[tuple[bool, list[str]]] = []
     for part in parts:
         if not isinstance(part, list) or not part or part[0] == "and":
@@ -291,13 +314,14 @@ def _domain(src: SourceMap, path: str) -> Domain:
             raise _NotPlain("predicate")
         _name(pred[0])
         _typed_list(pred[1:], variables=True)
+    _function_shapes(sections.get(":functions", [None])[1:])
     from fast_downward.translate.pddl_parser.parsing_functions import Context
 
     pf = _translator()
     (_, _, fd_types, _, fd_constants, fd_predicates, _, functions, fd_actions, axioms) = pf.parse_domain_pddl(
         Context(), lists)
-    if functions or axioms or len(declared_actions) != len(fd_actions):
-        raise _NotPlain("functions, axioms or an action without effects")
+    if axioms or len(declared_actions) != len(fd_actions):
+        raise _NotPlain("axioms or an action without effects")
     # The tarski path's type order: object, then the declarations parents first.
     ordered = src.types_parents_first() or []
     types: dict[str, str | None] = {"object": None}
@@ -324,8 +348,11 @@ def _domain(src: SourceMap, path: str) -> Domain:
         for _, t in params:
             checker.known(t)
         predicates[pred.name] = Predicate(pred.name, params)
+    declared_functions = _functions(functions, checker)
     if set(types) & (set(constants) | set(predicates)) or set(constants) & set(predicates):
         raise _NotPlain("a name used twice")
+    if set(declared_functions) & (set(types) | set(constants) | set(predicates)):
+        raise _NotPlain("a function named like a type, constant or predicate")
     _unique([a.name for a in fd_actions])
     actions: list[ActionSchema] = []
     for raw, act in zip(declared_actions, fd_actions):
@@ -335,8 +362,13 @@ def _domain(src: SourceMap, path: str) -> Domain:
             checker.known(t)
         terms = {**constants, **dict(params)}
         pre = _literals(act.precondition)
-        if act.cost is not None or any(eff.parameters or not _is_truth(eff.condition) for eff in act.effects):
-            raise _NotPlain("costs, quantified or conditional effects")
+        if any(eff.parameters or not _is_truth(eff.condition) for eff in act.effects):
+            raise _NotPlain("quantified or conditional effects")
+        cost = _cost_effect(raw[7])
+        if (act.cost is not None) != _has_cost_effect(raw[7]):
+            raise _NotPlain("a cost effect the translator reads otherwise")
+        if isinstance(cost, Atom):
+            _check_literals([Literal(cost)], terms, declared_functions, checker)
         # The effects as written: the translator drops a delete its action also adds
         # (add-after-delete); the model keeps both, as tarski's does.
         add: list[Atom] = []
@@ -344,11 +376,46 @@ def _domain(src: SourceMap, path: str) -> Domain:
         for positive, atom in _effect_literals(raw[7]):
             (add if positive else delete).append(Atom(atom[0], tuple(atom[1:])))
         _check_literals(pre + [Literal(a) for a in add + delete], terms, predicates, checker)
-        actions.append(ActionSchema(act.name, params, tuple(pre), tuple(add), tuple(delete)))
+        actions.append(ActionSchema(act.name, params, tuple(pre), tuple(add), tuple(delete), cost=cost))
     reqs = src.section(":requirements")
     requirements = tuple(t.lower for t in reqs.items[1:] if isinstance(t, Token)) if reqs else ()
     return Domain(name=name, requirements=requirements, types=types, constants=constants, predicates=predicates,
-                  actions=actions, path=path, spellings=src.spellings(), source=src)
+                  actions=actions, path=path, spellings=src.spellings(), source=src, functions=declared_functions)
+
+
+def _has_cost_effect(alist: Any) -> bool:
+    parts = alist[1:] if isinstance(alist, list) and alist[:1] == ["and"] else [alist]
+    return any(_is_cost_effect(part) for part in parts)
+
+
+def _function_shapes(entries: list[Any]) -> None:
+    """``(:functions (f ?x - t ...) - number ...)`` as tarski's grammar takes it: numbers only."""
+    i = 0
+    while i < len(entries):
+        entry = entries[i]
+        if not isinstance(entry, list) or not entry:
+            raise _NotPlain("function")
+        _name(entry[0])
+        _typed_list(entry[1:], variables=True)
+        if entries[i + 1:i + 2] == ["-"]:
+            if entries[i + 2:i + 3] != ["number"]:
+                raise _NotPlain("function type")
+            i += 3
+        else:
+            i += 1
+
+
+def _functions(functions: list[Any], checker: "_Types") -> dict[str, Predicate]:
+    """The translator's functions as the model has them (numbers only, in declaration order)."""
+    out: dict[str, Predicate] = {}
+    for fun in functions:
+        if fun.name in out or fun.type_name != "number":
+            raise _NotPlain("function")
+        params = tuple((f"?x{i}", arg.type_name) for i, arg in enumerate(fun.arguments))
+        for _, t in params:
+            checker.known(t)
+        out[fun.name] = Predicate(fun.name, params)
+    return out
 
 
 def _is_truth(cond) -> bool:
@@ -380,6 +447,9 @@ def _problem(src: SourceMap, path: str, domain: Domain) -> Problem:
             or len(lists[1]) != 2 or not isinstance(lists[2], list) or lists[2][:1] != [":domain"]):
         raise _NotPlain("header")
     name = _name(lists[1][1])
+    metric = lists[-1] == [":metric", "minimize", [TOTAL_COST]]
+    if metric:
+        lists = lists[:-1]
     init_section, goal_section = lists[-2], lists[-1]
     if (not isinstance(init_section, list) or init_section[:1] != [":init"] or not isinstance(goal_section, list)
             or goal_section[:1] != [":goal"] or len(goal_section) != 2):
@@ -390,8 +460,11 @@ def _problem(src: SourceMap, path: str, domain: Domain) -> Problem:
     if objects_section is not None:
         _typed_list(objects_section[1:])
     for fact in init_section[1:]:
-        if not isinstance(fact, list) or not fact or fact[0] in ("not", "="):
-            raise _NotPlain("negative or numeric initial facts")
+        if isinstance(fact, list) and fact[:1] == ["="]:
+            _assignment_shape(fact, domain)
+            continue
+        if not isinstance(fact, list) or not fact or fact[0] == "not":
+            raise _NotPlain("negative initial facts")
         _atom_shape(fact)
     if not goal_section[1]:
         raise _NotPlain("empty goal")
@@ -402,9 +475,10 @@ def _problem(src: SourceMap, path: str, domain: Domain) -> Problem:
     predicate_dict[EQUALITY] = pddl.Predicate(EQUALITY, [pddl.TypedObject("?x", "object"),
                                                          pddl.TypedObject("?y", "object")])
     pf = _translator()
+    full = lists + [[":metric", "minimize", [TOTAL_COST]]] if metric else lists
     (_, domain_name, _, fd_objects, fd_init, fd_goal, use_metric) = pf.parse_problem_pddl(
-        Context(), lists, type_dict, predicate_dict, set(domain.constants))
-    if use_metric:
+        Context(), full, type_dict, predicate_dict, set(domain.constants))
+    if use_metric != metric or (metric and TOTAL_COST not in domain.functions):
         raise _NotPlain("metric")
     _unique([o.name for o in fd_objects])
     objects = {o.name: o.type_name for o in fd_objects}
@@ -414,12 +488,39 @@ def _problem(src: SourceMap, path: str, domain: Domain) -> Problem:
     for t in objects.values():
         checker.known(t)
     terms = {**domain.constants, **objects}
-    if len(fd_init) != len(init_section) - 1 or any(not isinstance(a, pddl.Atom) for a in fd_init):
+    facts = [a for a in fd_init if not isinstance(a, pddl.Assign)]
+    if len(fd_init) != len(init_section) - 1 or any(not isinstance(a, pddl.Atom) for a in facts):
         raise _NotPlain("repeated or non-atomic initial facts")
-    init = [Literal(Atom(a.predicate, tuple(a.args))) for a in fd_init]
+    init = [Literal(Atom(a.predicate, tuple(a.args))) for a in facts]
+    values = _function_values(init_section, terms, domain, checker)
     goal = _literals(fd_goal)
     if any(lit.atom.predicate == EQUALITY for lit in init + goal):
         raise _NotPlain("equality in the initial state or goal")
     _check_literals(init + goal, terms, domain.predicates, checker)
     return Problem(name=name, domain_name=domain_name, objects=objects, init=frozenset(l.atom for l in init),
-                   goal=tuple(goal), path=path, spellings=src.spellings())
+                   goal=tuple(goal), path=path, spellings=src.spellings(), function_values=values, metric=metric)
+
+
+def _assignment_shape(fact: list[Any], domain: Domain) -> None:
+    """``(= (f obj ...) N)``: a declared function, a whole number."""
+    if (len(fact) != 3 or not isinstance(fact[1], list) or not fact[1] or not isinstance(fact[2], str)
+            or not fact[2].isdigit() or fact[1][0] not in domain.functions):
+        raise _NotPlain("assignment")
+    if not all(isinstance(w, str) for w in fact[1]):
+        raise _NotPlain("assignment term")
+
+
+def _function_values(init_section: list[Any], terms: dict[str, str], domain: Domain,
+                     checker: "_Types") -> dict[Atom, int]:
+    """The initial values of the numeric functions other than total-cost (each given once)."""
+    values: dict[Atom, int] = {}
+    for fact in init_section[1:]:
+        if fact[:1] != ["="]:
+            continue
+        atom = Atom(fact[1][0], tuple(fact[1][1:]))
+        if atom in values:
+            raise _NotPlain("a value given twice")
+        _check_literals([Literal(atom)], terms, domain.functions, checker)
+        if atom.predicate != TOTAL_COST:
+            values[atom] = int(fact[2])
+    return values

@@ -1,7 +1,7 @@
 """The lifted planning model guided-lfd works on.
 
 A deliberately small STRIPS model (typing, negative preconditions, equality,
-constants): enough for the robot's skill library and everything the tool
+constants, action costs): enough for the robot's skill library and everything the tool
 derives from it (excuses, learned and merged domains).  All names are
 lower-case, as PDDL is case-insensitive; ``spellings`` remembers how a name
 was first written (``PinkDrawer``) for messages meant for people.
@@ -16,7 +16,10 @@ from typing import Any
 from guided_lfd.errors import Location
 
 #: The PDDL requirements guided-lfd accepts.
-SUPPORTED_REQUIREMENTS = (":strips", ":typing", ":negative-preconditions", ":equality")
+SUPPORTED_REQUIREMENTS = (":strips", ":typing", ":negative-preconditions", ":equality", ":action-costs")
+
+#: The one numeric fluent guided-lfd supports: the accumulated action cost of :action-costs.
+TOTAL_COST = "total-cost"
 
 EQUALITY = "="
 
@@ -86,6 +89,10 @@ class ActionSchema:
 
     ``precondition`` may contain equality literals (predicate ``=``).
     ``origin`` says where the action came from (a merge keeps it as a comment).
+    ``cost`` is the action's ``(increase (total-cost) COST)`` under
+    :action-costs: a number, or a numeric function applied to the action's
+    parameters and constants (an :class:`Atom` over a function, its values in
+    the problem's ``:init``); None when the action has no cost effect.
     """
 
     name: str
@@ -94,6 +101,7 @@ class ActionSchema:
     add: tuple[Atom, ...]
     delete: tuple[Atom, ...]
     origin: str | None = None
+    cost: "int | Atom | None" = None
 
     def reversed(self) -> "ActionSchema":
         """The action undone: pre' = pre - del + add, add' = del, del' = add - pre.
@@ -116,6 +124,7 @@ class ActionSchema:
             add=tuple(sorted(dels - adds)),
             delete=tuple(sorted(adds - pos_pre)),
             origin=f"reverse of {self.name}",
+            cost=self.cost,
         )
 
 
@@ -133,6 +142,9 @@ class Domain:
     spellings: dict[str, str] = field(default_factory=dict)
     #: The parsed file's source map (positions for error messages), if read from a file.
     source: Any = field(default=None, repr=False, compare=False)
+    #: Numeric functions declared in ``:functions`` (``total-cost`` and the static
+    #: ones action costs are made of), with their typed parameters.
+    functions: dict[str, Predicate] = field(default_factory=dict)
 
     def locate(self, name: str, *sections: str) -> Location:
         """Where ``name`` is written in the domain file (searched in ``sections`` first)."""
@@ -167,7 +179,13 @@ class Domain:
 
 @dataclass
 class Problem:
-    """A PDDL problem: objects, initial state and a conjunctive goal."""
+    """A PDDL problem: objects, initial state and a conjunctive goal.
+
+    ``function_values`` are the initial ``(= (f obj ...) N)`` of numeric
+    functions other than ``total-cost``; ``metric`` is whether the problem
+    asks to ``(:metric minimize (total-cost))``.  As in Fast Downward, action
+    costs count only under that metric: without it every action costs 1.
+    """
 
     name: str
     domain_name: str
@@ -176,6 +194,38 @@ class Problem:
     goal: tuple[Literal, ...]
     path: str = "<problem>"
     spellings: dict[str, str] = field(default_factory=dict)
+    function_values: dict[Atom, int] = field(default_factory=dict)
+    metric: bool = False
+
+
+class MissingCostError(KeyError):
+    """A cost function has no value for a ground action's arguments (see :func:`action_cost`)."""
+
+    def __init__(self, term: Atom) -> None:
+        super().__init__(str(term))
+        self.term = term
+        self.step: int | None = None  # the plan step that needed it, when a plan is costed
+
+
+def action_cost(schema: ActionSchema, binding: dict[str, str], problem: Problem) -> int:
+    """The cost of ``schema`` applied with ``binding`` in ``problem`` (Fast Downward's semantics).
+
+    Without ``(:metric minimize (total-cost))`` every action costs 1; with
+    it, an action without a cost effect costs 0.  Raises
+    :class:`MissingCostError` when the problem gives no value for the term.
+    """
+    if not problem.metric:
+        return 1
+    cost = schema.cost
+    if cost is None:
+        return 0
+    if isinstance(cost, int):
+        return cost
+    term = cost.substitute(binding)
+    value = problem.function_values.get(term)
+    if value is None:
+        raise MissingCostError(term)
+    return value
 
 
 def type_ancestors(types: dict[str, str | None], t: str) -> list[str]:

@@ -26,6 +26,7 @@ from guided_lfd.errors import (
 from guided_lfd.pddl.model import (
     EQUALITY,
     SUPPORTED_REQUIREMENTS,
+    TOTAL_COST,
     ActionSchema,
     Atom,
     Domain,
@@ -43,16 +44,17 @@ _UNSUPPORTED_KEYWORDS = {
     "exists": ":existential-preconditions",
     "or": ":disjunctive-preconditions",
     "imply": ":disjunctive-preconditions",
-    "increase": ":numeric-fluents",
     "decrease": ":numeric-fluents",
     "assign": ":numeric-fluents",
     "scale-up": ":numeric-fluents",
     "scale-down": ":numeric-fluents",
-    ":functions": ":numeric-fluents",
+    "<": ":numeric-fluents",
+    ">": ":numeric-fluents",
+    "<=": ":numeric-fluents",
+    ">=": ":numeric-fluents",
     ":derived": ":derived-predicates",
     ":durative-action": ":durative-actions",
     ":constraints": ":constraints",
-    ":metric": ":action-costs",
     "either": ":typing with 'either' types",
 }
 
@@ -83,6 +85,7 @@ def _check_features(src: SourceMap, what: str) -> None:
                     f"(guided-lfd supports {' '.join(SUPPORTED_REQUIREMENTS)})",
                     src.location(tok.line, tok.col),
                 )
+    _check_numeric(src)
     # Keywords only count at the head of a list: an object may be called 'or'.
     for node in _lists(src):
         name = node.head()
@@ -105,6 +108,47 @@ def _check_features(src: SourceMap, what: str) -> None:
                             "'either' types are not supported (expected a single type name)",
                             src.location(head_tok.line, head_tok.col),
                         )
+
+
+def _numeric_error(tok: Token, src: SourceMap, what: str) -> UnsupportedFeatureError:
+    return UnsupportedFeatureError(
+        f"{what}: guided-lfd supports numbers only as :action-costs (expected '(increase (total-cost) N)' "
+        f"or '(increase (total-cost) (f ?x ...))' effects, '(= (f obj ...) N)' in :init and "
+        f"'(:metric minimize (total-cost))')",
+        src.location(tok.line, tok.col),
+    )
+
+
+def _check_numeric(src: SourceMap) -> None:
+    """Numbers only as :action-costs uses them; any other numeric fluent is a clean refusal."""
+    init = src.section(":init")
+    in_init = {id(n) for n in init.walk()} if init is not None else set()
+    functions = src.section(":functions")
+    if functions is not None:
+        items = functions.items
+        for i, item in enumerate(items[1:], start=1):
+            if isinstance(item, Token) and item.lower == "-" and i + 1 < len(items):
+                kind = items[i + 1]
+                if not isinstance(kind, Token) or kind.lower != "number":
+                    tok = kind if isinstance(kind, Token) else items[i]
+                    raise _numeric_error(tok, src, "a function whose values are not numbers (object fluents)")
+    for node in _lists(src):
+        head = node.head()
+        tok = node.items[0] if node.items else None
+        if not isinstance(tok, Token):
+            continue
+        if head == "increase":
+            target = node.items[1] if len(node.items) == 3 else None
+            if not (isinstance(target, SExpr) and len(target.items) == 1 and isinstance(target.items[0], Token)
+                    and target.items[0].lower == "total-cost"):
+                raise _numeric_error(tok, src, "'increase' of a fluent other than total-cost")
+        elif head == ":metric":
+            words = [t.lower if isinstance(t, Token) else (t.head() if len(t.items) == 1 else "?")
+                     for t in node.items[1:]]
+            if words != ["minimize", "total-cost"]:
+                raise _numeric_error(tok, src, "a metric other than '(:metric minimize (total-cost))'")
+        elif head == "=" and id(node) not in in_init and any(isinstance(t, SExpr) for t in node.items[1:]):
+            raise _numeric_error(tok, src, "a numeric comparison")
 
 
 def _lists(src: SourceMap):
@@ -458,7 +502,8 @@ def _domain_from_tarski(reader, src: SourceMap, path: str) -> Domain:
                 )
             atom = Atom(_pred_name(eff.atom.predicate), tuple(_term_name(t) for t in eff.atom.subterms))
             (add if isinstance(eff, AddEffect) else dele).append(atom)
-        actions.append(ActionSchema(str(act.name).lower(), params, pre, tuple(add), tuple(dele)))
+        cost = _tarski_cost(act, src, where_node)
+        actions.append(ActionSchema(str(act.name).lower(), params, pre, tuple(add), tuple(dele), cost=cost))
     reqs = src.section(":requirements")
     requirements = tuple(t.lower for t in reqs.items[1:] if isinstance(t, Token)) if reqs else ()
     return Domain(
@@ -471,7 +516,44 @@ def _domain_from_tarski(reader, src: SourceMap, path: str) -> Domain:
         path=path,
         spellings=src.spellings(),
         source=src,
+        functions=_tarski_functions(lang, src),
     )
+
+
+def _tarski_functions(lang, src: SourceMap) -> dict[str, Predicate]:
+    """The functions of the ``:functions`` section (tarski's language adds built-ins such as ``ite``)."""
+    section = src.section(":functions")
+    declared = {item.head() for item in section.items[1:] if isinstance(item, SExpr)} if section else set()
+    out: dict[str, Predicate] = {}
+    for fun in lang.functions:
+        name = str(fun.name).lower()
+        if name not in declared:
+            continue
+        out[name] = Predicate(name, tuple((f"?x{i}", str(s.name).lower()) for i, s in enumerate(fun.domain)))
+    return out
+
+
+def as_cost_number(value: float, what: str, where: Location) -> int:
+    """A cost or function value as the non-negative integer action costs need."""
+    if value != int(value) or value < 0:
+        raise UnsupportedFeatureError(f"{what} {value:g} is not a non-negative integer "
+                                      "(expected whole-number action costs)", where)
+    return int(value)
+
+
+def _tarski_cost(act, src: SourceMap, where: Location) -> int | Atom | None:
+    """The action's ``(increase (total-cost) X)`` as the model has it (0 and none alike: None)."""
+    from tarski.syntax import CompoundTerm, Constant
+
+    if act.cost is None:
+        return None
+    addend = act.cost.addend
+    if isinstance(addend, Constant):
+        number = as_cost_number(float(addend.name), f"the cost of action '{act.name}'", where)
+        return number or None
+    if isinstance(addend, CompoundTerm):
+        return Atom(str(addend.symbol.name).lower(), tuple(_term_name(t) for t in addend.subterms))
+    raise UnsupportedFeatureError(f"the cost of action '{act.name}' is not a number or a function term", where)
 
 
 def _new_reader():
@@ -605,6 +687,15 @@ def _problem_from_tarski(reader, src: SourceMap, path: str, domain_constants: di
         name = _pred_name(atom.predicate)
         init.add(Atom(name, tuple(_term_name(t) for t in atom.subterms)))
     goal = tuple(_literals(reader.problem.goal, src, "the goal"))
+    values: dict[Atom, int] = {}
+    for (fname, *_), extension in reader.problem.init.function_extensions.items():
+        name = str(fname).lower()
+        if name == TOTAL_COST:
+            continue
+        for args, value in extension.data.items():
+            atom = Atom(name, tuple(str(a.expr.name).lower() for a in args))
+            values[atom] = as_cost_number(float(value.name), f"the value of {atom}", src.locate(name, ":init"))
+    metric = src.section(":metric") is not None
     for lit in goal:
         if lit.atom.predicate == EQUALITY:
             raise UnsupportedFeatureError("equality in the goal is not supported", src.locate("=", ":goal"))
@@ -616,6 +707,8 @@ def _problem_from_tarski(reader, src: SourceMap, path: str, domain_constants: di
         goal=goal,
         path=path,
         spellings=src.spellings(),
+        function_values=values,
+        metric=metric,
     )
 
 

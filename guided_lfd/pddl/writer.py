@@ -6,7 +6,7 @@ golden-file tests and repeated runs compare byte for byte.
 
 from __future__ import annotations
 
-from guided_lfd.pddl.model import EQUALITY, ActionSchema, Atom, Domain, Literal, Problem
+from guided_lfd.pddl.model import EQUALITY, TOTAL_COST, ActionSchema, Atom, Domain, Literal, Predicate, Problem
 
 
 def _typed(pairs: list[tuple[str, str]] | tuple[tuple[str, str], ...], typing: bool = True) -> str:
@@ -65,6 +65,8 @@ def action_to_pddl(action: ActionSchema, indent: str = "  ") -> str:
     lines.append(f"{indent}  :parameters ({_typed(action.params)})")
     lines.append(f"{indent}  :precondition {_conj([_literal(l) for l in action.precondition])}")
     effects = [str(a) for a in action.add] + [f"(not {a})" for a in action.delete]
+    if action.cost is not None:
+        effects.append(f"(increase ({TOTAL_COST}) {action.cost})")
     lines.append(f"{indent}  :effect {_conj(effects)})")
     return "\n".join(lines)
 
@@ -76,7 +78,9 @@ def domain_to_pddl(domain: Domain, header: str | None = None) -> str:
         reqs.add(":negative-preconditions")
     if any(l.atom.predicate == EQUALITY for a in domain.actions for l in a.precondition):
         reqs.add(":equality")
-    order = [":strips", ":typing", ":negative-preconditions", ":equality"]
+    if domain.functions or any(a.cost is not None for a in domain.actions):
+        reqs.add(":action-costs")
+    order = [":strips", ":typing", ":negative-preconditions", ":equality", ":action-costs"]
     reqs_sorted = [r for r in order if r in reqs] + sorted(reqs - set(order))
     out: list[str] = []
     if header:
@@ -93,6 +97,15 @@ def domain_to_pddl(domain: Domain, header: str | None = None) -> str:
         args = _typed(pred.params)
         preds.append(f"({pred.name}{' ' + args if args else ''})")
     out.append("  (:predicates " + "\n               ".join(preds) + ")")
+    functions = dict(domain.functions)
+    if any(a.cost is not None for a in domain.actions):
+        functions.setdefault(TOTAL_COST, Predicate(TOTAL_COST, ()))
+    if functions:
+        declared = []
+        for fun in functions.values():
+            args = _typed(fun.params)
+            declared.append(f"({fun.name}{' ' + args if args else ''}) - number")
+        out.append("  (:functions " + "\n              ".join(declared) + ")")
     for action in domain.actions:
         out.append("")
         out.append(action_to_pddl(action))
@@ -111,6 +124,14 @@ def problem_to_pddl(problem: Problem, init: frozenset[Atom] | set[Atom] | None =
     if problem.objects:
         objs = sorted(problem.objects.items(), key=lambda kv: (kv[1], kv[0]))
         out.append(f"  (:objects {_typed(objs)})")
-    out.append("  (:init " + "\n         ".join(str(a) for a in sorted(state)) + ")")
-    out.append(f"  (:goal {_conj([str(l) for l in problem.goal])}))")
+    facts = [str(a) for a in sorted(state)]
+    facts += [f"(= {term} {value})" for term, value in sorted(problem.function_values.items())]
+    if problem.metric:
+        facts.append(f"(= ({TOTAL_COST}) 0)")
+    out.append("  (:init " + "\n         ".join(facts) + ")")
+    if problem.metric:
+        out.append(f"  (:goal {_conj([str(l) for l in problem.goal])})")
+        out.append(f"  (:metric minimize ({TOTAL_COST})))")
+    else:
+        out.append(f"  (:goal {_conj([str(l) for l in problem.goal])}))")
     return "\n".join(out) + "\n"

@@ -12,14 +12,14 @@
 	       (holding ?x - block)
 	       )
 
-  (:functions (total-cost)) (:action pick-up
+  (:functions (fuel ?x - block)) (:action pick-up
 	     :parameters (?x - block)
 	     :precondition (and (clear ?x) (ontable ?x) (handempty))
 	     :effect
 	     (and (not (ontable ?x))
 		   (not (clear ?x))
 		   (not (handempty))
-		   (holding ?x)))
+		   (holding ?x) (increase (fuel ?x) 1)))
 
   (:action put-down
 	     :parameters (?x - block)
