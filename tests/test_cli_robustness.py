@@ -610,3 +610,45 @@ def test_an_error_quoting_a_control_character_stays_one_line(runner, app, tmp_pa
     result = runner.invoke(app, ["segment", str(tmp_path / "t.csv")])
     assert result.exit_code == 36
     assert "object\\x1e0(BlueDrawer" in one_line(result)
+
+
+def _baseline_under_outside_cap(tmp_path, interrupt_after: float | None):
+    """The paper's baseline on a task that needs far more memory than an outside ``ulimit -v`` allows."""
+    import resource
+    import signal
+    import subprocess
+    import time
+
+    from guided_lfd.benchmark import BenchTask, cli_command, robot_domain_file
+    from conftest import ROOT
+
+    ipc = ROOT / "data/benchmarks/ipc/depot"
+    task = BenchTask("depot-task03-load", "depot", "task03", "load", str(ipc / "domain.pddl"),
+                     str(ipc / "task03.pddl"), "")
+    robot = robot_domain_file(task, tmp_path)
+
+    def cap() -> None:  # what `ulimit -v 400000` does in the shell that starts the run
+        resource.setrlimit(resource.RLIMIT_AS, (400_000 * 1024, 400_000 * 1024))
+
+    start = time.monotonic()
+    proc = subprocess.Popen([*cli_command(), "excuse", str(robot), task.problem_file, "--strategy", "baseline",
+                             "--time-limit", "60", "--quiet"], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                            text=True, preexec_fn=cap)
+    if interrupt_after is not None:
+        time.sleep(interrupt_after)
+        proc.send_signal(signal.SIGINT)
+    out, err = proc.communicate(timeout=60)
+    return proc.returncode, err, time.monotonic() - start
+
+
+def test_an_outside_memory_cap_ends_the_baseline_promptly_with_the_memout_code(tmp_path):
+    code, err, took = _baseline_under_outside_cap(tmp_path, None)
+    assert code == 22, err
+    assert err.strip() == "out of memory: the run needed more memory than the process may use"
+    assert took < 30  # it took 200 s and a kill before, ignoring SIGINT
+
+
+def test_ctrl_c_works_under_an_outside_memory_cap(tmp_path):
+    code, err, took = _baseline_under_outside_cap(tmp_path, 2.0)
+    assert code in (130, 22), err  # interrupted, or out of memory first on a fast machine
+    assert took < 10
