@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from typing import Annotated, Any
+from typing import Annotated
 
 import typer
 
@@ -13,11 +13,11 @@ from cli.common import (
 )
 from guided_lfd import errors
 from guided_lfd.deadline import deadline_after, watchdog
-from guided_lfd.excuse.engine import Excuse, ExcuseOptions, ExcuseReport, describe_change, find_excuses
+from guided_lfd.excuse.document import excuse_summary
+from guided_lfd.excuse.engine import ExcuseOptions, ExcuseReport, find_excuses
 from guided_lfd.excuse.space import Semantics
 from guided_lfd.excuse.strategies import DEFAULT_STRATEGY, STRATEGIES
-from guided_lfd.io import json_document, write_text
-from guided_lfd.pddl.model import Problem
+from guided_lfd.io import write_text
 from guided_lfd.pddl.reader import parse_domain, parse_task
 from guided_lfd.pddl.writer import problem_to_pddl
 
@@ -91,16 +91,13 @@ def excuse(
             fixed_from=parse_domain(fixed_from) if fixed_from else None, started=started,
         )
     report = _run(dom, prob, options)
-    spellings = {**prob.spellings, **dom.spellings}  # predicates as the domain writes them
+    spellings = report.spellings  # predicates as the domain writes them
     as_json = output_format(output, json_out) == "json"
-    if as_json:
-        text = json_document("excuse", _document(report, domain, problem, spellings))
-    else:
-        text = _text(report, prob, spellings)
+    text = report.to_json() if as_json else report.to_text()
     code = EXIT_BY_STATUS[report.status]
     # Every outcome is a document (its status says what happened: a timed-out
     # run says how far it got); a non-zero one also gets its reason on stderr.
-    emit(output, text, _summary(report, spellings) if code else None, structured=as_json)
+    emit(output, text, excuse_summary(report, spellings) if code else None, structured=as_json)
     if excuse_problem and report.excuse is not None:
         header = (f"Excuse state of {problem} for {domain} ({report.semantics.value} semantics):\n"
                   + "\n".join(f"  {c}" for c in report.excuse.changes))
@@ -129,88 +126,3 @@ def _run(dom, prob, options: ExcuseOptions) -> ExcuseReport:
             bar.update(job, description=f"{message}: {candidates} candidates checked")
 
         return find_excuses(dom, prob, options, progress)
-
-
-def _summary(report: ExcuseReport, spellings: dict[str, str]) -> str:
-    if report.status == "no-excuse":
-        fixed = report.statistics.get("fixed_predicates") or []
-        while_fixed = f" while {', '.join(fixed)} stay fixed" if fixed else ""
-        if report.unachievable_goals:
-            goals = ", ".join(str(g) for g in report.unachievable_goals)
-            return (f"no excuse exists: no robot skill achieves {goals}{while_fixed}, and no change of the initial "
-                    f"state short of satisfying the goal helps; a new skill must be demonstrated")
-        return (f"no excuse exists: no change of the initial state lets the robot reach the goal{while_fixed}; "
-                "a new skill must be demonstrated")
-    if report.status == "no-excuse-within-size":
-        return "no excuse within --max-size; a larger change or a new skill is needed"
-    if report.status == "timeout":
-        return "time limit reached before a minimal excuse was found"
-    return ""
-
-
-def _excuse_dict(e: Excuse, spellings: dict[str, str]) -> dict[str, Any]:
-    return {
-        "size": e.size,
-        "cost": e.cost,
-        "changes": [
-            {"change": str(c), "op": "add" if c.added else "delete", "atom": str(c.atom),
-             "text": describe_change(c, spellings)}
-            for c in e.changes
-        ],
-        "state": [str(a) for a in sorted(e.state)],
-        "plan": e.plan,
-        "plan_length": len(e.plan),
-        "plan_cost": e.plan_cost,
-        "plan_optimal": e.plan_optimal,
-        "validated": True,
-    }
-
-
-def _document(report: ExcuseReport, domain: str, problem: str, spellings: dict[str, str]) -> dict[str, Any]:
-    first = report.excuse
-    return {
-        "domain": domain,
-        "problem": problem,
-        "semantics": report.semantics.value,
-        "strategy": report.strategy,
-        "status": report.status,
-        "message": _summary(report, spellings) or None,
-        "excuse": _excuse_dict(first, spellings) if first else None,
-        "alternatives": [_excuse_dict(e, spellings) for e in report.excuses[1:]],
-        "robot_plan": report.robot_plan,
-        "robot_plan_cost": report.robot_plan_cost,
-        "unachievable_goals": [str(g) for g in report.unachievable_goals],
-        "invariants": sorted({g.invariant for g in report.invariant_groups}),
-        "statistics": report.statistics,
-    }
-
-
-def _cost_words(cost: int | None, prob: Problem) -> str:
-    """``, cost 15`` where actions have costs (under the problem's metric); nothing for unit costs."""
-    return f", cost {cost}" if prob.metric and cost is not None else ""
-
-
-def _text(report: ExcuseReport, prob: Problem, spellings: dict[str, str]) -> str:
-    name = spellings.get(prob.name, prob.name)
-    lines: list[str] = []
-    if report.status == "already-solvable":
-        plan = report.robot_plan or []
-        lines.append(f"{name}: already solvable, no excuse needed (empty excuse).")
-        lines.append(f"Robot plan ({len(plan)} steps{_cost_words(report.robot_plan_cost, prob)}, validated):")
-        lines += [f"  {i}. {step}" for i, step in enumerate(plan, 1)]
-        return "\n".join(lines) + "\n"
-    if not report.excuses:
-        return f"{name}: {_summary(report, spellings)}\n"
-    total = len(report.excuses)
-    for k, e in enumerate(report.excuses, 1):
-        which = f"Minimal excuse {k} of {total}" if total > 1 else "Minimal excuse"
-        lines.append(f"{which} for {name} (size {e.size}, cost {e.cost}): demonstrate how to reach")
-        width = max(len(describe_change(c, spellings)) for c in e.changes)
-        for c in e.changes:
-            lines.append(f"  {describe_change(c, spellings):<{width}}   {c}")
-        kind = "optimal, validated" if e.plan_optimal else "validated"
-        lines.append(f"then the robot's own plan ({len(e.plan)} steps{_cost_words(e.plan_cost, prob)}, {kind}):")
-        lines += [f"  {i}. {step}" for i, step in enumerate(e.plan, 1)]
-        if k < total:
-            lines.append("")
-    return "\n".join(lines) + "\n"

@@ -13,10 +13,11 @@ from cli.common import (
 )
 from guided_lfd.deadline import deadline_after, remaining, watchdog
 from guided_lfd.errors import EXIT_UNSOLVABLE, OptionError
-from guided_lfd.io import json_document, write_text
+from guided_lfd.api import plan as plan_and_validate
+from guided_lfd.io import write_text
 from guided_lfd.pddl.reader import parse_task
-from guided_lfd.planning import DEFAULT_SEARCH, SEARCHES, plan_task
-from guided_lfd.validate import PlanStep, cost_kind, format_plan, validate_plan
+from guided_lfd.planning import DEFAULT_SEARCH, SEARCHES
+from guided_lfd.validation import cost_kind, format_plan
 
 
 @command
@@ -43,35 +44,17 @@ def plan(
     deadline = deadline_after(time_limit, started_at())
     with watchdog(deadline, "plan"):
         dom, prob = parse_task(domain, problem)
-        task, result = plan_task(dom, prob, search, remaining(deadline))
-    if result.plan is None:
-        reason = f"unsolvable: exhaustive {search} search found no plan ({result.time_s:.2f} s)"
+        report = plan_and_validate(dom, prob, search, remaining(deadline))
+    if not report.solved:
+        reason = f"unsolvable: exhaustive {search} search found no plan ({report.time_s:.2f} s)"
         if json_out:
-            emit(output, json_document("plan", {
-                "domain": domain, "problem": problem, "status": "unsolvable", "plan": None,
-                "cost": None, "optimal": None, "validated": None,
-                "search": search, "time_s": round(result.time_s, 4),
-            }), reason)
+            emit(output, report.to_json(), reason)
         else:
             ui.error(reason)  # a text result has no plan to write
         raise typer.Exit(EXIT_UNSOLVABLE)
-    steps = [PlanStep(a.schema, a.args) for a in result.plan]
-    report = validate_plan(dom, prob.init, prob.goal, steps, prob)
-    if not report.valid:  # the planner and the validator disagree: a bug
-        raise RuntimeError("planner returned a plan that does not validate")
-    names = [a.name for a in result.plan]
-    cost = report.cost  # the validator's count, not the planner's
-    if cost != sum(a.cost for a in result.plan):
-        raise RuntimeError("planner and validator disagree on the plan's cost")
-    if json_out:
-        text = json_document("plan", {
-            "domain": domain, "problem": problem, "status": "solved", "plan": names,
-            "cost": cost, "optimal": result.optimal, "validated": True,
-            "search": search, "time_s": round(result.time_s, 4),
-        })
-    else:
-        text = format_plan(names, cost, cost_kind(prob))
+    names = [str(step) for step in report.plan or []]
+    text = report.to_json() if json_out else format_plan(names, report.cost, cost_kind(prob))
     write_text(output, text)
-    costs = f", cost {cost}" if prob.metric else ""
-    ui.info(f"plan of length {len(names)}{costs} found by {search} in {result.time_s:.2f} s"
-            + (" (optimal)" if result.optimal else "") + ", validated")
+    costs = f", cost {report.cost}" if prob.metric else ""
+    ui.info(f"plan of length {len(names)}{costs} found by {search} in {report.time_s:.2f} s"
+            + (" (optimal)" if report.optimal else "") + ", validated")

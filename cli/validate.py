@@ -10,7 +10,7 @@ from cli.common import JsonOption, OutputOption, QuietOption, check_files, outpu
 from guided_lfd.errors import EXIT_PLAN_INVALID
 from guided_lfd.io import json_document
 from guided_lfd.pddl.reader import parse_task
-from guided_lfd.validate import cost_kind, parse_plan, validate_plan
+from guided_lfd.validation import cost_kind, parse_plan, validate_plan
 
 
 @command

@@ -3,6 +3,62 @@
 The library behind the ``guided-lfd`` command: parse PDDL, ground it, plan and
 validate, find minimal excuses (what the robot needs a human to demonstrate),
 and learn, merge and evaluate demonstrated skills.
+
+    from guided_lfd import read_task, find_excuses, ExcuseOptions
+    domain, problem = read_task("robot.pddl", "problem.pddl")
+    report = find_excuses(domain, problem, ExcuseOptions(time_limit=10))
+    print(report.to_json())          # what `guided-lfd excuse --json` prints
+
+The names below load on first use, so that ``import guided_lfd`` (and the
+command line's start-up) stays cheap.
 """
 
+from __future__ import annotations
+
+from importlib import import_module
+from typing import TYPE_CHECKING, Any
+
 __version__ = "0.1.0"
+
+#: Public name -> the module that defines it.
+_EXPORTS = {
+    "read_task": "guided_lfd.api",
+    "plan": "guided_lfd.api",
+    "validate": "guided_lfd.api",
+    "PlanReport": "guided_lfd.api",
+    "find_excuses": "guided_lfd.excuse.engine",
+    "ExcuseOptions": "guided_lfd.excuse.engine",
+    "ExcuseReport": "guided_lfd.excuse.engine",
+    "Excuse": "guided_lfd.excuse.engine",
+    "Semantics": "guided_lfd.excuse.space",
+    "Change": "guided_lfd.excuse.check",
+    "PlanStep": "guided_lfd.validation",
+    "ValidationReport": "guided_lfd.validation",
+    "Domain": "guided_lfd.pddl.model",
+    "Problem": "guided_lfd.pddl.model",
+    "GuidedLfdError": "guided_lfd.errors",
+}
+
+__all__ = ["__version__", *_EXPORTS]
+
+if TYPE_CHECKING:  # for type checkers and IDEs; at run time __getattr__ loads them
+    from guided_lfd.api import PlanReport, plan, read_task, validate
+    from guided_lfd.errors import GuidedLfdError
+    from guided_lfd.excuse.check import Change
+    from guided_lfd.excuse.engine import Excuse, ExcuseOptions, ExcuseReport, find_excuses
+    from guided_lfd.excuse.space import Semantics
+    from guided_lfd.pddl.model import Domain, Problem
+    from guided_lfd.validation import PlanStep, ValidationReport
+
+
+def __getattr__(name: str) -> Any:
+    module = _EXPORTS.get(name)
+    if module is None:
+        raise AttributeError(f"module 'guided_lfd' has no attribute {name!r}")
+    value = getattr(import_module(module), name)
+    globals()[name] = value  # once loaded, a plain attribute
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted(__all__)

@@ -31,8 +31,8 @@ from guided_lfd.excuse.space import Semantics, build_space
 from guided_lfd.grounding import GroundTask, ground
 from guided_lfd.pddl.model import Atom, Domain, Literal, Problem
 from guided_lfd.planning import plan_task
-from guided_lfd.validate import PlanStep, validate_plan
-from guided_lfd.validate import holds as literal_holds
+from guided_lfd.validation import PlanStep, validate_plan
+from guided_lfd.validation import holds as literal_holds
 
 #: Default bound on the states explored for misdirected guidance.
 DEFAULT_EXPLORATION_BOUND = 20_000

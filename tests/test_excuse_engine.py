@@ -17,7 +17,7 @@ from guided_lfd.excuse.space import Semantics
 from guided_lfd.excuse.strategies import STRATEGIES
 from guided_lfd.pddl.model import Atom, Literal
 from guided_lfd.pddl.reader import parse_domain, parse_task
-from guided_lfd.validate import PlanStep
+from guided_lfd.validation import PlanStep
 
 ALL_STRATEGIES = sorted(STRATEGIES)
 

@@ -12,7 +12,7 @@ from dataclasses import dataclass
 from guided_lfd.errors import InputFileError, Location
 from guided_lfd.io import read_json_document
 from guided_lfd.pddl.model import Atom, Domain, Literal, Problem
-from guided_lfd.validate import PlanStep, validate_plan
+from guided_lfd.validation import PlanStep, validate_plan
 
 
 @dataclass(frozen=True)

@@ -27,7 +27,7 @@ from guided_lfd.excuse.strategies import DEFAULT_STRATEGY, STRATEGIES, Progress,
 from guided_lfd.grounding import GroundAction, GroundTask, bits, ground
 from guided_lfd.optimal import certified_optimal, shorten_plan
 from guided_lfd.pddl.model import Atom, Domain, Literal, Problem, pretty_atom
-from guided_lfd.validate import PlanStep
+from guided_lfd.validation import PlanStep
 
 
 @dataclass
@@ -47,6 +47,10 @@ class ExcuseOptions:
     #: ``time.monotonic()`` when the run started (the time limit counts from
     #: it: a command line starts it before reading its files); None = now.
     started: float | None = None
+
+    def __post_init__(self) -> None:
+        # A library caller may write semantics="literal"; the engine compares members.
+        self.semantics = Semantics(self.semantics)
 
     def fixed_predicates(self, domain: Domain) -> list[str]:
         """``fixed`` plus the predicates no action of ``fixed_from`` changes (that ``domain`` has)."""
@@ -94,10 +98,43 @@ class ExcuseReport:
     robot_plan: list[str] | None = None  # when the task is already solvable
     checked_groups: list[tuple[frozenset[Atom], bool]] = field(default_factory=list)
     robot_plan_cost: int | None = None  # the cost of ``robot_plan`` (see Excuse.plan_cost)
+    #: The task asked about (its paths and spellings go into the document).
+    domain: Domain | None = field(default=None, repr=False)
+    problem: Problem | None = field(default=None, repr=False)
 
     @property
     def excuse(self) -> Excuse | None:
+        """The first minimal excuse, or None."""
         return self.excuses[0] if self.excuses else None
+
+    @property
+    def spellings(self) -> dict[str, str]:
+        """Names as the files write them (the domain's spelling of a predicate wins)."""
+        if self.domain is None or self.problem is None:
+            return {}
+        return {**self.problem.spellings, **self.domain.spellings}
+
+    def to_dict(self) -> dict[str, Any]:
+        """The body of the ``guided-lfd/excuse`` document, as ``guided-lfd excuse --json`` writes it."""
+        from guided_lfd.excuse.document import excuse_document
+
+        domain = self.domain.path if self.domain is not None else "<domain>"
+        problem = self.problem.path if self.problem is not None else "<problem>"
+        return excuse_document(self, domain, problem, self.spellings)
+
+    def to_json(self) -> str:
+        """Exactly the document ``guided-lfd excuse --json`` prints (format and version included)."""
+        from guided_lfd.io import json_document
+
+        return json_document("excuse", self.to_dict())
+
+    def to_text(self) -> str:
+        """The report as ``guided-lfd excuse`` prints it for people."""
+        from guided_lfd.excuse.document import excuse_text
+
+        if self.problem is None:
+            raise ValueError("a report made without its problem has no text form")
+        return excuse_text(self, self.problem, self.spellings)
 
 
 def check_option_names(domain: Domain, options: ExcuseOptions) -> None:
@@ -253,7 +290,7 @@ class _Run:
         robot_cost = self.robot_plan_cost if robot_plan is not None else None
         return ExcuseReport(status, sorted(self.excuses, key=_excuse_order), self.options.semantics,
                             self.options.strategy, self.stats, self.unachievable, groups, robot_plan, checked,
-                            robot_cost)
+                            robot_cost, self.domain, self.problem)
 
     def timed_out(self) -> ExcuseReport:
         """The report when the time limit ended the run: excuses completed so far stay."""
@@ -356,7 +393,7 @@ def _verify(domain: Domain, problem: Problem, changes: list[Change], plan: list[
     steps = [PlanStep(a.schema, a.args) for a in plan]
     groups = _group_atoms(space)
     if not changes:
-        from guided_lfd.validate import validate_plan
+        from guided_lfd.validation import validate_plan
 
         if not validate_plan(domain, problem.init, problem.goal, steps, problem).valid:
             raise RuntimeError("internal check failed: the robot plan does not validate")

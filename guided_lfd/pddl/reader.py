@@ -568,14 +568,14 @@ def _new_reader():
 SECOND_OPINION_MAX_CHARS = 1_000_000
 
 
-def _source_map(path: str, kind: str) -> SourceMap:
-    """Read ``path`` into a :class:`SourceMap`.
+def _source_map(path: str, kind: str, text: str | None = None) -> SourceMap:
+    """Read ``path`` (or take ``text``, named ``path`` in messages) into a :class:`SourceMap`.
 
     For an unclosed parenthesis the source map can only point at the list
     left open at the end of the file; tarski's grammar often pins the real
     mistake (``((and``) earlier, so its position wins when it has one.
     """
-    text = read_text(path)
+    text = read_text(path) if text is None else text
     try:
         return SourceMap(path, text)
     except PddlSyntaxError as exc:
@@ -633,14 +633,19 @@ def _check_kind(src: SourceMap, kind: str) -> None:
             return
 
 
-def parse_task(domain_path: str | Path, problem_path: str | Path) -> tuple[Domain, Problem]:
-    """Parse a domain and a problem of it; checks that they belong together."""
+def parse_task(domain_path: str | Path, problem_path: str | Path, *, domain_text: str | None = None,
+               problem_text: str | None = None) -> tuple[Domain, Problem]:
+    """Parse a domain and a problem of it; checks that they belong together.
+
+    ``domain_text``/``problem_text`` give the PDDL itself instead of reading
+    the files; the paths then only name them in messages (``<domain>:3:4``).
+    """
     dname = str(domain_path)
     pname = str(problem_path)
-    dsrc = _source_map(dname, "domain")
+    dsrc = _source_map(dname, "domain", domain_text)
     _check_kind(dsrc, "domain")
     _check_features(dsrc, "domain")
-    psrc = _source_map(pname, "problem")
+    psrc = _source_map(pname, "problem", problem_text)
     _check_kind(psrc, "problem")
     _check_features(psrc, "problem")
     # The fast path first (Fast Downward's translator parser); anything it

@@ -1,0 +1,118 @@
+"""The library's front door: read a task, plan, validate (excuses: :mod:`guided_lfd.excuse.engine`).
+
+A robot program imports these from :mod:`guided_lfd` (see the README's
+"Using guided-lfd from Python"); the command line is a thin layer over the
+same calls, so a program gets exactly what ``guided-lfd`` prints.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any, Sequence
+
+from guided_lfd.pddl.model import Domain, Problem
+from guided_lfd.validation import PlanStep, ValidationReport
+
+__all__ = ["PlanReport", "plan", "read_task", "validate"]
+
+#: What a file path or PDDL text may be given as.
+Source = str | Path
+
+
+def _is_pddl_text(source: Source) -> bool:
+    """PDDL text rather than a path: a string whose first word is a list or a comment."""
+    return isinstance(source, str) and source.lstrip()[:1] in ("(", ";")
+
+
+def read_task(domain: Source, problem: Source) -> tuple[Domain, Problem]:
+    """The task of a domain and a problem, each a path or PDDL text (``"(define (domain ..."``).
+
+    Raises the one-line :class:`~guided_lfd.errors.GuidedLfdError` of the
+    command line (``file:line:col``; ``<domain>``/``<problem>`` for text).
+    """
+    from guided_lfd.pddl.reader import parse_task
+
+    domain_text = domain if _is_pddl_text(domain) else None
+    problem_text = problem if _is_pddl_text(problem) else None
+    return parse_task("<domain>" if domain_text is not None else domain,
+                      "<problem>" if problem_text is not None else problem,
+                      domain_text=domain_text, problem_text=problem_text)
+
+
+@dataclass
+class PlanReport:
+    """A validated plan (or a proof that there is none), as ``guided-lfd plan`` reports it."""
+
+    domain: str
+    problem: str
+    #: The plan, validated on the lifted domain; None when the task is unsolvable.
+    plan: list[PlanStep] | None
+    #: Length, or total-cost under the problem's metric; None when unsolvable.
+    cost: int | None
+    optimal: bool | None
+    search: str
+    time_s: float
+
+    @property
+    def solved(self) -> bool:
+        """Whether a plan was found."""
+        return self.plan is not None
+
+    def to_dict(self) -> dict[str, Any]:
+        """The body of the ``guided-lfd/plan`` document (the same keys for both statuses)."""
+        return {
+            "domain": self.domain, "problem": self.problem, "status": "solved" if self.solved else "unsolvable",
+            "plan": None if self.plan is None else [str(s) for s in self.plan],
+            "cost": self.cost, "optimal": self.optimal, "validated": True if self.solved else None,
+            "search": self.search, "time_s": round(self.time_s, 4),
+        }
+
+    def to_json(self) -> str:
+        """Exactly the document ``guided-lfd plan --json`` prints."""
+        from guided_lfd.io import json_document
+
+        return json_document("plan", self.to_dict())
+
+
+def plan(domain: Domain, problem: Problem, search: str | None = None,
+         time_limit: float | None = None) -> PlanReport:
+    """An optimal plan for ``(domain, problem)`` (see :data:`guided_lfd.planning.SEARCHES`), validated.
+
+    Raises :class:`~guided_lfd.errors.SearchTimeout` past ``time_limit``
+    seconds, and :class:`RuntimeError` if the planner's plan does not
+    validate or its cost disagrees with the validator's (a bug, never hidden).
+    """
+    from guided_lfd.planning import DEFAULT_SEARCH, plan_task
+    from guided_lfd.validation import validate_plan
+
+    search = search or DEFAULT_SEARCH
+    _, result = plan_task(domain, problem, search, time_limit)
+    if result.plan is None:
+        return PlanReport(domain.path, problem.path, None, None, None, search, result.time_s)
+    steps = [PlanStep(a.schema, a.args) for a in result.plan]
+    report = validate_plan(domain, problem.init, problem.goal, steps, problem)
+    if not report.valid:
+        raise RuntimeError("planner returned a plan that does not validate")
+    if report.cost != sum(a.cost for a in result.plan):
+        raise RuntimeError("planner and validator disagree on the plan's cost")
+    return PlanReport(domain.path, problem.path, steps, report.cost, result.optimal, search, result.time_s)
+
+
+def validate(domain: Domain, problem: Problem, plan: Source | Sequence[PlanStep | str]) -> ValidationReport:
+    """Execute ``plan`` (a plan file, IPC plan text, or steps) from the initial state; cost included.
+
+    Steps may be :class:`~guided_lfd.validation.PlanStep` objects or strings
+    such as ``"(drive home shop)"``; a bad step is a one-line
+    :class:`~guided_lfd.errors.PlanFileError`, as on the command line.
+    """
+    from guided_lfd.validation import parse_plan, parse_plan_text, validate_plan
+
+    if isinstance(plan, Path) or (isinstance(plan, str) and not _is_pddl_text(plan)):
+        steps = parse_plan(str(plan), domain, problem)
+    elif isinstance(plan, str):
+        steps = parse_plan_text(plan, "<plan>", domain, problem)
+    else:
+        text = "\n".join(str(step) for step in plan)
+        steps = parse_plan_text(text, "<plan>", domain, problem)
+    return validate_plan(domain, problem.init, problem.goal, steps, problem)

@@ -1,0 +1,81 @@
+"""The library a robot program imports: the README's example runs, and it gives the command line's documents."""
+
+from __future__ import annotations
+
+import json
+import re
+
+import pytest
+
+from conftest import DATA, ROOT, fresh_interpreter, kitchen
+from test_golden import stable
+
+import guided_lfd
+from guided_lfd import ExcuseOptions, GuidedLfdError, find_excuses, plan, read_task, validate
+
+
+def test_the_readme_example_runs():
+    readme = (ROOT / "README.md").read_text()
+    section = readme.split("## Using guided-lfd from Python", 1)[1]
+    code = re.search(r"```python\n(.*?)```", section, re.S).group(1)
+    out = fresh_interpreter(code)
+    assert out.splitlines()[:2] == ["excuse-found", "+(clear pinkdrawer)"]
+    assert out.splitlines()[-1] == "True"
+
+
+def test_import_guided_lfd_loads_nothing_heavy():
+    out = fresh_interpreter("import sys, guided_lfd; print(sorted(m for m in sys.modules if m.startswith(('guided_lfd', 'tarski', 'pandas'))))")
+    assert out.strip() == "['guided_lfd']"
+
+
+def test_every_public_name_resolves():
+    for name in guided_lfd.__all__:
+        assert getattr(guided_lfd, name) is not None
+    with pytest.raises(AttributeError):
+        guided_lfd.no_such_name  # noqa: B018
+
+
+def test_read_task_takes_text_as_well_as_paths():
+    domain_path, problem_path = kitchen(1)
+    from_files = read_task(domain_path, problem_path)
+    from_text = read_task(open(domain_path).read(), open(problem_path).read())
+    assert from_text[0].actions == from_files[0].actions and from_text[1].init == from_files[1].init
+    assert (from_text[0].path, from_text[1].path) == ("<domain>", "<problem>")
+
+
+def test_errors_in_text_name_the_text_and_the_place():
+    with pytest.raises(GuidedLfdError) as info:
+        read_task("(define (domain d)\n  (:predicates (p))\n  (:action a :parameters () :precondition (q) :effect (p)))",
+                  "(define (problem x) (:domain d) (:init) (:goal (p)))")
+    assert str(info.value).startswith("<domain>:3:") and info.value.exit_code == 32
+
+
+def test_the_report_is_the_command_lines_document(runner, app):
+    domain, problem = kitchen(2)
+    cli = json.loads(runner.invoke(app, ["excuse", domain, problem, "--json", "--quiet"]).stdout)
+    report = find_excuses(*read_task(domain, problem))
+    assert stable(json.loads(report.to_json())) == stable(cli)
+    assert report.to_text() == runner.invoke(app, ["excuse", domain, problem, "--quiet"]).stdout
+
+
+def test_plan_report_is_the_command_lines_document(runner, app):
+    domain, problem = str(DATA / "costs/domain.pddl"), str(DATA / "costs/problem.pddl")
+    cli = json.loads(runner.invoke(app, ["plan", domain, problem, "--json"]).stdout)
+    mine = json.loads(plan(*read_task(domain, problem)).to_json())
+    cli.pop("time_s"), mine.pop("time_s")
+    assert mine == cli and mine["cost"] == 15
+
+
+def test_validate_takes_steps_text_or_a_file(tmp_path):
+    domain, problem = read_task(str(DATA / "costs/domain.pddl"), str(DATA / "costs/problem.pddl"))
+    steps = ["(drive home mid1)", "(drive mid1 mid2)", "(drive mid2 shop)"]
+    assert validate(domain, problem, steps).cost == 15
+    assert validate(domain, problem, "\n".join(steps)).cost == 15  # IPC plan text, one step per line
+    path = tmp_path / "p.plan"
+    path.write_text("\n".join(steps) + "\n")
+    assert validate(domain, problem, str(path)).cost == 15
+    assert not validate(domain, problem, ["(drive home shop)", "(drive shop home)"]).valid
+
+
+def test_semantics_may_be_given_as_a_word():
+    assert ExcuseOptions(semantics="literal").semantics.value == "literal"
