@@ -10,11 +10,12 @@ import typer
 
 from cli.common import JsonOption, OutputOption, QuietOption, check_files, output_format, command, ui
 from guided_lfd.demonstration.learn import ground_actions, load_segments
-from guided_lfd.errors import EXIT_BAD_OPTION, EXIT_NO_EXCUSE, EXIT_TIME_LIMIT, InputFileError, Location, OptionError
+from guided_lfd.errors import EXIT_BAD_OPTION, InputFileError, Location, OptionError
 from guided_lfd.evaluate import DEFAULT_EXPLORATION_BOUND, Demonstration, excuse_problem, report_rows
 from guided_lfd.evaluate import evaluate as run_evaluation
 from guided_lfd.excuse.check import read_excuse
 from guided_lfd.excuse.engine import find_excuses
+from guided_lfd.excuse.status import ExcuseStatus
 from guided_lfd.io import json_document, write_text
 from guided_lfd.pddl.reader import parse_domain, parse_problem_for, parse_task
 
@@ -63,12 +64,12 @@ def evaluate(
     else:
         report = find_excuses(robot_domain, task)
         if report.excuse is None:
-            why = {"already-solvable": "the robot can already solve the task, so no excuse is needed",
-                   "no-excuse": "no excuse exists (a new skill must be demonstrated)",
-                   "timeout": "the excuse search ran out of time"}.get(report.status, report.status)
-            codes = {"no-excuse": EXIT_NO_EXCUSE, "timeout": EXIT_TIME_LIMIT}
+            why = {ExcuseStatus.ALREADY_SOLVABLE: "the robot can already solve the task, so no excuse is needed",
+                   ExcuseStatus.NONE: "no excuse exists (a new skill must be demonstrated)",
+                   ExcuseStatus.TIMEOUT: "the excuse search ran out of time"}.get(report.status, report.status.value)
             ui.error(f"{problem}: nothing to evaluate: {why} (see `guided-lfd excuse`; or give --excuse)")
-            raise typer.Exit(codes.get(report.status, EXIT_BAD_OPTION))
+            # The excuse command's code for the outcome; an already solvable task has nothing to evaluate.
+            raise typer.Exit(report.status.exit_code or EXIT_BAD_OPTION)
         changes, source = report.excuse.changes, "computed (guided-lfd excuse defaults)"
     other = read_excuse(nonminimal, robot_domain, task) if nonminimal else None
     for path, given in ((excuse, changes), (nonminimal, other)):

@@ -21,15 +21,6 @@ from guided_lfd.io import write_text
 from guided_lfd.pddl.reader import parse_domain, parse_task
 from guided_lfd.pddl.writer import problem_to_pddl
 
-EXIT_BY_STATUS = {
-    "excuse-found": errors.EXIT_OK,
-    "already-solvable": errors.EXIT_OK,
-    "no-excuse": errors.EXIT_NO_EXCUSE,
-    "no-excuse-within-size": errors.EXIT_NO_EXCUSE_WITHIN_LIMIT,
-    "timeout": errors.EXIT_TIME_LIMIT,
-}
-
-
 @command
 def excuse(
     domain: Annotated[str, typer.Argument(help="The robot's domain (its skills).")],
@@ -94,7 +85,7 @@ def excuse(
     spellings = report.spellings  # predicates as the domain writes them
     as_json = output_format(output, json_out) == "json"
     text = report.to_json() if as_json else report.to_text()
-    code = EXIT_BY_STATUS[report.status]
+    code = report.status.exit_code
     # Every outcome is a document (its status says what happened: a timed-out
     # run says how far it got); a non-zero one also gets its reason on stderr.
     emit(output, text, excuse_summary(report, spellings) if code else None, structured=as_json)

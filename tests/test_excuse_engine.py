@@ -4,6 +4,7 @@ registered strategy against brute force on random small STRIPS tasks."""
 from __future__ import annotations
 
 import itertools
+import json
 from collections import deque
 
 import pytest
@@ -322,3 +323,21 @@ def test_hill_climbing_answers_household_checks_and_not_small_ones(tmp_path):
     assert report.excuse.plan_optimal and len(report.excuse.plan) == 8
     small = find_excuses(*parse_task(*kitchen(1)), ExcuseOptions())
     assert small.statistics["oracle_hill_climbs"] == 0
+
+
+def test_one_status_type_from_the_strategies_to_the_exit_code(runner, app):
+    """Every strategy ends in an ExcuseStatus; the report keeps it; the command line exits with its code."""
+    from guided_lfd.excuse.status import ExcuseStatus
+    from guided_lfd.excuse.strategies import STRATEGIES
+
+    assert {s.exit_code for s in ExcuseStatus} == {0, 11, 13, 20}
+    domain, problem = kitchen(2)
+    dom, prob = parse_task(domain, problem)
+    for name in STRATEGIES:
+        for max_size, expected in ((None, ExcuseStatus.FOUND), (0, ExcuseStatus.NONE_WITHIN_SIZE)):
+            report = find_excuses(dom, prob, ExcuseOptions(strategy=name, max_size=max_size))
+            assert report.status is expected, name
+            args = ["excuse", domain, problem, "--strategy", name, "--quiet", "--json"]
+            result = runner.invoke(app, args + ([] if max_size is None else ["--max-size", "0"]))
+            assert result.exit_code == expected.exit_code
+            assert json.loads(result.stdout)["status"] == expected.value

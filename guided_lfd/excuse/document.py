@@ -9,6 +9,7 @@ from __future__ import annotations
 from typing import Any
 
 from guided_lfd.excuse.engine import Excuse, ExcuseReport, describe_change
+from guided_lfd.excuse.status import ExcuseStatus
 from guided_lfd.pddl.model import Problem
 
 __all__ = ["excuse_document", "excuse_summary", "excuse_text"]
@@ -16,7 +17,7 @@ __all__ = ["excuse_document", "excuse_summary", "excuse_text"]
 
 def excuse_summary(report: ExcuseReport, spellings: dict[str, str]) -> str:
     """Why no excuse is given, in one line (empty when one is)."""
-    if report.status == "no-excuse":
+    if report.status is ExcuseStatus.NONE:
         fixed = report.statistics.get("fixed_predicates") or []
         while_fixed = f" while {', '.join(fixed)} stay fixed" if fixed else ""
         if report.unachievable_goals:
@@ -25,9 +26,9 @@ def excuse_summary(report: ExcuseReport, spellings: dict[str, str]) -> str:
                     f"state short of satisfying the goal helps; a new skill must be demonstrated")
         return (f"no excuse exists: no change of the initial state lets the robot reach the goal{while_fixed}; "
                 "a new skill must be demonstrated")
-    if report.status == "no-excuse-within-size":
+    if report.status is ExcuseStatus.NONE_WITHIN_SIZE:
         return "no excuse within --max-size; a larger change or a new skill is needed"
-    if report.status == "timeout":
+    if report.status is ExcuseStatus.TIMEOUT:
         return "time limit reached before a minimal excuse was found"
     return ""
 
@@ -58,7 +59,7 @@ def excuse_document(report: ExcuseReport, domain: str, problem: str, spellings: 
         "problem": problem,
         "semantics": report.semantics.value,
         "strategy": report.strategy,
-        "status": report.status,
+        "status": report.status.value,
         "message": excuse_summary(report, spellings) or None,
         "excuse": _excuse_dict(first, spellings) if first else None,
         "alternatives": [_excuse_dict(e, spellings) for e in report.excuses[1:]],
@@ -79,7 +80,7 @@ def excuse_text(report: ExcuseReport, prob: Problem, spellings: dict[str, str]) 
     """The report as ``guided-lfd excuse`` prints it for people."""
     name = spellings.get(prob.name, prob.name)
     lines: list[str] = []
-    if report.status == "already-solvable":
+    if report.status is ExcuseStatus.ALREADY_SOLVABLE:
         plan = report.robot_plan or []
         lines.append(f"{name}: already solvable, no excuse needed (empty excuse).")
         lines.append(f"Robot plan ({len(plan)} steps{_cost_words(report.robot_plan_cost, prob)}, validated):")

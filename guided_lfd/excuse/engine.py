@@ -23,6 +23,7 @@ from guided_lfd.excuse.reach import ReachabilityOracle
 from guided_lfd.excuse.space import (
     ChangeSpace, MutexGroup, Semantics, build_space, check_cost_predicates, check_fixed,
 )
+from guided_lfd.excuse.status import ExcuseStatus
 from guided_lfd.excuse.strategies import DEFAULT_STRATEGY, STRATEGIES, Progress, SearchLimits
 from guided_lfd.grounding import GroundAction, GroundTask, bits, ground
 from guided_lfd.optimal import certified_optimal, shorten_plan
@@ -88,7 +89,7 @@ def describe_change(change: Change, spellings: dict[str, str]) -> str:
 class ExcuseReport:
     """Result of :func:`find_excuses`."""
 
-    status: str
+    status: ExcuseStatus
     excuses: list[Excuse]
     semantics: Semantics
     strategy: str
@@ -280,7 +281,7 @@ class _Run:
             self.progress(phase, 0, 0)
         check_deadline(self.deadline, phase)
 
-    def report(self, status: str, robot_plan: list[str] | None = None, **more: Any) -> ExcuseReport:
+    def report(self, status: ExcuseStatus, robot_plan: list[str] | None = None, **more: Any) -> ExcuseReport:
         """The report of the run so far."""
         self.stats.update(more)
         self.stats["time_s"] = round(time.monotonic() - self.start, 4)
@@ -297,8 +298,8 @@ class _Run:
         self.stats["phase"] = self.phase
         if self.excuses:  # --all ran out of time: what was found is minimal
             self.stats["incomplete"] = True
-            return self.report("excuse-found")
-        return self.report("timeout")
+            return self.report(ExcuseStatus.FOUND)
+        return self.report(ExcuseStatus.TIMEOUT)
 
     def execute(self) -> ExcuseReport:
         """Ground, build the change space, check solvability, search, and plan from each excuse."""
@@ -336,14 +337,14 @@ class _Run:
             try:
                 plan0 = oracle.solve(task.init)
             except SearchTimeout:
-                return self.report("timeout", candidates=0, planner_calls=1, phase=self.phase)
+                return self.report(ExcuseStatus.TIMEOUT, candidates=0, planner_calls=1, phase=self.phase)
         if plan0 is not None:
             self._enter("robot plan")
             plan, _ = _robot_plan(task, space, oracle, task.init, plan0, options.optimal_plans, self.deadline,
                                   robot_plan_deadline(self.start))
             _verify(self.domain, self.problem, [], plan, space)
             self.robot_plan_cost = sum(a.cost for a in plan)
-            return self.report("already-solvable", [a.name for a in plan], candidates=0, planner_calls=1)
+            return self.report(ExcuseStatus.ALREADY_SOLVABLE, [a.name for a in plan], candidates=0, planner_calls=1)
 
         self._enter("searching")
         limits = SearchLimits(all_minimal=options.all_minimal, max_size=options.max_size, deadline=self.deadline)
@@ -364,16 +365,11 @@ class _Run:
             self.excuses.append(Excuse(change_list, space.cost(changes),
                                        excuse_state(self.problem.init, change_list), [a.name for a in plan], optimal,
                                        sum(a.cost for a in plan)))
-        status = {
-            "found": "excuse-found",
-            "none": "no-excuse",
-            "size-limit": "no-excuse-within-size",
-            "timeout": "timeout",
-        }[outcome.status]
-        if status == "timeout":
+        status = outcome.status
+        if status is ExcuseStatus.TIMEOUT:
             self.stats["phase"] = "searching"
             if self.excuses:
-                status = "excuse-found"  # --all ran out of time: what was found is minimal
+                status = ExcuseStatus.FOUND  # --all ran out of time: what was found is minimal
                 self.stats["incomplete"] = True
         return self.report(status)
 

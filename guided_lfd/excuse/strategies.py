@@ -19,6 +19,7 @@ from guided_lfd.errors import SearchTimeout
 from guided_lfd.excuse.lmcut import INF, Bound, RelaxedExcuseTask
 from guided_lfd.excuse.reach import ReachabilityOracle
 from guided_lfd.excuse.space import ChangeSpace
+from guided_lfd.excuse.status import ExcuseStatus
 from guided_lfd.grounding import GroundAction, bits
 
 #: Progress callback: (message, candidates tried so far, current bound).
@@ -39,13 +40,13 @@ class SearchLimits:
 class SearchOutcome:
     """Change sets found (all of minimum weight) and how the search ended.
 
-    ``status`` is ``found``, ``none`` (proved: no excuse exists), ``size-limit``
-    (none within ``max_size``) or ``timeout``.
+    ``status`` is ``FOUND``, ``NONE`` (proved: no excuse exists),
+    ``NONE_WITHIN_SIZE`` (none within ``max_size``) or ``TIMEOUT``.
     """
 
     solutions: list[int]
     plans: dict[int, list[GroundAction]]
-    status: str
+    status: ExcuseStatus
     candidates: int = 0
     planner_calls: int = 0
     expanded: int = 0
@@ -210,9 +211,10 @@ class LandmarkSearch:
                     inherited[child] = kept
                     heapq.heappush(heap, (max(f, cg + h_child), -cg, counter, child))
         except SearchTimeout:
-            return SearchOutcome(solutions, plans, "timeout", candidates, oracle.stats.calls, expanded,
+            return SearchOutcome(solutions, plans, ExcuseStatus.TIMEOUT, candidates, oracle.stats.calls, expanded,
                                  {"evaluations": evaluations, "oracle_expanded": oracle.stats.expanded})
-        status = "found" if solutions else ("size-limit" if size_pruned else "none")
+        status = (ExcuseStatus.FOUND if solutions
+                  else ExcuseStatus.NONE_WITHIN_SIZE if size_pruned else ExcuseStatus.NONE)
         return SearchOutcome(sorted(solutions), plans, status, candidates, oracle.stats.calls, expanded,
                              {"evaluations": evaluations, "oracle_expanded": oracle.stats.expanded,
                               "oracle_memo_hits": oracle.stats.memo_hits,
@@ -314,10 +316,11 @@ class BaselineSearch:
                         if not limits.all_minimal or len(solutions) >= limits.max_solutions:
                             break
         except SearchTimeout:
-            return SearchOutcome(solutions, plans, "timeout", candidates, calls, candidates)
+            return SearchOutcome(solutions, plans, ExcuseStatus.TIMEOUT, candidates, calls, candidates)
         # Sets beyond the size bound were never tried: no excuse found is then not a proof of none.
         size_pruned = limits.max_size is not None and limits.max_size < len(atoms)
-        status = "found" if solutions else ("size-limit" if size_pruned else "none")
+        status = (ExcuseStatus.FOUND if solutions
+                  else ExcuseStatus.NONE_WITHIN_SIZE if size_pruned else ExcuseStatus.NONE)
         return SearchOutcome(sorted(solutions), plans, status, candidates, calls, candidates)
 
     @staticmethod
