@@ -302,6 +302,13 @@ def not_run(task: BenchTask, strategy: str, semantics: str, reason: str) -> dict
                       "semantics": semantics, "strategy": strategy, "status": "not-run", "excuse": reason})
 
 
+def crashed(task: BenchTask, strategy: str, semantics: str, exc: BaseException) -> dict[str, Any]:
+    """The row of a run whose worker died under it (Dask's KilledWorker, a crash): counted as crashed."""
+    reason = f"worker died: {type(exc).__name__}: {exc}"
+    return _complete({"id": task.id, "domain": task.domain, "task": task.task, "removed_action": task.removed_action,
+                      "semantics": semantics, "strategy": strategy, "status": "crashed", "excuse": reason[:300]})
+
+
 def run_chain(chain: list[Run], time_limit: float, memory_limit_mb: int | None = None,
               previous: dict[tuple[str, str, str], dict[str, Any]] | None = None,
               on_row: Callable[[dict[str, Any]], None] | None = None, stop: bool = False) -> list[dict[str, Any]]:
@@ -344,7 +351,9 @@ def run_suite(
 
     ``executor`` is ``local`` (a thread per job, each starting ``guided-lfd``
     processes) or ``dask`` (each chain a task on the cluster, whose workers
-    need guided-lfd installed).  Each run's address space is capped at
+    need guided-lfd installed; ``scheduler`` is its address or a
+    ``distributed.Client``).  A chain whose Dask worker dies gives
+    ``crashed`` rows, and the run goes on.  Each run's address space is capped at
     ``memory_limit_mb`` (a run that needs more ends as ``memout``).
     ``previous`` rows (an interrupted run's) are kept and not run again.
     """
@@ -377,18 +386,28 @@ def _run_dask(work, time_limit, scheduler, on_row, memory_limit_mb, done, stoppi
         from dask.distributed import Client, as_completed
     except ImportError:
         raise ImportError("the dask executor needs the 'dist' extra: pip install 'guided-lfd[dist]'") from None
-    client = Client(scheduler) if scheduler else Client(processes=True)
+    client = scheduler if isinstance(scheduler, Client) else Client(scheduler) if scheduler else Client(processes=True)
     try:
-        futures = [client.submit(run_chain, chain, time_limit, memory_limit_mb, done, None,
-                                 chain[0][1] in stopping, pure=False) for chain in work]
+        # No retries: a run is timed, and a rerun on another worker would not be the same run.
+        futures, chain_of = [], {}
+        for chain in work:
+            fut = client.submit(run_chain, chain, time_limit, memory_limit_mb, done, None,
+                                chain[0][1] in stopping, pure=False, retries=0)
+            futures.append(fut)
+            chain_of[fut.key] = chain
         rows = []
         for fut in as_completed(futures):
-            for row in fut.result():
+            try:
+                chain_rows = fut.result()
+            except Exception as exc:  # noqa: BLE001 - KilledWorker, a worker's crash: rows, not a traceback
+                chain_rows = [crashed(task, strategy, sem, exc) for task, strategy, sem in chain_of[fut.key]]
+            for row in chain_rows:
                 rows.append(row)
                 if on_row and (row["id"], row["strategy"], row["semantics"]) not in done:
                     on_row(row)
     finally:
-        client.close()
+        if not isinstance(scheduler, Client):
+            client.close()
     return sorted(rows, key=lambda r: (r["id"], r["semantics"], r["strategy"]))
 
 
