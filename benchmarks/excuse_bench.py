@@ -81,7 +81,13 @@ def main(argv: list[str] | None = None) -> int:
                             args.jobs, args.executor, args.scheduler, progress, previous=log.rows,
                             memory_limit_mb=args.memory_limit or None,
                             stop_after_unfinished=[s for s in args.stop_after_unfinished.split(",") if s])
-        rows = sorted(benchmark.read_results(log.path), key=lambda r: (r["id"], r["semantics"], r["strategy"]))
+        rows = benchmark.read_results(log.path)
+        if args.only and results_csv.exists():
+            # A subset run updates its rows in the results; the other runs' rows stay.
+            subset = len(rows)
+            rows = benchmark.merge_rows(benchmark.read_results(results_csv), rows)
+            print(f"{results_csv}: {subset} row(s) replaced or added, {len(rows)} in all", file=sys.stderr)
+        rows = sorted(rows, key=lambda r: (r["id"], r["semantics"], r["strategy"]))
         benchmark.write_results(rows, results_csv)
         log.path.unlink()
     if args.command in ("report", "all"):

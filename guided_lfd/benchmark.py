@@ -411,6 +411,13 @@ def _run_dask(work, time_limit, scheduler, on_row, memory_limit_mb, done, stoppi
     return sorted(rows, key=lambda r: (r["id"], r["semantics"], r["strategy"]))
 
 
+def merge_rows(kept: list[dict[str, Any]], new: list[dict[str, Any]]) -> list[dict[str, Any]]:
+    """``kept`` with each run of ``new`` (same id, strategy, semantics) replaced or added: a subset run's update."""
+    key = lambda r: (r["id"], r["strategy"], r["semantics"])  # noqa: E731
+    fresh = {key(r): r for r in new}
+    return [r for r in kept if key(r) not in fresh] + list(fresh.values())
+
+
 def write_results(rows: list[dict[str, Any]], path: Path) -> None:
     """Results as CSV (one row per task, strategy and semantics)."""
     import io

@@ -142,3 +142,26 @@ def test_run_suite_records_each_run_in_its_own_process(jobs):
                                memory_limit_mb=8192)
     assert [(r["strategy"], r["status"], r["size"], r["excuse"]) for r in rows] == [
         ("baseline", "excuse-found", 1, "+(open pinkdrawer)"), ("landmark", "excuse-found", 1, "+(open pinkdrawer)")]
+
+
+def test_a_subset_run_updates_its_rows_and_keeps_the_others(tmp_path):
+    """`excuse_bench.py run --only ...` must not replace the full results with its few rows."""
+    import csv
+    import subprocess
+
+    results = tmp_path / "results"
+    results.mkdir()
+    full = [{**{k: "" for k in RESULT_FIELDS}, "id": f"t{i}", "strategy": "landmark", "semantics": "consistent",
+             "status": "excuse-found"} for i in range(5)]
+    full.append({**full[0], "id": "kitchen-1-problem", "status": "timeout"})
+    benchmark.write_results(full, results / "results.csv")
+    proc = subprocess.run([sys.executable, str(ROOT / "benchmarks/excuse_bench.py"), "run", "--only",
+                           "kitchen-1-problem", "--strategies", "landmark", "--semantics", "consistent",
+                           "--results", str(results), "--time-limit", "30"], capture_output=True, text=True,
+                          timeout=120, cwd=ROOT)
+    assert proc.returncode == 0, proc.stderr
+    with open(results / "results.csv") as fh:
+        rows = {r["id"]: r for r in csv.DictReader(fh)}
+    assert set(rows) == {"t0", "t1", "t2", "t3", "t4", "kitchen-1-problem"}
+    assert rows["kitchen-1-problem"]["status"] == "excuse-found"  # rerun: replaced
+    assert rows["t3"]["status"] == "excuse-found"  # not rerun: kept
