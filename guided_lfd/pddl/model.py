@@ -29,6 +29,22 @@ PDDL_RESERVED = frozenset({
     "maximize", "sometime", "always", "within", "hold-during", "hold-after"})
 
 
+#: How an ``either`` type is written in the model: ``(either person aircraft)``.
+EITHER_PREFIX = "(either "
+
+
+def either_type(members: list[str] | tuple[str, ...]) -> str:
+    """The model's name of the type ``(either m1 m2 ...)`` (members lower-case, in written order)."""
+    return EITHER_PREFIX + " ".join(m.lower() for m in members) + ")"
+
+
+def type_members(t: str) -> tuple[str, ...]:
+    """The member types of an ``either`` type, or ``(t,)`` for a plain type."""
+    if t.startswith(EITHER_PREFIX) and t.endswith(")"):
+        return tuple(t[len(EITHER_PREFIX):-1].split())
+    return (t,)
+
+
 def pddl_name_problem(name: str) -> str | None:
     """Why ``name`` cannot be written as a PDDL name (domain, predicate, type), else None."""
     if not PDDL_NAME.fullmatch(name):
@@ -133,6 +149,12 @@ class Domain:
     spellings: dict[str, str] = field(default_factory=dict)
     #: The parsed file's source map (positions for error messages), if read from a file.
     source: Any = field(default=None, repr=False, compare=False)
+    #: Names the actions use as objects that are neither parameters nor declared constants
+    #: (older IPC domains leave them to the problem's objects), in order of first use.
+    #: They are not in ``constants``: their type is the problem's (``object`` until then).
+    implicit_constants: tuple[str, ...] = ()
+    #: One-line diagnostics of reading the file (``file:line:col: warning: ...``), for the user.
+    warnings: tuple[str, ...] = field(default=(), compare=False)
 
     def locate(self, name: str, *sections: str) -> Location:
         """Where ``name`` is written in the domain file (searched in ``sections`` first)."""
@@ -148,7 +170,11 @@ class Domain:
         raise KeyError(name)
 
     def subtypes(self) -> dict[str, set[str]]:
-        """Map each type to itself and all its (transitive) subtypes."""
+        """Map each type to itself and all its (transitive) subtypes.
+
+        An ``either`` type of a predicate parameter maps to the union of its
+        members' subtypes, so that grounding and type checks treat it as any other.
+        """
         out: dict[str, set[str]] = {t: {t} for t in self.types}
         out.setdefault("object", {"object"})
         for t in self.types:
@@ -158,7 +184,14 @@ class Domain:
                 seen.add(parent)
                 out.setdefault(parent, {parent}).add(t)
                 parent = self.types.get(parent)
+        for t in self.either_types():
+            out[t] = set().union(*(out.get(m, {m}) for m in type_members(t)))
         return out
+
+    def either_types(self) -> list[str]:
+        """The ``either`` types the predicates use, in order of first use."""
+        found = [t for pred in self.predicates.values() for _, t in pred.params if t.startswith(EITHER_PREFIX)]
+        return list(dict.fromkeys(found))
 
     def fluent_predicates(self) -> set[str]:
         """Predicates some action adds or deletes."""
@@ -192,7 +225,16 @@ def type_ancestors(types: dict[str, str | None], t: str) -> list[str]:
 
 
 def common_supertype(types: dict[str, str | None], a: str, b: str) -> str:
-    """The closest type both ``a`` and ``b`` belong to (``object`` at worst)."""
+    """The closest type both ``a`` and ``b`` belong to (``object`` at worst).
+
+    An ``either`` type covers a type below one of its members (and another
+    ``either`` whose members it covers).
+    """
+    for wide, narrow in ((a, b), (b, a)):
+        if wide.startswith(EITHER_PREFIX):
+            members = type_members(wide)
+            if all(any(m in type_ancestors(types, n) for m in members) for n in type_members(narrow)):
+                return wide
     up = type_ancestors(types, b)
     return next((t for t in type_ancestors(types, a) if t in up), "object")
 
