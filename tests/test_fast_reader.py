@@ -152,6 +152,18 @@ CASES = {
     "either of an unknown type": (False, "(define (domain d) (:types a) (:predicates (p ?x - (either a zz))) "
         "(:action m :parameters (?x - a) :precondition (p ?x) :effect (not (p ?x))))",
         "(define (problem q) (:domain d) (:objects o - a) (:init (p o)) (:goal (not (p o))))"),
+    # types and objects are separate namespaces (IPC tidybot: type cart, object cart)
+    "a type named like an object": (True, "(define (domain d) (:types cart) (:predicates (p ?x - cart)) (:action m "
+        ":parameters (?x - cart) :precondition (p ?x) :effect (not (p ?x))))", "(define (problem q) (:domain d) "
+        "(:objects cart - cart) (:init (p cart)) (:goal (not (p cart))))"),
+    "a type named like a constant, in either": (True, "(define (domain d) (:types k t) (:constants k - k) "
+        "(:predicates (p ?x - (either k t))) (:action m :parameters (?x - t) :precondition (p k) :effect (p ?x)))",
+        "(define (problem q) (:domain d) (:objects o - t) (:init (p k)) (:goal (p o)))"),
+    "a type named like an object and a predicate": (False, "(define (domain d) (:types t) (:predicates (t ?x)) "
+        "(:action a :parameters (?x) :precondition (t ?x) :effect (not (t ?x))))", "(define (problem q) "
+        "(:domain d) (:objects t - t) (:init (t t)) (:goal (not (t t))))"),
+    "an object declared twice": (False, f"(define (domain d) (:predicates (p ?x)) {ACT})",
+        "(define (problem q) (:domain d) (:objects o o) (:init (p o)) (:goal (not (p o))))"),
     # left to tarski (its model, or its error)
     "contradicting effects": (True, "(define (domain d) (:predicates (p ?x)) (:action a :parameters (?x) "
         ":precondition (p ?x) :effect (and (p ?x) (not (p ?x)))))", P),

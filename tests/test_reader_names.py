@@ -137,3 +137,49 @@ def test_excuse_changes_and_merges_type_check_against_either_types(tmp_path):
     assert common_supertype(domain.types, either, "city") == "object"
     merged = merge_domains([domain, parse_domain(EITHER[0])]).domain
     assert merged.predicates["at"] == domain.predicates["at"]
+
+
+# -- a type and an object of the same name ------------------------------------------------------------------------
+
+def test_a_type_and_an_object_or_constant_may_share_a_name(runner, app, tmp_path):
+    domain, problem = parse_task(*SHARED)
+    assert {"cart", "gripper"} <= set(domain.types)
+    assert domain.constants == {"gripper": "gripper"} and problem.objects["cart"] == "cart"
+    assert domain.predicates["holding"].params == (("?x0", "gripper"), ("?x1", "cart"))
+    assert domain.predicates["at"].params[0][1] == "(either cart item)"
+    _same_model((domain, problem), _round_trip(tmp_path, domain, problem))
+    result = runner.invoke(app, ["plan", *SHARED])
+    assert result.exit_code == 0 and "(push cart kitchen hall)" in result.stdout
+
+
+def test_a_type_named_like_an_object_reads_in_messages_as_written(tmp_path):
+    """Tarski is given the type under another name: none of it shows in an error."""
+    domain = "(define (domain d) (:types cart place) (:predicates (at ?c - cart ?p - place)) (:action m " \
+             ":parameters (?c - cart ?p - place) :precondition (at ?c ?p) :effect (not (at ?c ?p))))"
+    paths = _write(tmp_path, domain, "(define (problem q) (:domain d) (:objects cart - cart hall - place)\n"
+                                     " (:init (at hall cart)) (:goal (not (at cart hall))))")
+    assert _error(*paths) == "p.pddl:2:13: semantic error: 'hall' is a place, expected a cart"
+
+
+@pytest.mark.parametrize("domain,problem,where", [
+    ("(:types t) (:predicates (p ?x))", "(:objects o - t o - t)", "p.pddl:1:49"),
+    ("(:types t t) (:predicates (p ?x))", "(:objects o)", "d.pddl:1:30"),
+    ("(:types t) (:predicates (p ?x) (p ?y))", "(:objects o)", None),
+    ("(:types t) (:constants o - t) (:predicates (p ?x))", "(:objects o - t)", "p.pddl:1:60"),
+    ("(:types t) (:predicates (t ?x) (p ?x))", "(:objects t - t)", "d.pddl:1:45"),
+], ids=["two objects", "two types", "two predicates", "an object and a constant", "a type and a predicate"])
+def test_a_name_declared_twice_in_one_namespace_is_still_refused(tmp_path, domain, problem, where):
+    act = "(:action a :parameters (?x) :precondition (p ?x) :effect (not (p ?x)))"
+    paths = _write(tmp_path, f"(define (domain d) {domain} {act})",
+                   f"(define (problem q) (:domain d) {problem} (:init (p o)) (:goal (not (p o))))")
+    message = _error(*paths)
+    assert "declared twice" in message
+    if where is not None:
+        assert message.startswith(where + ": semantic error:")
+
+
+def test_an_action_declared_twice_is_still_refused(tmp_path):
+    act = "(:action a :parameters (?x) :precondition (p ?x) :effect (not (p ?x)))"
+    paths = _write(tmp_path, f"(define (domain d) (:predicates (p ?x)) {act}\n {act})",
+                   "(define (problem q) (:domain d) (:objects o) (:init (p o)) (:goal (not (p o))))")
+    assert _error(*paths).startswith("d.pddl:2:11: semantic error: 'a' is declared twice")
