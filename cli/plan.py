@@ -43,6 +43,7 @@ def plan(
     deadline = deadline_after(time_limit, started_at())
     with watchdog(deadline, "plan"):
         dom, prob = parse_task(domain, problem)
+        ui.reading_warnings(dom)
         task, result = plan_task(dom, prob, search, remaining(deadline))
     if result.plan is None:
         reason = f"unsolvable: exhaustive {search} search found no plan ({result.time_s:.2f} s)"

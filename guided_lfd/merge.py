@@ -234,6 +234,9 @@ def merge_domains(domains: list[Domain], name: str | None = None) -> MergeResult
         actions=actions,
         path="<merged>",
         spellings=spellings,
+        # An object one domain's actions use undeclared stays so, unless another declares it.
+        implicit_constants=tuple(dict.fromkeys(
+            c for d in domains for c in d.implicit_constants if c not in constants)),
     )
     result.domain = merged
     return result

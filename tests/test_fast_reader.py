@@ -164,6 +164,22 @@ CASES = {
         "(:domain d) (:objects t - t) (:init (t t)) (:goal (not (t t))))"),
     "an object declared twice": (False, f"(define (domain d) (:predicates (p ?x)) {ACT})",
         "(define (problem q) (:domain d) (:objects o o) (:init (p o)) (:goal (not (p o))))"),
+    # an object the actions use, declared by the problem only (older IPC tyreworld's wrench)
+    "an implicit constant": (True, "(define (domain d) (:types tool) (:predicates (have ?t - tool) (p ?x)) "
+        f"(:action f :parameters (?x) :precondition (p ?x) :effect (have wrench)))",
+        "(define (problem q) (:domain d) (:objects o - object wrench - tool) (:init (p o)) (:goal (have wrench)))"),
+    "an implicit constant, also a type": (True, "(define (domain d) (:types tool) (:constants k - tool) "
+        "(:predicates (have ?t - tool)) (:action f :parameters () :precondition (have k) :effect (have tool)))",
+        "(define (problem q) (:domain d) (:objects tool - tool) (:init (have k)) (:goal (have tool)))"),
+    "an implicit constant the problem does not declare": (False, "(define (domain d) (:predicates (have ?t) (p ?x)) "
+        "(:action f :parameters (?x) :precondition (p ?x) :effect (have wrench)))", P),
+    "an implicit constant of the wrong type": (False, "(define (domain d) (:types tool wheel) (:predicates "
+        "(have ?t - tool) (p ?x)) (:action f :parameters (?x) :precondition (p ?x) :effect (have wrench)))",
+        "(define (problem q) (:domain d) (:objects wrench - wheel o) (:init (p o)) (:goal (have wrench)))"),
+    "an implicit constant, a syntax error after it": (False, "(define (domain d) (:predicates (have ?t) (p ?x)) "
+        "(:action f :parameters (?x) :precondition (p ?x) :effect (have wrench)) (:action g :parameters (?x) "
+        ":precondition ((p ?x)) :effect (have ?x)))", "(define (problem q) (:domain d) (:objects wrench o) "
+        "(:init (p o)) (:goal (have wrench)))"),
     # left to tarski (its model, or its error)
     "contradicting effects": (True, "(define (domain d) (:predicates (p ?x)) (:action a :parameters (?x) "
         ":precondition (p ?x) :effect (and (p ?x) (not (p ?x)))))", P),

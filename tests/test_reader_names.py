@@ -183,3 +183,62 @@ def test_an_action_declared_twice_is_still_refused(tmp_path):
     paths = _write(tmp_path, f"(define (domain d) (:predicates (p ?x)) {act}\n {act})",
                    "(define (problem q) (:domain d) (:objects o) (:init (p o)) (:goal (not (p o))))")
     assert _error(*paths).startswith("d.pddl:2:11: semantic error: 'a' is declared twice")
+
+
+# -- implicit constants -------------------------------------------------------------------------------------------
+
+def test_an_implicit_constant_reads_with_the_domain_alone():
+    domain = parse_domain(IMPLICIT[0])
+    assert domain.implicit_constants == ("wrench",) and domain.constants == {}
+    assert [w.split("/grammar/")[-1] for w in domain.warnings] == [WRENCH_WARNING]
+    assert Atom("have", ("wrench",)) in domain.action("fetch").add
+
+
+def test_an_implicit_constant_takes_the_problems_type():
+    domain, problem = parse_task(*IMPLICIT)
+    assert domain.implicit_constants == ("wrench",) and domain.constants == {}
+    assert problem.objects == {"w1": "wheel", "w2": "wheel", "wrench": "tool"}
+    task = ground(domain, problem)
+    assert "(fetch)" in {a.name for a in task.actions}
+
+
+def test_an_implicit_constant_the_problem_does_not_declare_is_refused():
+    with pytest.raises(errors.PddlSemanticError) as info:
+        parse_task(IMPLICIT[0], str(GRAMMAR / "implicit-constant/undeclared.pddl"))
+    assert str(info.value) == (
+        f"{IMPLICIT[0]}:10:28: semantic error: unknown object 'wrench' in action 'fetch' (expected a domain "
+        "constant, or an object declared in the problem's :objects)")
+    assert info.value.exit_code == 32
+
+
+def test_an_implicit_constant_of_a_type_its_uses_do_not_take_is_refused(tmp_path):
+    text = (GRAMMAR / "implicit-constant/problem.pddl").read_text().replace("wrench - tool", "wrench - wheel")
+    (tmp_path / "p.pddl").write_text(text)
+    message = _error(IMPLICIT[0], str(tmp_path / "p.pddl"))
+    assert message == "domain.pddl:10:28: semantic error: 'wrench' is a wheel, expected a tool"
+
+
+def test_the_writer_writes_an_implicit_constant_as_written(tmp_path):
+    domain, problem = parse_task(*IMPLICIT)
+    text = domain_to_pddl(domain)
+    assert ":constants" not in text and "(have wrench)" in text
+    _same_model((domain, problem), _round_trip(tmp_path, domain, problem))
+    merged = merge_domains([domain, parse_domain(IMPLICIT[0])]).domain
+    assert merged.implicit_constants == ("wrench",) and merged.constants == {}
+
+
+def test_the_cli_warns_once_about_an_implicit_constant(runner, app, tmp_path):
+    result = runner.invoke(app, ["plan", *IMPLICIT])
+    assert result.exit_code == 0, result.stderr
+    lines = result.stderr.strip().splitlines()
+    assert [l for l in lines if "warning" in l] == [str(GRAMMAR / WRENCH_WARNING)]
+    assert result.stdout.startswith("(fetch)\n")
+    quiet = runner.invoke(app, ["plan", *IMPLICIT, "--quiet"])
+    assert quiet.exit_code == 0 and quiet.stderr == ""
+    # consistent semantics: the invariant synthesis (Fast Downward's translator) reads it too
+    excuse = runner.invoke(app, ["excuse", *IMPLICIT, "--invariants-from", IMPLICIT[0]])
+    assert excuse.exit_code == 0, excuse.stderr
+    assert sum("warning" in l for l in excuse.stderr.splitlines()) == 1
+    merged = runner.invoke(app, ["merge", IMPLICIT[0], IMPLICIT[0], "-o", str(tmp_path / "m.pddl")])
+    assert merged.exit_code == 0, merged.stderr
+    assert ":constants" not in (tmp_path / "m.pddl").read_text()
