@@ -90,6 +90,21 @@ def test_damaged_files_give_the_same_model_or_error_both_ways(tmp_path, monkeypa
     assert {"ok", "PddlSyntaxError", "PddlSemanticError"} <= outcomes
 
 
+@pytest.mark.parametrize("fixture", ["either", "shared-name", "implicit-constant"])
+def test_damaged_grammar_fixtures_give_the_same_model_or_error_both_ways(tmp_path, monkeypatch, fixture):
+    """Seeded damage to either types, a type named like an object, an implicit constant."""
+    folder = ROOT / "tests/data/grammar" / fixture
+    pieces = ["(", ")", " ", "?x", "- ", "either ", "(either a b) ", "cart ", "wrench ", "tool ", "- tool ",
+              "- cart ", "; c\n", "\n", "object ", "(and) ", "not "]
+    outcomes = set()
+    for domain, problem in damaged_tasks(tmp_path, (folder / "domain.pddl").read_text(),
+                                         (folder / "problem.pddl").read_text(), pieces, seed=7, count=80):
+        result = _outcome(domain, problem)
+        assert result == _tarski_only(monkeypatch, domain, problem)
+        outcomes.add(result[0] if result[0] == "ok" else result[1])
+    assert {"ok", "PddlSyntaxError", "PddlSemanticError"} <= outcomes
+
+
 P = "(define (problem q) (:domain d) (:objects o) (:init (p o)) (:goal (not (p o))))"
 ACT = "(:action a :parameters (?x) :precondition (p ?x) :effect (not (p ?x)))"
 CASES = {
@@ -180,6 +195,12 @@ CASES = {
         "(:action f :parameters (?x) :precondition (p ?x) :effect (have wrench)) (:action g :parameters (?x) "
         ":precondition ((p ?x)) :effect (have ?x)))", "(define (problem q) (:domain d) (:objects wrench o) "
         "(:init (p o)) (:goal (have wrench)))"),
+    "an implicit constant, the problem of another domain": (False, "(define (domain d) (:types tool) (:predicates "
+        "(have ?t - tool)) (:action f :parameters () :precondition (have wrench) :effect (not (have wrench))))",
+        "(define (problem q) (:domain e) (:objects wrench) (:init (have wrench)) (:goal (not (have wrench))))"),
+    "an object named object, a type named like an object": (False, "(define (domain d) (:types cart - object) "
+        "(:predicates (p ?x - cart)) (:action m :parameters (?x - cart) :precondition (p ?x) :effect (not (p ?x))))",
+        "(define (problem q) (:domain e) (:objects cart - cart object) (:init (p cart)) (:goal (not (p cart))))"),
     # left to tarski (its model, or its error)
     "contradicting effects": (True, "(define (domain d) (:predicates (p ?x)) (:action a :parameters (?x) "
         ":precondition (p ?x) :effect (and (p ?x) (not (p ?x)))))", P),

@@ -226,11 +226,11 @@ def undeclared_implicit_constant(src: SourceMap, use: ImplicitUse) -> PddlSemant
 
 
 def type_names(src: SourceMap) -> set[str]:
-    """The types a domain declares in ``:types`` (lower-case), parents included."""
+    """The types a domain declares in ``:types`` (lower-case), parents included, ``object`` (built in) not."""
     section = src.section(":types")
     if section is None:
         return set()
-    return {t.lower for t in section.items[1:] if isinstance(t, Token) and t.text != "-"}
+    return {t.lower for t in section.items[1:] if isinstance(t, Token) and t.text != "-"} - {"object"}
 
 
 def predicate_names(src: SourceMap) -> set[str]:

@@ -759,17 +759,29 @@ def parse_task(domain_path: str | Path, problem_path: str | Path) -> tuple[Domai
             return domain, problem
     reader = _new_reader()
     rewrite = _rewrite_for(dsrc, psrc)
+    if rewrite.fresh:
+        # Tarski is told the problem's types of implicit constants; the domain's own
+        # errors come first all the same, as the domain alone has them (the fast path's order).
+        alone = _rewrite_for(dsrc, None)
+        _tarski_parse(reader, "domain", dsrc, alone)
+        _check_belongs(psrc, _domain_from_tarski(reader, dsrc, dname, alone), rewrite)
+        reader = _new_reader()
     _tarski_parse(reader, "domain", dsrc, rewrite)
     domain = _domain_from_tarski(reader, dsrc, dname, rewrite)
     domain_constants = dict(domain.constants)
-    _check_domain_reference(psrc, domain)
-    for name, use in rewrite.implicit.items():
-        if name not in rewrite.fresh:  # the problem does not declare it either
-            raise names.undeclared_implicit_constant(dsrc, use)
+    _check_belongs(psrc, domain, rewrite)
     _tarski_parse(reader, "problem", psrc, rewrite)
     problem = _problem_from_tarski(reader, psrc, pname, domain_constants, rewrite)
     _check_either_arguments(domain, dsrc, problem.objects, (psrc, problem))
     return domain, problem
+
+
+def _check_belongs(psrc: SourceMap, domain: Domain, rewrite: _Rewrite) -> None:
+    """The problem names the domain and declares every implicit constant of it."""
+    _check_domain_reference(psrc, domain)
+    for name, use in rewrite.implicit.items():
+        if name not in rewrite.fresh:  # the problem does not declare it either
+            raise names.undeclared_implicit_constant(domain.source, use)
 
 
 def _check_domain_reference(psrc: SourceMap, domain: Domain) -> None:
