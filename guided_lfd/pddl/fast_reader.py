@@ -16,6 +16,11 @@ name it cannot type-check) it returns None and the
 reader takes the tarski path, which gives the precise ``file:line:col``
 error or the model.  Tests read every PDDL file of the repository, and
 hundreds of damaged ones, both ways and require the same outcome.
+
+Beyond plain STRIPS it reads what the translator reads and the reader
+supports (see :mod:`guided_lfd.pddl.names`): ``(either a b)`` types of
+predicate parameters, a type named like an object, and implicit constants
+(declared for the translator, which refuses undeclared objects, then set apart).
 """
 
 from __future__ import annotations

@@ -5,6 +5,12 @@ constants): enough for the robot's skill library and everything the tool
 derives from it (excuses, learned and merged domains).  All names are
 lower-case, as PDDL is case-insensitive; ``spellings`` remembers how a name
 was first written (``PinkDrawer``) for messages meant for people.
+
+Beyond plain STRIPS the model keeps what valid PDDL allows and Fast
+Downward reads: a predicate parameter of type ``(either a b)`` (the type
+string as written, see :func:`type_members`), a type and an object of the
+same name (separate dictionaries), and objects an action names without the
+domain declaring them (:attr:`Domain.implicit_constants`).
 """
 
 from __future__ import annotations
