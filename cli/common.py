@@ -19,6 +19,8 @@ from guided_lfd.io import check_writable, write_text
 if TYPE_CHECKING:
     from rich.console import Console
 
+    from guided_lfd.pddl.model import Domain
+
 F = TypeVar("F", bound=Callable)
 
 #: rich's emoji-code pattern (rich/_emoji_replace.py): text it could match is left to rich.
@@ -80,6 +82,7 @@ class Ui:
 
     def __init__(self) -> None:
         self.quiet = False
+        self.warned: set[str] = set()
 
     @property
     def console(self) -> Console:
@@ -103,6 +106,22 @@ class Ui:
             return
         if not self._print(message, markup=True):
             self.console.print(message)
+
+    def reading_warnings(self, *domains: Domain | None) -> None:
+        """The reader's warnings about ``domains`` (``Domain.warnings``) on stderr, each once per run."""
+        for domain in domains:
+            for warning in domain.warnings if domain is not None else ():
+                if warning not in self.warned:
+                    self.warned.add(warning)
+                    self.info_plain(warning)
+
+    def info_plain(self, message: str) -> None:
+        """A diagnostic line quoted from an input (no markup), silenced by ``--quiet``."""
+        if self.quiet:
+            return
+        message = one_line(message)
+        if not self._print(message, markup=False):
+            self.console.print(message, markup=False)
 
     def error(self, message: str) -> None:
         """A one-line error on stderr; shown even with ``--quiet``.
@@ -248,6 +267,7 @@ def command(fn: F) -> F:
     def wrapper(*args, **kwargs):
         resume_gc()  # start-up is over (see cli/startup.py)
         ui.quiet = bool(kwargs.get("quiet", False))
+        ui.warned = set()
         out_of_memory = False
         try:
             return fn(*args, **kwargs)

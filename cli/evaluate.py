@@ -57,6 +57,7 @@ def evaluate(
     check_files([robot, problem, human, excuse, nonminimal, merged, *demos], {"--output": output})
     robot_domain, task = parse_task(robot, problem)
     human_domain = parse_domain(human)
+    ui.reading_warnings(robot_domain, human_domain)
     parse_problem_for(human_domain, problem)  # the human's domain must fit the task too
     if excuse is not None:
         changes = read_excuse(excuse, robot_domain, task)
@@ -81,6 +82,7 @@ def evaluate(
         doc = load_segments(path)
         documents.append(Demonstration(path, ground_actions(doc, path), doc.get("objects", {})))
     merged_domain = parse_domain(merged) if merged else None
+    ui.reading_warnings(merged_domain)
     if merged_domain is not None:
         parse_problem_for(merged_domain, problem)
     ui.info("[dim]evaluating: planning on the human domain, exploring its states ...[/]")

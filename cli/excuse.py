@@ -81,6 +81,7 @@ def excuse(
             invariants_from=parse_domain(invariants_from) if invariants_from else None,
             fixed_from=parse_domain(fixed_from) if fixed_from else None, started=started,
         )
+    ui.reading_warnings(dom, options.invariants_from, options.fixed_from)
     report = _run(dom, prob, options)
     spellings = report.spellings  # predicates as the domain writes them
     as_json = output_format(output, json_out) == "json"

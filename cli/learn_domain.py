@@ -33,6 +33,7 @@ def learn_domain(
     check_files([*segments, prior], {"--output": output})
     documents = [(path, load_segments(path)) for path in segments]
     prior_domain = parse_domain(prior) if prior else None
+    ui.reading_warnings(prior_domain)
     domain = learn(documents, prior_domain, name=name.lower())
     header = "Learned by guided-lfd learn-domain from: " + ", ".join(segments)
     write_text(output, domain_to_pddl(domain, header=header))

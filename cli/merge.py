@@ -43,6 +43,7 @@ def merge(
     check_files([prior, *learned, positive_for], {"--output": output, "--problem-output": problem_output})
     json_out = output_format(output, json_out, default="pddl") == "json"
     domains = [parse_domain(path) for path in (prior, *learned)]
+    ui.reading_warnings(*domains)
     result = merge_domains(domains, name.lower() if name else None)
     header = "Merged by guided-lfd merge from: " + ", ".join((prior, *learned))
     if result.notes:

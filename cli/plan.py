@@ -44,6 +44,7 @@ def plan(
     deadline = deadline_after(time_limit, started_at())
     with watchdog(deadline, "plan"):
         dom, prob = parse_task(domain, problem)
+        ui.reading_warnings(dom)
         report = plan_and_validate(dom, prob, search, remaining(deadline))
     if not report.solved:
         reason = f"unsolvable: exhaustive {search} search found no plan ({report.time_s:.2f} s)"

@@ -6,7 +6,7 @@ from typing import Annotated
 
 import typer
 
-from cli.common import JsonOption, OutputOption, QuietOption, check_files, output_format, command, emit
+from cli.common import JsonOption, OutputOption, QuietOption, check_files, output_format, command, emit, ui
 from guided_lfd.errors import EXIT_PLAN_INVALID
 from guided_lfd.io import json_document
 from guided_lfd.pddl.reader import parse_task
@@ -26,6 +26,7 @@ def validate(
     check_files([domain, problem, plan_file], {"--output": output})
     json_out = output_format(output, json_out) == "json"
     dom, prob = parse_task(domain, problem)
+    ui.reading_warnings(dom)
     steps = parse_plan(plan_file, dom, prob)
     report = validate_plan(dom, prob.init, prob.goal, steps, prob)
     failure = report.first_failure

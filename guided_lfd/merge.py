@@ -252,6 +252,9 @@ def merge_domains(domains: list[Domain], name: str | None = None) -> MergeResult
         path="<merged>",
         spellings=spellings,
         functions=functions,
+        # An object one domain's actions use undeclared stays so, unless another declares it.
+        implicit_constants=tuple(dict.fromkeys(
+            c for d in domains for c in d.implicit_constants if c not in constants)),
     )
     result.domain = merged
     return result

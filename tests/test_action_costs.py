@@ -228,3 +228,21 @@ def test_a_cost_domain_with_syntax_error_still_names_the_place(tmp_path):
     with pytest.raises(PddlSyntaxError) as info:
         parse_task(str(path), PROBLEM)
     assert str(info.value).startswith(f"{path}:")
+
+
+def test_costs_either_types_shared_names_and_implicit_constants_together(runner, app, monkeypatch):
+    """Every reader extension in one task: the same model both ways, and the cheapest plan."""
+    domain, problem = str(DATA / "grammar/all-together/domain.pddl"), str(DATA / "grammar/all-together/problem.pddl")
+    fast = parse_task(domain, problem)
+    assert fast[0].predicates["at"].params[0][1] == "(either tool cart)"
+    assert "cart" in fast[0].types and fast[1].objects["cart"] == "cart"
+    assert fast[0].implicit_constants == ("wrench",) and fast[1].metric
+    monkeypatch.setattr(fast_reader, "read_domain", lambda *args: None)
+    slow = parse_task(domain, problem)
+    monkeypatch.undo()
+    assert (repr(slow[0].actions), slow[0].functions, slow[0].types) == (repr(fast[0].actions), fast[0].functions,
+                                                                        fast[0].types)
+    assert slow[1].function_values == fast[1].function_values and slow[1].objects == fast[1].objects
+    result = runner.invoke(app, ["plan", domain, problem])
+    assert result.stdout.splitlines()[-1] == "; cost = 6 (general cost)"  # via the yard (2 + 3 + 1), not 9 + 1
+    assert "warning: 'wrench' in action 'grab' is not a declared constant" in result.stderr

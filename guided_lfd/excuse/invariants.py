@@ -58,12 +58,16 @@ def lifted_invariants(domain: Domain, problem: Problem, max_time: float | None =
     from fast_downward.translate.pddl_parser import lisp_parser, parsing_functions
 
     augmented = with_reversed_actions(domain)
-    augmented = replace(augmented, predicates={**augmented.predicates, _DUMMY_GOAL: Predicate(_DUMMY_GOAL)})
+    # The translator refuses an object an action names without declaring it:
+    # implicit constants are declared, with the problem's types, for it.
+    implicit = {c: problem.objects.get(c, "object") for c in domain.implicit_constants}
+    augmented = replace(augmented, predicates={**augmented.predicates, _DUMMY_GOAL: Predicate(_DUMMY_GOAL)},
+                        constants={**augmented.constants, **implicit}, implicit_constants=())
     dom_text = domain_to_pddl(augmented)
     # Objects of types the domain does not know are dropped: the invariants
     # are lifted, objects only matter for their types.
     types = set(domain.types) | {"object"}
-    objects = {o: t for o, t in problem.objects.items() if t in types and o not in domain.constants}
+    objects = {o: t for o, t in problem.objects.items() if t in types and o not in augmented.constants}
     prob = replace(problem, domain_name=domain.name, init=frozenset(), objects=objects,
                    goal=(Literal(Atom(_DUMMY_GOAL)),))
     prob_text = problem_to_pddl(prob)

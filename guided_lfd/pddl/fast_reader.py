@@ -16,6 +16,11 @@ name it cannot type-check) it returns None and the
 reader takes the tarski path, which gives the precise ``file:line:col``
 error or the model.  Tests read every PDDL file of the repository, and
 hundreds of damaged ones, both ways and require the same outcome.
+
+Beyond plain STRIPS it reads what the translator reads and the reader
+supports (see :mod:`guided_lfd.pddl.names`): ``(either a b)`` types of
+predicate parameters, a type named like an object, and implicit constants
+(declared for the translator, which refuses undeclared objects, then set apart).
 """
 
 from __future__ import annotations
@@ -25,7 +30,9 @@ import threading
 from typing import Any
 
 from guided_lfd.errors import SearchTimeout
-from guided_lfd.pddl.model import EQUALITY, TOTAL_COST, ActionSchema, Atom, Domain, Literal, Predicate, Problem
+from guided_lfd.pddl import names
+from guided_lfd.pddl.model import (EITHER_PREFIX, EQUALITY, TOTAL_COST, ActionSchema, Atom, Domain, Literal, Predicate, Problem,
+                                   either_type, type_members)
 from guided_lfd.pddl.source import SExpr, SourceMap, Token
 
 #: A name as tarski's grammar reads it (NAME: a letter, then letters, digits, '-', '_').
@@ -90,11 +97,12 @@ def _name(word: Any) -> str:
     return word
 
 
-def _typed_list(items: list[Any], variables: bool = False, any_order: bool = False) -> None:
+def _typed_list(items: list[Any], variables: bool = False, any_order: bool = False, either: bool = False) -> None:
     """A typed list tarski reads in the order written: names, '- type' after each group, no list.
 
     ``any_order``: the order is not tarski's to keep (``:types``, which the
-    reader reorders parents first for both paths).
+    reader reorders parents first for both paths).  ``either``: a type may
+    be ``(either NAME ...)`` (predicate parameters).
     """
     groups_typed: list[bool] = []
     i = 0
@@ -104,8 +112,13 @@ def _typed_list(items: list[Any], variables: bool = False, any_order: bool = Fal
         if word == "-":
             if not pending or i + 1 >= len(items):
                 raise _NotPlain("typed list")
-            if items[i + 1] != "object":
-                _name(items[i + 1])
+            typ = items[i + 1]
+            if either and isinstance(typ, list) and len(typ) > 1 and typ[0] == "either":
+                for member in typ[1:]:
+                    if member != "object":
+                        _name(member)
+            elif typ != "object":
+                _name(typ)
             groups_typed.append(True)
             pending = False
             i += 2
@@ -244,10 +257,13 @@ class _Types:
                 up = types.get(up)
 
     def known(self, name: str) -> None:
-        if name not in self.types:
-            raise _NotPlain(f"type {name}")
+        for member in type_members(name):
+            if member not in self.types:
+                raise _NotPlain(f"type {member}")
 
     def below(self, name: str, ancestor: str) -> bool:
+        if ancestor.startswith(EITHER_PREFIX):
+            return any(self.below(name, member) for member in type_members(ancestor))
         while name is not None:
             if name == ancestor:
                 return True
@@ -256,8 +272,12 @@ class _Types:
 
 
 def _check_literals(literals: list[Literal], terms: dict[str, str], predicates: dict[str, Predicate],
-                    types: _Types) -> None:
-    """Every literal names a declared predicate with the right number of well-typed arguments."""
+                    types: _Types, loose: tuple[str, ...] = ()) -> None:
+    """Every literal names a declared predicate with the right number of well-typed arguments.
+
+    ``loose``: names whose type is not known yet (implicit constants without
+    a problem), not checked against ``either`` parameters, as the tarski path does.
+    """
     for lit in literals:
         atom = lit.atom
         if any(arg not in terms for arg in atom.args):
@@ -270,6 +290,8 @@ def _check_literals(literals: list[Literal], terms: dict[str, str], predicates: 
         if pred is None or len(pred.params) != len(atom.args):
             raise _NotPlain(str(atom))
         for arg, (_, expected) in zip(atom.args, pred.params):
+            if arg in loose and expected.startswith(EITHER_PREFIX):
+                continue
             if not types.below(terms[arg], expected):
                 raise _NotPlain(str(atom))
 
@@ -292,7 +314,52 @@ def _domain(src: SourceMap, path: str) -> Domain:
     if len(lists) < 2 or lists[0] != "define" or not isinstance(lists[1], list) or len(lists[1]) != 2:
         raise _NotPlain("header")
     name = _name(lists[1][1])
-    body = lists[2:]
+    first_action, declared_actions = _domain_shape(lists[2:])
+    from fast_downward.translate.pddl_parser.parsing_functions import Context
+
+    implicit = names.implicit_constant_uses(src)
+    pf = _translator()
+    (_, _, fd_types, _, fd_constants, fd_predicates, _, functions, fd_actions, axioms) = pf.parse_domain_pddl(
+        Context(), _with_constants(lists, first_action, list(implicit)))
+    if axioms or len(declared_actions) != len(fd_actions):
+        raise _NotPlain("axioms or an action without effects")
+    # The tarski path's type order: object, then the declarations parents first.
+    ordered = src.types_parents_first() or []
+    types: dict[str, str | None] = {"object": None}
+    for tname, parent in ordered:
+        types[tname.lower()] = parent.lower() if parent else "object"
+    fd_parents = {t.name: (None if t.name == "object" else t.basetype_name or "object") for t in fd_types}
+    if len(fd_types) != len(types) or fd_parents != types:
+        raise _NotPlain("types")
+    checker = _Types(types)
+    for parent in types.values():
+        if parent is not None:
+            checker.known(parent)
+    _unique([c.name for c in fd_constants])
+    constants = {c.name: c.type_name for c in fd_constants if c.name not in implicit}
+    for t in constants.values():
+        checker.known(t)
+    predicates = _predicates(fd_predicates, checker)
+    declared_functions = _functions(functions, checker)
+    if set(declared_functions) & (set(types) | set(constants) | set(predicates)):
+        raise _NotPlain("a function named like a type, constant or predicate")
+    # Types and objects are separate namespaces (a type and an object 'cart'); predicates are not.
+    if set(types) & set(predicates) or (set(constants) | set(implicit)) & set(predicates):
+        raise _NotPlain("a name used twice")
+    # Implicit constants are checked with the type their uses need (the problem's comes later).
+    loose = {n: names.implicit_constant_type(src, n) for n in implicit}
+    actions = _actions(declared_actions, fd_actions, {**loose, **constants}, predicates, checker, tuple(loose),
+                       declared_functions)
+    reqs = src.section(":requirements")
+    requirements = tuple(t.lower for t in reqs.items[1:] if isinstance(t, Token)) if reqs else ()
+    return Domain(name=name, requirements=requirements, types=types, constants=constants, predicates=predicates,
+                  actions=actions, path=path, spellings=src.spellings(), source=src,
+                  implicit_constants=tuple(implicit), functions=declared_functions,
+                  warnings=tuple(names.implicit_constant_warning(src, use) for use in implicit.values()))
+
+
+def _domain_shape(body: list[Any]) -> tuple[int, list[Any]]:
+    """Sections and actions in the shape tarski's grammar has them; (index of the first action, the actions)."""
     first_action = next((k for k, e in enumerate(body) if isinstance(e, list) and e[:1] == [":action"]), len(body))
     _sections_in_order(body[:first_action], _DOMAIN_SECTIONS)
     declared_actions = body[first_action:]
@@ -313,46 +380,31 @@ def _domain(src: SourceMap, path: str) -> Domain:
         if not isinstance(pred, list) or not pred:
             raise _NotPlain("predicate")
         _name(pred[0])
-        _typed_list(pred[1:], variables=True)
+        _typed_list(pred[1:], variables=True, either=True)
     _function_shapes(sections.get(":functions", [None])[1:])
-    from fast_downward.translate.pddl_parser.parsing_functions import Context
+    return first_action, declared_actions
 
-    pf = _translator()
-    (_, _, fd_types, _, fd_constants, fd_predicates, _, functions, fd_actions, axioms) = pf.parse_domain_pddl(
-        Context(), lists)
-    if axioms or len(declared_actions) != len(fd_actions):
-        raise _NotPlain("axioms or an action without effects")
-    # The tarski path's type order: object, then the declarations parents first.
-    ordered = src.types_parents_first() or []
-    types: dict[str, str | None] = {"object": None}
-    for tname, parent in ordered:
-        types[tname.lower()] = parent.lower() if parent else "object"
-    fd_parents = {t.name: (None if t.name == "object" else t.basetype_name or "object") for t in fd_types}
-    if len(fd_types) != len(types) or fd_parents != types:
-        raise _NotPlain("types")
-    checker = _Types(types)
-    for parent in types.values():
-        if parent is not None:
-            checker.known(parent)
-    _unique([c.name for c in fd_constants])
-    constants = {c.name: c.type_name for c in fd_constants}
-    for t in constants.values():
-        checker.known(t)
+
+def _predicates(fd_predicates: list[Any], checker: _Types) -> dict[str, Predicate]:
+    """The translator's predicates; an ``(either a b)`` type (a list there) as the model writes it."""
     predicates: dict[str, Predicate] = {}
     for pred in fd_predicates:
         if pred.name == EQUALITY:
             continue
         if pred.name in predicates:
             raise _NotPlain("predicate declared twice")
-        params = tuple((f"?x{i}", arg.type_name) for i, arg in enumerate(pred.arguments))
+        params = tuple((f"?x{i}", arg.type_name if isinstance(arg.type_name, str) else either_type(arg.type_name[1:]))
+                       for i, arg in enumerate(pred.arguments))
         for _, t in params:
             checker.known(t)
         predicates[pred.name] = Predicate(pred.name, params)
-    declared_functions = _functions(functions, checker)
-    if set(types) & (set(constants) | set(predicates)) or set(constants) & set(predicates):
-        raise _NotPlain("a name used twice")
-    if set(declared_functions) & (set(types) | set(constants) | set(predicates)):
-        raise _NotPlain("a function named like a type, constant or predicate")
+    return predicates
+
+
+def _actions(declared_actions: list[Any], fd_actions: list[Any], objects: dict[str, str],
+             predicates: dict[str, Predicate], checker: _Types, loose: tuple[str, ...],
+             functions: dict[str, Predicate]) -> list[ActionSchema]:
+    """The translator's actions as the model has them, type-checked (``objects``: constants and implicit ones)."""
     _unique([a.name for a in fd_actions])
     actions: list[ActionSchema] = []
     for raw, act in zip(declared_actions, fd_actions):
@@ -360,7 +412,7 @@ def _domain(src: SourceMap, path: str) -> Domain:
         _unique([p for p, _ in params])
         for _, t in params:
             checker.known(t)
-        terms = {**constants, **dict(params)}
+        terms = {**objects, **dict(params)}
         pre = _literals(act.precondition)
         if any(eff.parameters or not _is_truth(eff.condition) for eff in act.effects):
             raise _NotPlain("quantified or conditional effects")
@@ -368,19 +420,16 @@ def _domain(src: SourceMap, path: str) -> Domain:
         if (act.cost is not None) != _has_cost_effect(raw[7]):
             raise _NotPlain("a cost effect the translator reads otherwise")
         if isinstance(cost, Atom):
-            _check_literals([Literal(cost)], terms, declared_functions, checker)
+            _check_literals([Literal(cost)], terms, functions, checker, loose)
         # The effects as written: the translator drops a delete its action also adds
         # (add-after-delete); the model keeps both, as tarski's does.
         add: list[Atom] = []
         delete: list[Atom] = []
         for positive, atom in _effect_literals(raw[7]):
             (add if positive else delete).append(Atom(atom[0], tuple(atom[1:])))
-        _check_literals(pre + [Literal(a) for a in add + delete], terms, predicates, checker)
+        _check_literals(pre + [Literal(a) for a in add + delete], terms, predicates, checker, loose)
         actions.append(ActionSchema(act.name, params, tuple(pre), tuple(add), tuple(delete), cost=cost))
-    reqs = src.section(":requirements")
-    requirements = tuple(t.lower for t in reqs.items[1:] if isinstance(t, Token)) if reqs else ()
-    return Domain(name=name, requirements=requirements, types=types, constants=constants, predicates=predicates,
-                  actions=actions, path=path, spellings=src.spellings(), source=src, functions=declared_functions)
+    return actions
 
 
 def _has_cost_effect(alist: Any) -> bool:
@@ -416,6 +465,31 @@ def _functions(functions: list[Any], checker: "_Types") -> dict[str, Predicate]:
             checker.known(t)
         out[fun.name] = Predicate(fun.name, params)
     return out
+
+
+def _with_constants(lists: list[Any], first_action: int, implicit: list[str]) -> list[Any]:
+    """The domain's lists with ``implicit`` constants declared (the translator refuses undeclared objects)."""
+    if not implicit:
+        return lists
+    body = lists[2:]
+    at = next((k for k, e in enumerate(body[:first_action]) if e[0] == ":constants"), None)
+    if at is not None:
+        body = body[:at] + [body[at] + implicit] + body[at + 1:]  # untyped, last: of type object
+    else:
+        at = next((k for k, e in enumerate(body[:first_action]) if e[0] == ":predicates"), first_action)
+        body = body[:at] + [[":constants", *implicit]] + body[at:]
+    return lists[:2] + body
+
+
+def _check_implicit_constants(domain: Domain, objects: dict[str, str], checker: _Types) -> None:
+    """The problem declares each implicit constant, with a type every use in the actions fits."""
+    if not domain.implicit_constants:
+        return
+    if any(name not in objects for name in domain.implicit_constants):
+        raise _NotPlain("an implicit constant the problem does not declare")
+    for act in domain.actions:
+        terms = {**{n: objects[n] for n in domain.implicit_constants}, **domain.constants, **dict(act.params)}
+        _check_literals([*act.precondition, *map(Literal, act.add + act.delete)], terms, domain.predicates, checker)
 
 
 def _is_truth(cond) -> bool:
@@ -482,11 +556,12 @@ def _problem(src: SourceMap, path: str, domain: Domain) -> Problem:
         raise _NotPlain("metric")
     _unique([o.name for o in fd_objects])
     objects = {o.name: o.type_name for o in fd_objects}
-    if set(objects) & (set(domain.constants) | set(domain.types) | set(domain.predicates)):
-        raise _NotPlain("an object named like a constant, type or predicate")
+    if set(objects) & (set(domain.constants) | set(domain.predicates)):
+        raise _NotPlain("an object named like a constant or predicate")
     checker = _Types(domain.types)
     for t in objects.values():
         checker.known(t)
+    _check_implicit_constants(domain, objects, checker)
     terms = {**domain.constants, **objects}
     facts = [a for a in fd_init if not isinstance(a, pddl.Assign)]
     if len(fd_init) != len(init_section) - 1 or any(not isinstance(a, pddl.Atom) for a in facts):

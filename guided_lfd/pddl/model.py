@@ -5,6 +5,12 @@ constants, action costs): enough for the robot's skill library and everything th
 derives from it (excuses, learned and merged domains).  All names are
 lower-case, as PDDL is case-insensitive; ``spellings`` remembers how a name
 was first written (``PinkDrawer``) for messages meant for people.
+
+Beyond plain STRIPS the model keeps what valid PDDL allows and Fast
+Downward reads: a predicate parameter of type ``(either a b)`` (the type
+string as written, see :func:`type_members`), a type and an object of the
+same name (separate dictionaries), and objects an action names without the
+domain declaring them (:attr:`Domain.implicit_constants`).
 """
 
 from __future__ import annotations
@@ -30,6 +36,22 @@ PDDL_RESERVED = frozenset({
     "and", "or", "not", "imply", "exists", "forall", "when", "either", "define", "domain", "problem", "object",
     "number", "int", "float", "increase", "decrease", "assign", "scale-up", "scale-down", "preference", "minimize",
     "maximize", "sometime", "always", "within", "hold-during", "hold-after"})
+
+
+#: How an ``either`` type is written in the model: ``(either person aircraft)``.
+EITHER_PREFIX = "(either "
+
+
+def either_type(members: list[str] | tuple[str, ...]) -> str:
+    """The model's name of the type ``(either m1 m2 ...)`` (members lower-case, in written order)."""
+    return EITHER_PREFIX + " ".join(m.lower() for m in members) + ")"
+
+
+def type_members(t: str) -> tuple[str, ...]:
+    """The member types of an ``either`` type, or ``(t,)`` for a plain type."""
+    if t.startswith(EITHER_PREFIX) and t.endswith(")"):
+        return tuple(t[len(EITHER_PREFIX):-1].split())
+    return (t,)
 
 
 def pddl_name_problem(name: str) -> str | None:
@@ -145,6 +167,12 @@ class Domain:
     #: Numeric functions declared in ``:functions`` (``total-cost`` and the static
     #: ones action costs are made of), with their typed parameters.
     functions: dict[str, Predicate] = field(default_factory=dict)
+    #: Names the actions use as objects that are neither parameters nor declared constants
+    #: (older IPC domains leave them to the problem's objects), in order of first use.
+    #: They are not in ``constants``: their type is the problem's (``object`` until then).
+    implicit_constants: tuple[str, ...] = ()
+    #: One-line diagnostics of reading the file (``file:line:col: warning: ...``), for the user.
+    warnings: tuple[str, ...] = field(default=(), compare=False)
 
     def locate(self, name: str, *sections: str) -> Location:
         """Where ``name`` is written in the domain file (searched in ``sections`` first)."""
@@ -160,7 +188,11 @@ class Domain:
         raise KeyError(name)
 
     def subtypes(self) -> dict[str, set[str]]:
-        """Map each type to itself and all its (transitive) subtypes."""
+        """Map each type to itself and all its (transitive) subtypes.
+
+        An ``either`` type of a predicate parameter maps to the union of its
+        members' subtypes, so that grounding and type checks treat it as any other.
+        """
         out: dict[str, set[str]] = {t: {t} for t in self.types}
         out.setdefault("object", {"object"})
         for t in self.types:
@@ -170,7 +202,14 @@ class Domain:
                 seen.add(parent)
                 out.setdefault(parent, {parent}).add(t)
                 parent = self.types.get(parent)
+        for t in self.either_types():
+            out[t] = set().union(*(out.get(m, {m}) for m in type_members(t)))
         return out
+
+    def either_types(self) -> list[str]:
+        """The ``either`` types the predicates use, in order of first use."""
+        found = [t for pred in self.predicates.values() for _, t in pred.params if t.startswith(EITHER_PREFIX)]
+        return list(dict.fromkeys(found))
 
     def fluent_predicates(self) -> set[str]:
         """Predicates some action adds or deletes."""
@@ -242,7 +281,16 @@ def type_ancestors(types: dict[str, str | None], t: str) -> list[str]:
 
 
 def common_supertype(types: dict[str, str | None], a: str, b: str) -> str:
-    """The closest type both ``a`` and ``b`` belong to (``object`` at worst)."""
+    """The closest type both ``a`` and ``b`` belong to (``object`` at worst).
+
+    An ``either`` type covers a type below one of its members (and another
+    ``either`` whose members it covers).
+    """
+    for wide, narrow in ((a, b), (b, a)):
+        if wide.startswith(EITHER_PREFIX):
+            members = type_members(wide)
+            if all(any(m in type_ancestors(types, n) for m in members) for n in type_members(narrow)):
+                return wide
     up = type_ancestors(types, b)
     return next((t for t in type_ancestors(types, a) if t in up), "object")
 

@@ -11,6 +11,7 @@ import logging
 import os
 import re
 from contextlib import contextmanager
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Iterator
 
@@ -33,8 +34,9 @@ from guided_lfd.pddl.model import (
     Literal,
     Predicate,
     Problem,
+    type_members,
 )
-from guided_lfd.pddl import fast_reader
+from guided_lfd.pddl import fast_reader, names
 from guided_lfd.pddl.source import SExpr, SourceMap, Token, read_text
 
 # Keywords of PDDL features beyond STRIPS, with the requirement they belong to.
@@ -55,7 +57,6 @@ _UNSUPPORTED_KEYWORDS = {
     ":derived": ":derived-predicates",
     ":durative-action": ":durative-actions",
     ":constraints": ":constraints",
-    "either": ":typing with 'either' types",
 }
 
 
@@ -97,17 +98,7 @@ def _check_features(src: SourceMap, what: str) -> None:
                 f"(expected STRIPS with typing, negative preconditions and equality)",
                 src.location(tok.line, tok.col),
             )
-        # '(either a b)' appears inside typed lists.
-        for i, item in enumerate(node.items):
-            if isinstance(item, Token) and item.lower == "-" and i + 1 < len(node.items):
-                nxt = node.items[i + 1]
-                if not isinstance(nxt, Token):
-                    head_tok = nxt.items[0] if nxt.items else None
-                    if isinstance(head_tok, Token) and head_tok.lower == "either":
-                        raise UnsupportedFeatureError(
-                            "'either' types are not supported (expected a single type name)",
-                            src.location(head_tok.line, head_tok.col),
-                        )
+    names.check_either(src)  # '(either a b)' as a predicate parameter's type only, as Fast Downward has it
 
 
 def _numeric_error(tok: Token, src: SourceMap, what: str) -> UnsupportedFeatureError:
@@ -232,19 +223,27 @@ def keywords_lowered(text: str) -> str:
 _EMPTY_PRECONDITION = ":precondition (and) "
 
 
-def with_empty_preconditions(src: SourceMap) -> tuple[str, list[tuple[int, int]]]:
+def with_empty_preconditions(src: SourceMap) -> tuple[str, list[tuple[int, int, int]]]:
     """The text of ``src`` with ``:precondition (and)`` before the ``:effect`` of each action that has none.
 
     The precondition is optional in PDDL (and in Fast Downward); tarski's
-    grammar requires it.  Returns the text and the (line, column) of each
-    insertion, so positions tarski reports can be mapped back
-    (:func:`_as_in_source`).  Only actions after the ``:types`` section get
-    one, so that section's offsets stay valid for
+    grammar requires it.  Returns the text and the (line, column, width) of
+    each insertion, so positions tarski reports can be mapped back
+    (:func:`_as_in_source`).
+    """
+    return _with_inserts(src, _precondition_inserts(src))
+
+
+def _precondition_inserts(src: SourceMap) -> list[tuple[int, str]]:
+    """(offset, text) of the ``:precondition (and)`` each action without one gets.
+
+    Only actions after the ``:types`` section get one, so that section's
+    offsets stay valid for
     :meth:`~guided_lfd.pddl.source.SourceMap.text_with_types_parents_first`.
     """
-    text = src.text
     types = src.section(":types")
-    inserts: list[tuple[int, int]] = []
+    starts = _line_starts(src.text)
+    inserts: list[tuple[int, str]] = []
     for act in src.define().items:
         if not isinstance(act, SExpr) or act.head() != ":action":
             continue
@@ -255,41 +254,157 @@ def with_empty_preconditions(src: SourceMap) -> tuple[str, list[tuple[int, int]]
             continue
         effect = next((t for t in words if t.lower == ":effect"), None)
         if effect is not None:
-            inserts.append((effect.line, effect.col))
+            inserts.append((starts[effect.line - 1] + effect.col - 1, _EMPTY_PRECONDITION))
+    return inserts
+
+
+def _line_starts(text: str) -> list[int]:
+    return [0] + [m.end() for m in re.finditer("\n", text)]
+
+
+def _with_inserts(src: SourceMap, inserts: list[tuple[int, str]]) -> tuple[str, list[tuple[int, int, int]]]:
+    """The text of ``src`` with one-line ``inserts`` (offset, text), and their (line, column, width)."""
+    text = src.text
     if not inserts:
         return text, []
-    starts = [0] + [m.end() for m in re.finditer("\n", text)]
-    pieces, last = [], 0
-    for line, col in inserts:
-        offset = starts[line - 1] + col - 1
-        pieces += [text[last:offset], _EMPTY_PRECONDITION]
+    starts = _line_starts(text)
+    import bisect
+
+    pieces, last, where = [], 0, []
+    for offset, piece in sorted(inserts):
+        line = bisect.bisect_right(starts, offset)
+        where.append((line, offset - starts[line - 1] + 1, len(piece)))
+        pieces += [text[last:offset], piece]
         last = offset
     pieces.append(text[last:])
-    return "".join(pieces), inserts
+    return "".join(pieces), where
 
 
-def _as_in_source(line: int, col: int, inserts: list[tuple[int, int]]) -> tuple[int, int]:
+def _as_in_source(line: int, col: int, inserts: list[tuple[int, int, int]]) -> tuple[int, int]:
     """A (line, 1-based column) of the text given to tarski, in the file as written."""
-    width = len(_EMPTY_PRECONDITION)
     shift = 0
-    for at_line, at_col in inserts:  # in order of position
+    for at_line, at_col, width in inserts:  # in order of position
         if at_line != line:
             continue
         start = at_col + shift  # where this insertion begins in the text tarski read
         if col < start:
             break
         if col < start + width:
-            return line, at_col  # inside the insertion: at the :effect it precedes
+            return line, at_col  # inside the insertion: at what it precedes
         shift += width
     return line, col - shift
 
 
-def _tarski_parse(reader, kind: str, src: SourceMap) -> None:
-    """Run tarski on the text of ``src`` and translate its errors."""
+@dataclass
+class _Rewrite:
+    """What the tarski path changes in the text it gives tarski, to undo in the model and messages.
+
+    ``types``: types also named like an object, to their substitute (tarski
+    has one namespace for sorts and constants).  ``implicit``: the domain's
+    implicit constants; ``declared``: for each the type tarski is told (the
+    problem's, else the most specific its uses need); ``fresh``: the name the
+    problem's own declaration of one is given, so that tarski sees it once.
+    """
+
+    types: dict[str, str] = field(default_factory=dict)
+    implicit: dict[str, names.ImplicitUse] = field(default_factory=dict)
+    declared: dict[str, str] = field(default_factory=dict)
+    fresh: dict[str, str] = field(default_factory=dict)
+
+    def type_name(self, name: str) -> str:
+        """A sort name tarski gives back, as the file has it (lower-case)."""
+        name = str(name).lower()
+        return self._type_back.get(name, name)
+
+    def in_message(self, text: str) -> str:
+        """A message of tarski's with the substitute names as the files have them."""
+        back = {**self._type_back, **{v: k for k, v in self.fresh.items()}}
+        if not back:
+            return text
+        return re.sub(r"[A-Za-z][A-Za-z0-9_-]*", lambda m: back.get(m.group(0), m.group(0)), text)
+
+    @property
+    def _type_back(self) -> dict[str, str]:
+        return {v: k for k, v in self.types.items()}
+
+
+def _rewrite_for(dsrc: SourceMap, psrc: SourceMap | None) -> _Rewrite:
+    """The substitutes tarski needs for this domain (and problem), found on the source maps."""
+    shared = sorted(names.shared_type_names(dsrc, psrc))
+    implicit = names.implicit_constant_uses(dsrc)
+    objects = {}
+    for tok, typ in names.declared_constants(psrc, ":objects") if psrc is not None else []:
+        objects.setdefault(tok.lower, typ)
+    redeclared = [n for n in implicit if n in objects]
+    substitutes = names.fresh_names(shared + redeclared, dsrc, psrc)
+    rewrite = _Rewrite(types=dict(zip(shared, substitutes)), implicit=implicit,
+                       fresh=dict(zip(redeclared, substitutes[len(shared):])))
+    known = names.type_names(dsrc) | {"object"}
+    for name in implicit:
+        if name not in objects:
+            rewrite.declared[name] = names.implicit_constant_type(dsrc, name)
+            continue
+        typ = objects[name]
+        wanted = typ.lower if isinstance(typ, Token) else "object"
+        # A type the domain does not declare: the problem's own declaration gets tarski's error.
+        rewrite.declared[name] = wanted if wanted in known else names.implicit_constant_type(dsrc, name)
+    return rewrite
+
+
+def _tarski_text(src: SourceMap, kind: str, rewrite: _Rewrite) -> tuple[str, list[tuple[int, int, int]]]:
+    """The text tarski is given for ``src`` and the (line, col, width) of what was inserted.
+
+    Same-length substitutes first (types named like objects, ``either``
+    lists, a problem's declaration of an implicit constant), then insertions
+    (empty preconditions, the implicit constants' declaration), then
+    ``:types`` parents first and keywords in lower case.
+    """
+    respelled = [(tok, rewrite.types[tok.lower]) for tok in names.type_positions(src, set(rewrite.types))]
+    eithers = names.either_lists(src) if kind == "domain" else []
+    if kind == "problem" and rewrite.fresh:
+        first = {}
+        for tok, _ in names.declared_constants(src, ":objects"):
+            first.setdefault(tok.lower, tok)
+        respelled += [(first[n], new) for n, new in rewrite.fresh.items() if n in first]
+    if respelled or eithers:
+        src = SourceMap(src.path, names.substituted(src.text, src, respelled, eithers))
+    inserts = _precondition_inserts(src) if kind == "domain" else []
+    if kind == "domain" and rewrite.implicit:
+        inserts += _constant_inserts(src, rewrite)
+    text, where = _with_inserts(src, inserts)
+    return keywords_lowered(src.text_with_types_parents_first(text)), where
+
+
+def _constant_inserts(src: SourceMap, rewrite: _Rewrite) -> list[tuple[int, str]]:
+    """Where the implicit constants are declared for tarski: in ``:constants``, else a section before the predicates."""
+    decl = " ".join(f"{n} - {rewrite.types.get(t, t)}" for n, t in rewrite.declared.items())
+    types = src.section(":types")
+    constants = src.section(":constants")
+    if constants is not None:
+        return [(constants.end, " " + decl)]
+    follower = src.section(":predicates") or next(
+        (i for i in src.define().items if isinstance(i, SExpr) and i.head() == ":action"), None)
+    if follower is None or (types is not None and follower.start < types.end):
+        return []  # out of order: tarski's error stands
+    return [(follower.start, f"(:constants {decl}) ")]
+
+
+def _tarski_parse(reader, kind: str, src: SourceMap, rewrite: _Rewrite) -> None:
+    """Run tarski on the text of ``src`` (with ``rewrite``'s substitutes) and translate its errors."""
+    try:
+        _tarski_parse_text(reader, kind, src, rewrite)
+    except GuidedLfdError as exc:
+        message = rewrite.in_message(exc.message)
+        if message != exc.message:
+            raise type(exc)(message, exc.location) from None
+        raise
+
+
+def _tarski_parse_text(reader, kind: str, src: SourceMap, rewrite: _Rewrite) -> None:
     from tarski import errors as terr
 
-    text, inserts = with_empty_preconditions(src) if kind == "domain" else (src.text, [])
-    text = keywords_lowered(src.text_with_types_parents_first(text))
+    text, inserts = _tarski_text(src, kind, rewrite)
+    orig = rewrite.in_message
     if _FINAL_COMMENT.search(text):
         # A line comment may end the file (PDDL comments run to the end of the
         # line); tarski's lexer wants a line break after it.  Adding one moves no token.
@@ -304,24 +419,24 @@ def _tarski_parse(reader, kind: str, src: SourceMap) -> None:
     except GuidedLfdError:
         raise
     except terr.UndefinedSort as exc:
-        name = _element_name(exc)
+        name = orig(_element_name(exc))
         raise PddlSemanticError(
             f"unknown type '{name}' (expected a type declared in :types)", src.locate(name, ":types", ":objects", ":constants")
         ) from None
     except terr.UndefinedPredicate as exc:
-        name = _element_name(exc)
+        name = orig(_element_name(exc))
         raise PddlSemanticError(
             f"unknown predicate '{name}' (expected a predicate declared in the domain's :predicates)",
             src.locate_head(name, ":init", ":goal", ":action"),
         ) from None
     except terr.UndefinedConstant as exc:
-        name = _element_name(exc)
+        name = orig(_element_name(exc))
         raise PddlSemanticError(
             f"unknown object '{name}' (expected an object declared in :objects or a domain constant)",
             src.locate_argument(name, ":init", ":goal", ":action"),
         ) from None
     except terr.UndefinedElement as exc:
-        name = _element_name(exc)
+        name = orig(_element_name(exc))
         raise PddlSemanticError(f"unknown name '{name}'", src.locate_argument(name, ":init", ":goal", ":action")) from None
     except terr.ArityMismatch as exc:
         text = str(exc)
@@ -335,14 +450,16 @@ def _tarski_parse(reader, kind: str, src: SourceMap) -> None:
     except terr.SortMismatch as exc:
         match = re.search(r'element (\S+?)\.? Expected sort was "([^"]*)", element has sort "([^"]*)"', str(exc))
         if match:
-            element, expected, actual = match.group(1), match.group(2), match.group(3)
+            # Sorts of variables come as 'Sort(name)'.
+            expected, actual = (re.sub(r"^Sort\((.*)\)$", r"\1", match.group(k)) for k in (2, 3))
+            element, expected, actual = orig(match.group(1)), orig(expected), orig(actual)
             element = element.split("(")[0]
             raise PddlSemanticError(
                 f"'{element}' is a {actual}, expected a {expected}", src.locate_argument(element, ":init", ":goal")
             ) from None
         raise PddlSemanticError(f"type mismatch: {exc}", src.location(src.define().line, src.define().col)) from None
     except terr.DuplicateDefinition as exc:
-        name = str(getattr(exc, "name", _element_name(exc)))
+        name = orig(str(getattr(exc, "name", _element_name(exc))))
         raise PddlSemanticError(
             f"'{name}' is declared twice (expected each type, constant, object, predicate and action name once)",
             src.locate_second(name),
@@ -447,28 +564,62 @@ def _literals(formula, src: SourceMap, where: str) -> list[Literal]:
     )
 
 
-def _declared_types(lang) -> dict[str, str | None]:
+def _declared_types(lang, rewrite: _Rewrite) -> dict[str, str | None]:
     builtin = {"Real", "Integer", "Natural", "number"}
     out: dict[str, str | None] = {}
     for sort in lang.sorts:
         if sort.name in builtin:
             continue
         parent = lang.immediate_parent.get(sort)
-        out[str(sort.name).lower()] = str(parent.name).lower() if parent is not None else None
+        out[rewrite.type_name(sort.name)] = rewrite.type_name(parent.name) if parent is not None else None
     return out
 
 
-def _domain_from_tarski(reader, src: SourceMap, path: str) -> Domain:
-    from tarski.fstrips import AddEffect, DelEffect
-    from tarski.syntax import Tautology, builtins
+def _tarski_predicates(lang, src: SourceMap, rewrite: _Rewrite) -> dict[str, Predicate]:
+    """The predicates tarski read, each ``either`` parameter type restored (tarski was given ``object``)."""
+    from tarski.syntax import builtins
 
-    lang = reader.problem.language
+    eithers = names.predicate_either_types(src)
     predicates: dict[str, Predicate] = {}
     for pred in lang.predicates:
         if builtins.is_builtin_predicate(pred):
             continue
         name = str(pred.name).lower()
-        predicates[name] = Predicate(name, tuple((f"?x{i}", str(s.name).lower()) for i, s in enumerate(pred.sort)))
+        written = eithers.get(name, {})
+        predicates[name] = Predicate(name, tuple(
+            (f"?x{i}", written[i][0] if i in written else rewrite.type_name(s.name)) for i, s in enumerate(pred.sort)))
+    return predicates
+
+
+def _domain_from_tarski(reader, src: SourceMap, path: str, rewrite: _Rewrite) -> Domain:
+    lang = reader.problem.language
+    implicit = rewrite.implicit
+    reqs = src.section(":requirements")
+    requirements = tuple(t.lower for t in reqs.items[1:] if isinstance(t, Token)) if reqs else ()
+    domain = Domain(
+        name=str(reader.problem.domain_name).lower(),
+        requirements=requirements,
+        types=_declared_types(lang, rewrite),
+        constants={str(c.name).lower(): rewrite.type_name(c.sort.name) for c in lang.constants()
+                   if str(c.name).lower() not in implicit},
+        predicates=_tarski_predicates(lang, src, rewrite),
+        actions=_tarski_actions(reader, src, rewrite),
+        path=path,
+        spellings=src.spellings(),
+        source=src,
+        implicit_constants=tuple(implicit),
+        warnings=tuple(names.implicit_constant_warning(src, use) for use in implicit.values()),
+        functions=_tarski_functions(lang, src),
+    )
+    names.check_either_members(src, domain.types)
+    _check_either_arguments(domain, src, None)
+    return domain
+
+
+def _tarski_actions(reader, src: SourceMap, rewrite: _Rewrite) -> list[ActionSchema]:
+    from tarski.fstrips import AddEffect, DelEffect
+    from tarski.syntax import Tautology
+
     actions: list[ActionSchema] = []
     seen_actions: set[str] = set()
     for act in reader.problem.actions.values():
@@ -480,44 +631,80 @@ def _domain_from_tarski(reader, src: SourceMap, path: str) -> Domain:
                 f"action '{act.name}' is declared twice (names are case-insensitive)", src.locate_second_action(lname)
             )
         seen_actions.add(lname)
-        names = [_term_name(v) for v in act.parameters]
-        if len(set(names)) != len(names):
-            dup = next(n for n in names if names.count(n) > 1)
+        param_names = [_term_name(v) for v in act.parameters]
+        if len(set(param_names)) != len(param_names):
+            dup = next(n for n in param_names if param_names.count(n) > 1)
             raise PddlSemanticError(f"parameter {dup} of action '{act.name}' is declared twice", where_node)
         where = f"precondition of action '{act.name}'"
-        params = tuple((_term_name(v), str(v.sort.name).lower()) for v in act.parameters)
+        params = tuple((_term_name(v), rewrite.type_name(v.sort.name)) for v in act.parameters)
         pre = tuple(_literals(act.precondition, src, where))
         add: list[Atom] = []
         dele: list[Atom] = []
         for eff in act.effects:
-            node = src.action(act.name)
-            loc = src.location(node.line, node.col) if node else src.location(src.define().line, src.define().col)
             if not isinstance(eff, (AddEffect, DelEffect)):
                 raise UnsupportedFeatureError(
-                    f"effect {eff} of action '{act.name}' is not a STRIPS add or delete effect", loc
+                    f"effect {eff} of action '{act.name}' is not a STRIPS add or delete effect", where_node
                 )
             if not isinstance(eff.condition, Tautology):
                 raise UnsupportedFeatureError(
-                    f"conditional effect in action '{act.name}' (needs :conditional-effects, unsupported)", loc
+                    f"conditional effect in action '{act.name}' (needs :conditional-effects, unsupported)", where_node
                 )
             atom = Atom(_pred_name(eff.atom.predicate), tuple(_term_name(t) for t in eff.atom.subterms))
             (add if isinstance(eff, AddEffect) else dele).append(atom)
         cost = _tarski_cost(act, src, where_node)
         actions.append(ActionSchema(str(act.name).lower(), params, pre, tuple(add), tuple(dele), cost=cost))
-    reqs = src.section(":requirements")
-    requirements = tuple(t.lower for t in reqs.items[1:] if isinstance(t, Token)) if reqs else ()
-    return Domain(
-        name=str(reader.problem.domain_name).lower(),
-        requirements=requirements,
-        types=_declared_types(lang),
-        constants={str(c.name).lower(): str(c.sort.name).lower() for c in lang.constants()},
-        predicates=predicates,
-        actions=actions,
-        path=path,
-        spellings=src.spellings(),
-        source=src,
-        functions=_tarski_functions(lang, src),
-    )
+    return actions
+
+
+def _check_either_arguments(domain: Domain, src: SourceMap, objects: dict[str, str] | None,
+                            problem: tuple[SourceMap, Problem] | None = None) -> None:
+    """Arguments at ``either`` parameters belong to a member type (tarski was given ``object`` there).
+
+    Without ``objects`` (the problem's), the domain's actions are checked,
+    implicit constants left out (their type is the problem's); with them,
+    the actions' uses of implicit constants, and ``problem``'s init and goal.
+    """
+    subtypes = domain.subtypes()
+    eithers = {p.name: {k: t for k, (_, t) in enumerate(p.params) if t in subtypes and t.startswith("(either ")}
+               for p in domain.predicates.values()}
+    if not any(eithers.values()):
+        return
+    for act in domain.actions:
+        terms = {**domain.constants, **dict(act.params)}
+        if objects is not None:
+            terms = {n: objects[n] for n in domain.implicit_constants if n in objects}
+        literals = [*act.precondition, *map(Literal, act.add), *map(Literal, act.delete)]
+        node = src.action(act.name)
+        _check_either_literals(literals, terms, eithers, subtypes, src, [node] if node is not None else [])
+    if problem is not None:
+        psrc, prob = problem
+        terms = {**domain.constants, **prob.objects}
+        scopes = [n for n in (psrc.section(":init"), psrc.section(":goal")) if n is not None]
+        literals = [*map(Literal, sorted(prob.init)), *prob.goal]
+        _check_either_literals(literals, terms, eithers, subtypes, psrc, scopes)
+
+
+def _check_either_literals(literals: list[Literal], terms: dict[str, str], eithers: dict[str, dict[int, str]],
+                           subtypes: dict[str, set[str]], src: SourceMap, scopes: list[SExpr]) -> None:
+    for lit in literals:
+        for k, t in eithers.get(lit.atom.predicate, {}).items():
+            arg = lit.atom.args[k]
+            if arg in terms and terms[arg] not in subtypes[t]:
+                *first, last = type_members(t)
+                members = f"{', '.join(first)} or {last}" if first else last
+                raise PddlSemanticError(f"'{arg}' is a {terms[arg]}, expected either {members}",
+                                        _locate_atom_argument(src, scopes, lit.atom.predicate, k, arg))
+
+
+def _locate_atom_argument(src: SourceMap, scopes: list[SExpr], pred: str, index: int, arg: str) -> Location:
+    """Where ``arg`` is argument ``index`` of an application of ``pred`` inside ``scopes``."""
+    for scope in scopes:
+        for node in (scope, *scope.walk()):
+            if isinstance(node, SExpr) and node.head() == pred and len(node.items) > index + 1:
+                tok = node.items[index + 1]
+                if isinstance(tok, Token) and tok.lower == arg:
+                    return src.location(tok.line, tok.col)
+    return src.locate(arg)
 
 
 def _tarski_functions(lang, src: SourceMap) -> dict[str, Predicate]:
@@ -617,8 +804,9 @@ def parse_domain(path: str | Path) -> Domain:
     if fast is not None:
         return fast
     reader = _new_reader()
-    _tarski_parse(reader, "domain", src)
-    return _domain_from_tarski(reader, src, name)
+    rewrite = _rewrite_for(src, None)
+    _tarski_parse(reader, "domain", src, rewrite)
+    return _domain_from_tarski(reader, src, name, rewrite)
 
 
 def _check_kind(src: SourceMap, kind: str) -> None:
@@ -657,13 +845,30 @@ def parse_task(domain_path: str | Path, problem_path: str | Path, *, domain_text
         if problem is not None:
             return domain, problem
     reader = _new_reader()
-    _tarski_parse(reader, "domain", dsrc)
-    domain = _domain_from_tarski(reader, dsrc, dname)
+    rewrite = _rewrite_for(dsrc, psrc)
+    if rewrite.fresh:
+        # Tarski is told the problem's types of implicit constants; the domain's own
+        # errors come first all the same, as the domain alone has them (the fast path's order).
+        alone = _rewrite_for(dsrc, None)
+        _tarski_parse(reader, "domain", dsrc, alone)
+        _check_belongs(psrc, _domain_from_tarski(reader, dsrc, dname, alone), rewrite)
+        reader = _new_reader()
+    _tarski_parse(reader, "domain", dsrc, rewrite)
+    domain = _domain_from_tarski(reader, dsrc, dname, rewrite)
     domain_constants = dict(domain.constants)
-    _check_domain_reference(psrc, domain)
-    _tarski_parse(reader, "problem", psrc)
-    problem = _problem_from_tarski(reader, psrc, pname, domain_constants)
+    _check_belongs(psrc, domain, rewrite)
+    _tarski_parse(reader, "problem", psrc, rewrite)
+    problem = _problem_from_tarski(reader, psrc, pname, domain_constants, rewrite)
+    _check_either_arguments(domain, dsrc, problem.objects, (psrc, problem))
     return domain, problem
+
+
+def _check_belongs(psrc: SourceMap, domain: Domain, rewrite: _Rewrite) -> None:
+    """The problem names the domain and declares every implicit constant of it."""
+    _check_domain_reference(psrc, domain)
+    for name, use in rewrite.implicit.items():
+        if name not in rewrite.fresh:  # the problem does not declare it either
+            raise names.undeclared_implicit_constant(domain.source, use)
 
 
 def _check_domain_reference(psrc: SourceMap, domain: Domain) -> None:
@@ -678,12 +883,17 @@ def _check_domain_reference(psrc: SourceMap, domain: Domain) -> None:
             )
 
 
-def _problem_from_tarski(reader, src: SourceMap, path: str, domain_constants: dict[str, str]) -> Problem:
+def _problem_from_tarski(reader, src: SourceMap, path: str, domain_constants: dict[str, str],
+                         rewrite: _Rewrite) -> Problem:
     lang = reader.problem.language
+    # Tarski has each implicit constant as a domain constant (of the problem's
+    # type) and the problem's declaration of it under a fresh name, which
+    # keeps its place in the order of the problem's objects.
+    back = {new: old for old, new in rewrite.fresh.items()}
     objects = {
-        str(c.name).lower(): str(c.sort.name).lower()
+        back.get(str(c.name).lower(), str(c.name).lower()): rewrite.type_name(c.sort.name)
         for c in lang.constants()
-        if str(c.name).lower() not in domain_constants
+        if str(c.name).lower() not in domain_constants and str(c.name).lower() not in rewrite.implicit
     }
     init: set[Atom] = set()
     for atom in reader.problem.init.as_atoms():

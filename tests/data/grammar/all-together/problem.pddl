@@ -1,0 +1,8 @@
+(define (problem fetch-the-wrench)
+  (:domain workshop)
+  (:objects cart - cart wrench - tool bay yard shed - place)
+  (:init (at cart bay) (at wrench shed)
+         (road bay shed) (road bay yard) (road yard shed)
+         (= (distance bay shed) 9) (= (distance bay yard) 2) (= (distance yard shed) 3))
+  (:goal (have wrench))
+  (:metric minimize (total-cost)))

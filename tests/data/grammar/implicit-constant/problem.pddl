@@ -1,0 +1,5 @@
+(define (problem garage-1)
+  (:domain garage)
+  (:objects w1 w2 - wheel wrench - tool)
+  (:init (in-boot wrench) (tight w1) (tight w2))
+  (:goal (and (loose w1) (loose w2))))

@@ -1,0 +1,5 @@
+(define (problem garage-2)
+  (:domain garage)
+  (:objects w1 - wheel)
+  (:init (tight w1))
+  (:goal (loose w1)))
