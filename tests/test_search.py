@@ -56,7 +56,8 @@ def test_astar_is_optimal_and_proves_unsolvability(tmp_path, pddl):
 
 
 @pytest.mark.parametrize("name,length", [("blocks/task04", 12), ("gripper/task01", 11), ("logistics/task01", 20),
-                                         ("depot/task01", 10), ("satellite/task02", 13), ("miconic/task03", 10)])
+                                         ("depot/task01", 10), ("satellite/task02", 13), ("miconic/task03", 10),
+                                         ("zenotravel/task03", 6), ("zenotravel/task05", 11)])
 def test_ipc_plans_have_pyperplans_optimal_lengths(name, length):
     # Lengths as pyperplan's own `pyperplan -s astar -H lmcut` reports them.
     domain, problem = name.split("/")
