@@ -49,7 +49,7 @@ def test_a_chain_whose_worker_dies_is_crashed_rows_and_the_run_goes_on(client, m
                                            allowed_failures=0)
         return real(chain, *args, **kwargs)
 
-    monkeypatch.setattr(benchmark, "run_chain", dies_on_the_first)
+    monkeypatch.setattr(benchmark.runner, "run_chain", dies_on_the_first)
     rows = run_suite(suite, ["landmark"], ["consistent"], 30.0, executor="dask", scheduler=client)
     by_id = {r["id"]: r for r in rows}
     assert by_id[suite[0].id]["status"] == "crashed" and "worker died: KilledWorker" in by_id[suite[0].id]["excuse"]

@@ -18,7 +18,7 @@ def kitchen_task():
 
 def fake_run(monkeypatch, script: str) -> None:
     """Make every run execute ``script`` in a fresh interpreter instead of guided-lfd."""
-    monkeypatch.setattr(benchmark, "command_line", lambda *args: [sys.executable, "-c", script])
+    monkeypatch.setattr(benchmark.runner, "command_line", lambda *args: [sys.executable, "-c", script])
 
 
 def test_a_run_is_the_command_line_with_its_wall_time():
@@ -54,7 +54,7 @@ def test_a_process_that_dies_is_recorded_as_crashed_with_its_last_words(monkeypa
 
 def test_a_run_far_past_its_limit_is_killed_as_a_timeout(monkeypatch):
     fake_run(monkeypatch, "import time; time.sleep(30)")
-    monkeypatch.setattr(benchmark, "KILL_GRACE_S", 0.5)
+    monkeypatch.setattr(benchmark.runner, "KILL_GRACE_S", 0.5)
     row = run_one(kitchen_task(), "landmark", "literal", 0.5)
     assert row["status"] == "timeout" and row["excuse"] == "killed 0.5 s past the limit"
     assert 1.0 <= float(row["wall_s"]) < 10
@@ -66,7 +66,7 @@ def printed_by(code: str) -> list[str]:
 
 
 def test_memory_limit_caps_the_soft_limit_and_a_huge_allocation_fails():
-    code = ("import os, resource\nfrom guided_lfd.benchmark import cap_memory\n"
+    code = ("import os, resource\nfrom guided_lfd.memory import cap_memory\n"
             "cap_memory(os.getpid(), 2048)\n"
             "print(resource.getrlimit(resource.RLIMIT_AS)[0] == 2048 * 2 ** 20)\n"
             "try:\n    bytearray(4 * 1024 ** 3)\nexcept MemoryError:\n    print('memout')\n")
@@ -74,7 +74,7 @@ def test_memory_limit_caps_the_soft_limit_and_a_huge_allocation_fails():
 
 
 def test_memory_limit_stays_below_a_hard_limit_already_in_force():
-    code = ("import os, resource\nfrom guided_lfd.benchmark import cap_memory\n"
+    code = ("import os, resource\nfrom guided_lfd.memory import cap_memory\n"
             "resource.setrlimit(resource.RLIMIT_AS, (3 * 2 ** 30, 3 * 2 ** 30))\n"
             "cap_memory(os.getpid(), 8192)\n"
             "print(resource.getrlimit(resource.RLIMIT_AS) == (3 * 2 ** 30, 3 * 2 ** 30))\n")
@@ -111,7 +111,7 @@ def test_a_stopping_strategy_gives_up_on_a_family_after_its_first_unfinished_tas
         return benchmark._complete({"id": task.id, "task": task.task, "strategy": strategy, "semantics": semantics,
                                     "status": statuses[task.task] if strategy == "baseline" else "excuse-found"})
 
-    monkeypatch.setattr(benchmark, "run_one", fake)
+    monkeypatch.setattr(benchmark.runner, "run_one", fake)
     rows = benchmark.run_suite(list(reversed(family(3))), ["landmark", "baseline"], ["literal"], 60.0, jobs=2)
     assert sorted(ran) == [("task01", "baseline"), ("task01", "landmark"), ("task02", "baseline"),
                            ("task02", "landmark"), ("task03", "landmark")]
@@ -128,7 +128,7 @@ def test_a_resumed_run_keeps_its_rows_and_its_stops(monkeypatch):
         return benchmark._complete({"id": task.id, "task": task.task, "strategy": strategy, "semantics": semantics,
                                     "status": "excuse-found"})
 
-    monkeypatch.setattr(benchmark, "run_one", fake)
+    monkeypatch.setattr(benchmark.runner, "run_one", fake)
     previous = [benchmark._complete({"id": "d-task01-a", "task": "task01", "strategy": "baseline",
                                      "semantics": "literal", "status": "timeout"})]
     rows = benchmark.run_suite(family(2), ["baseline"], ["literal"], 60.0, jobs=1, previous=previous)

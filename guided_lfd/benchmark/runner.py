@@ -1,0 +1,245 @@
+"""Running the suite: each (task, strategy, semantics) a whole ``guided-lfd excuse`` process, locally or on Dask."""
+
+from __future__ import annotations
+
+import sys
+import time
+from pathlib import Path
+from typing import Any, Callable, Iterable
+
+from guided_lfd.memory import cap_memory
+from guided_lfd.benchmark.suite import BenchTask, robot_domain_file
+from guided_lfd.benchmark.results import SOLVED, _complete
+
+
+#: Runs whose strategy stops on a family (domain, removed action, semantics) after its first
+#: unfinished task: later, larger tasks of that family are recorded as ``not-run`` and counted
+#: as unsolved at the limit (as the household series does for the baseline).
+STOP_AFTER_UNFINISHED = ("baseline",)
+
+
+#: A run still going this long past its time limit is killed (recorded as ``timeout``).
+KILL_GRACE_S = 60.0
+
+
+#: Exit code of a run whose memory ran out (see guided_lfd.errors.EXIT_MEMORY).
+_EXIT_MEMORY = 22
+
+
+def cli_command() -> list[str]:
+    """The installed ``guided-lfd`` beside this interpreter (or the same entry point run by it)."""
+    exe = Path(sys.executable).with_name("guided-lfd")
+    return [str(exe)] if exe.exists() else [sys.executable, "-c", "from cli.main import run; run()"]
+
+
+def command_line(task: BenchTask, strategy: str, semantics: str, time_limit: float, robot_file: Path) -> list[str]:
+    """The ``guided-lfd excuse`` command a user would type for this run."""
+    cmd = cli_command()
+    cmd += ["excuse", str(robot_file), task.problem_file, "--semantics", semantics, "--strategy", strategy,
+            "--time-limit", f"{time_limit:g}", "--json", "--quiet"]
+    if task.fixed_from:
+        cmd += ["--fixed-from", task.fixed_from]
+    return cmd
+
+
+def run_one(task: BenchTask, strategy: str, semantics: str, time_limit: float,
+            memory_limit_mb: int | None = None, workdir: Path | None = None) -> dict[str, Any]:
+    """One whole run of ``guided-lfd excuse`` in its own process; its result row (never raises).
+
+    ``wall_s`` is the process's wall time as the shell sees it (start-up,
+    parsing, grounding, search and the robot's optimal plan); ``time_s`` and
+    ``search_time_s`` are the run's own figures.  A run still going 60 s past
+    its limit (:data:`KILL_GRACE_S`) is killed and recorded as ``timeout``.
+    """
+    import json
+    import subprocess
+    import tempfile
+
+    row: dict[str, Any] = {"id": task.id, "domain": task.domain, "task": task.task,
+                           "removed_action": task.removed_action, "semantics": semantics, "strategy": strategy}
+    folder = workdir or Path(tempfile.gettempdir()) / "guided-lfd-bench"
+    folder.mkdir(parents=True, exist_ok=True)
+    try:
+        cmd = command_line(task, strategy, semantics, time_limit, robot_domain_file(task, folder))
+    except Exception as exc:  # a benchmark row records failures instead of stopping the run
+        row.update(status="error", excuse=f"{type(exc).__name__}: {exc}"[:300])
+        return _complete(row)
+    start = time.perf_counter()
+    # The memory cap is set on the started process (prlimit), not in a pre-exec hook:
+    # those are unsafe while other threads run, and the local executor is threads.
+    proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    if memory_limit_mb:
+        cap_memory(proc.pid, memory_limit_mb)
+    try:
+        stdout, stderr = proc.communicate(timeout=time_limit + KILL_GRACE_S)
+        code = proc.returncode
+    except subprocess.TimeoutExpired:
+        proc.kill()
+        proc.communicate()
+        code, stdout, stderr = None, "", ""
+    row.update(wall_s=round(time.perf_counter() - start, 4), exit_code="" if code is None else code)
+    try:
+        doc = json.loads(stdout)
+    except json.JSONDecodeError:
+        doc = None
+    if doc is None:
+        if code is None:
+            status, note = "timeout", f"killed {KILL_GRACE_S:g} s past the limit"
+        elif code == _EXIT_MEMORY:
+            status, note = "memout", ""
+        else:
+            status = "crashed"
+            note = (stderr.strip().splitlines() or [f"process ended with exit code {code}"])[-1]
+        row.update(status=status, excuse=note[:300])
+        return _complete(row)
+    stats = doc.get("statistics") or {}
+    row.update(status=doc["status"], time_s=stats.get("time_s", ""), search_time_s=stats.get("search_time_s", ""),
+               candidates=stats.get("candidates", 0), planner_calls=stats.get("planner_calls", 0),
+               expanded=stats.get("nodes_expanded", 0))
+    excuse = doc.get("excuse")
+    if excuse:
+        row.update(size=excuse["size"], cost=excuse["cost"], excuse=" ".join(c["change"] for c in excuse["changes"]))
+    elif doc["status"] not in SOLVED and doc.get("message"):
+        row.update(excuse=str(doc["message"])[:300])
+    return _complete(row)
+
+
+Run = tuple[BenchTask, str, str]  # (task, strategy, semantics)
+
+
+def chains(suite: list[BenchTask], strategies: list[str], semantics: list[str],
+           stop_after_unfinished: Iterable[str] = STOP_AFTER_UNFINISHED) -> list[list[Run]]:
+    """The runs as chains run in order: one chain per family for a stopping strategy, else one run each.
+
+    A family is (domain, removed action, semantics); its tasks run in task
+    order, so that a stopping strategy can give up on it after the first task
+    it does not finish.  Chains of stopping strategies come first (they are long).
+    """
+    stopping = set(stop_after_unfinished)
+    families: dict[tuple[str, str, str, str], list[Run]] = {}
+    singles: list[list[Run]] = []
+    for task in suite:
+        for sem in semantics:
+            for strategy in strategies:
+                if strategy in stopping:
+                    families.setdefault((strategy, task.domain, task.removed_action, sem), []).append(
+                        (task, strategy, sem))
+                else:
+                    singles.append([(task, strategy, sem)])
+    ordered = [sorted(chain, key=lambda run: run[0].task) for _, chain in sorted(families.items())]
+    return ordered + singles
+
+
+def not_run(task: BenchTask, strategy: str, semantics: str, reason: str) -> dict[str, Any]:
+    """The row of a run left out after its family's first unfinished task."""
+    return _complete({"id": task.id, "domain": task.domain, "task": task.task, "removed_action": task.removed_action,
+                      "semantics": semantics, "strategy": strategy, "status": "not-run", "excuse": reason})
+
+
+def crashed(task: BenchTask, strategy: str, semantics: str, exc: BaseException) -> dict[str, Any]:
+    """The row of a run whose worker died under it (Dask's KilledWorker, a crash): counted as crashed."""
+    reason = f"worker died: {type(exc).__name__}: {exc}"
+    return _complete({"id": task.id, "domain": task.domain, "task": task.task, "removed_action": task.removed_action,
+                      "semantics": semantics, "strategy": strategy, "status": "crashed", "excuse": reason[:300]})
+
+
+def run_chain(chain: list[Run], time_limit: float, memory_limit_mb: int | None = None,
+              previous: dict[tuple[str, str, str], dict[str, Any]] | None = None,
+              on_row: Callable[[dict[str, Any]], None] | None = None, stop: bool = False) -> list[dict[str, Any]]:
+    """Run a chain in order; with ``stop``, after the first unfinished run the rest are ``not-run``.
+
+    ``previous`` holds rows of an interrupted run (resume): they are not run again.
+    """
+    rows: list[dict[str, Any]] = []
+    stopped_at: str | None = None
+    for task, strategy, sem in chain:
+        key = (task.id, strategy, sem)
+        if previous and key in previous:
+            row, fresh = previous[key], False
+        elif stopped_at is not None:
+            row, fresh = not_run(task, strategy, sem, f"not run: {stopped_at} was not finished"), True
+        else:
+            row, fresh = run_one(task, strategy, sem, time_limit, memory_limit_mb), True
+        if stop and stopped_at is None and row["status"] not in SOLVED:
+            stopped_at = task.task
+        rows.append(row)
+        if fresh and on_row:
+            on_row(row)
+    return rows
+
+
+def run_suite(
+    suite: list[BenchTask],
+    strategies: list[str],
+    semantics: list[str],
+    time_limit: float,
+    jobs: int = 2,
+    executor: str = "local",
+    scheduler: str | None = None,
+    on_row: Callable[[dict[str, Any]], None] | None = None,
+    previous: list[dict[str, Any]] | None = None,
+    memory_limit_mb: int | None = None,
+    stop_after_unfinished: Iterable[str] = STOP_AFTER_UNFINISHED,
+) -> list[dict[str, Any]]:
+    """Run every (task, strategy, semantics), ``jobs`` command-line processes at a time.
+
+    ``executor`` is ``local`` (a thread per job, each starting ``guided-lfd``
+    processes) or ``dask`` (each chain a task on the cluster, whose workers
+    need guided-lfd installed; ``scheduler`` is its address or a
+    ``distributed.Client``).  A chain whose Dask worker dies gives
+    ``crashed`` rows, and the run goes on.  Each run's address space is capped at
+    ``memory_limit_mb`` (a run that needs more ends as ``memout``).
+    ``previous`` rows (an interrupted run's) are kept and not run again.
+    """
+    stopping = set(stop_after_unfinished)
+    work = chains(suite, strategies, semantics, stopping)
+    done = {(r["id"], r["strategy"], r["semantics"]): r for r in previous or []}
+    if executor == "dask":
+        return _run_dask(work, time_limit, scheduler, on_row, memory_limit_mb, done, stopping)
+    import threading
+    from concurrent.futures import ThreadPoolExecutor
+
+    lock = threading.Lock()
+
+    def report(row: dict[str, Any]) -> None:
+        if on_row:
+            with lock:
+                on_row(row)
+
+    rows: list[dict[str, Any]] = []
+    with ThreadPoolExecutor(max_workers=max(1, jobs)) as pool:
+        futures = [pool.submit(run_chain, chain, time_limit, memory_limit_mb, done, report,
+                               chain[0][1] in stopping) for chain in work]
+        for fut in futures:
+            rows.extend(fut.result())
+    return sorted(rows, key=lambda r: (r["id"], r["semantics"], r["strategy"]))
+
+
+def _run_dask(work, time_limit, scheduler, on_row, memory_limit_mb, done, stopping):
+    try:
+        from dask.distributed import Client, as_completed
+    except ImportError:
+        raise ImportError("the dask executor needs the 'dist' extra: pip install 'guided-lfd[dist]'") from None
+    client = scheduler if isinstance(scheduler, Client) else Client(scheduler) if scheduler else Client(processes=True)
+    try:
+        # No retries: a run is timed, and a rerun on another worker would not be the same run.
+        futures, chain_of = [], {}
+        for chain in work:
+            fut = client.submit(run_chain, chain, time_limit, memory_limit_mb, done, None,
+                                chain[0][1] in stopping, pure=False, retries=0)
+            futures.append(fut)
+            chain_of[fut.key] = chain
+        rows = []
+        for fut in as_completed(futures):
+            try:
+                chain_rows = fut.result()
+            except Exception as exc:  # noqa: BLE001 - KilledWorker, a worker's crash: rows, not a traceback
+                chain_rows = [crashed(task, strategy, sem, exc) for task, strategy, sem in chain_of[fut.key]]
+            for row in chain_rows:
+                rows.append(row)
+                if on_row and (row["id"], row["strategy"], row["semantics"]) not in done:
+                    on_row(row)
+    finally:
+        if not isinstance(scheduler, Client):
+            client.close()
+    return sorted(rows, key=lambda r: (r["id"], r["semantics"], r["strategy"]))

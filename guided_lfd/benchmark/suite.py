@@ -1,0 +1,134 @@
+"""The benchmark suite: IPC (and kitchen) tasks made unsolvable by removing one skill, as a CSV."""
+
+from __future__ import annotations
+
+import csv
+import time
+from dataclasses import asdict, dataclass, replace
+from pathlib import Path
+from typing import Callable, Iterable
+
+
+
+SUITE_FIELDS = ["id", "domain", "task", "removed_action", "domain_file", "problem_file", "fixed_from"]
+
+
+@dataclass(frozen=True)
+class BenchTask:
+    """One benchmark task: a problem and the robot domain without ``removed_action``."""
+
+    id: str
+    domain: str
+    task: str
+    removed_action: str
+    domain_file: str
+    problem_file: str
+    fixed_from: str  # the complete domain ("" = none)
+
+    def load(self):
+        """(robot domain, problem, complete domain or None)."""
+        from guided_lfd.pddl.reader import parse_domain, parse_task
+
+        full, problem = parse_task(self.domain_file, self.problem_file)
+        robot = full
+        if self.removed_action:
+            robot = replace(full, actions=[a for a in full.actions if a.name != self.removed_action])
+        complete = parse_domain(self.fixed_from) if self.fixed_from else None
+        return robot, problem, complete
+
+
+def _robot_solves(robot, problem, complete, time_limit: float) -> bool | None:
+    """Whether the robot can solve the task (None = undecided in time)."""
+    from guided_lfd.errors import SearchTimeout
+    from guided_lfd.excuse.engine import ExcuseOptions
+    from guided_lfd.excuse.reach import ReachabilityOracle
+    from guided_lfd.excuse.space import Semantics, build_space
+    from guided_lfd.grounding import ground
+
+    options = ExcuseOptions(fixed_from=complete)
+    fixed = options.fixed_predicates(robot)
+    task = ground(robot, problem, fixed=fixed)
+    space = build_space(task, Semantics.LITERAL, fixed)
+    oracle = ReachabilityOracle(space, time.monotonic() + time_limit)
+    try:
+        return oracle.solve(task.init) is not None
+    except SearchTimeout:
+        return None
+
+
+def generate_suite(ipc_root: Path, kitchen_root: Path | None, tasks: Iterable[str],
+                   check_time: float = 20.0, log: Callable[[str], None] = print) -> list[BenchTask]:
+    """Every (domain, task, removed action) whose robot domain cannot solve the task."""
+    from guided_lfd.pddl.reader import parse_task
+
+    out: list[BenchTask] = []
+    for domain_dir in sorted(p for p in ipc_root.iterdir() if (p / "domain.pddl").is_file()):
+        for name in tasks:
+            problem_file = domain_dir / f"{name}.pddl"
+            if not problem_file.is_file():
+                continue
+            full, _ = parse_task(domain_dir / "domain.pddl", problem_file)
+            for action in full.actions:
+                bt = BenchTask(f"{domain_dir.name}-{name}-{action.name}", domain_dir.name, name, action.name,
+                               str(domain_dir / "domain.pddl"), str(problem_file), str(domain_dir / "domain.pddl"))
+                robot, problem, complete = bt.load()
+                solvable = _robot_solves(robot, problem, complete, check_time)
+                log(f"{bt.id}: {'solvable' if solvable else 'undecided' if solvable is None else 'UNSOLVABLE'}")
+                if solvable is False:
+                    out.append(bt)
+    if kitchen_root is not None:
+        for kdir in sorted(p for p in kitchen_root.iterdir() if (p / "robot.pddl").is_file()):
+            out.append(BenchTask(f"{kdir.name}-problem", kdir.name, "problem", "", str(kdir / "robot.pddl"),
+                                 str(kdir / "problem.pddl"), str(kdir / "human.pddl")))
+    return out
+
+
+def _relative(path: str, root: Path) -> str:
+    try:
+        return str(Path(path).resolve().relative_to(root.resolve()))
+    except ValueError:
+        return path
+
+
+def write_suite(suite: list[BenchTask], path: Path, root: Path) -> None:
+    """Write the suite as CSV with paths relative to ``root``."""
+    from guided_lfd.io import write_text
+    import io
+
+    buf = io.StringIO()
+    writer = csv.DictWriter(buf, fieldnames=SUITE_FIELDS, lineterminator="\n")
+    writer.writeheader()
+    for t in suite:
+        row = asdict(t)
+        for key in ("domain_file", "problem_file", "fixed_from"):
+            row[key] = _relative(row[key], root) if row[key] else ""
+        writer.writerow(row)
+    write_text(path, buf.getvalue())
+
+
+def read_suite(path: Path, root: Path) -> list[BenchTask]:
+    """Read a suite CSV; relative paths are taken from ``root``."""
+    out = []
+    with open(path, newline="", encoding="utf-8") as fh:
+        for row in csv.DictReader(fh):
+            for key in ("domain_file", "problem_file", "fixed_from"):
+                if row[key] and not Path(row[key]).is_absolute():
+                    row[key] = str(root / row[key])
+            out.append(BenchTask(**row))
+    return out
+
+
+def robot_domain_file(task: BenchTask, folder: Path) -> Path:
+    """The robot's domain file for ``task`` (the domain without ``removed_action``), written once."""
+    if not task.removed_action:
+        return Path(task.domain_file)
+    path = folder / f"{task.domain}-without-{task.removed_action}.pddl"
+    if not path.exists():
+        from guided_lfd.io import write_text
+        from guided_lfd.pddl.reader import parse_domain
+        from guided_lfd.pddl.writer import domain_to_pddl
+
+        full = parse_domain(task.domain_file)
+        robot = replace(full, actions=[a for a in full.actions if a.name != task.removed_action])
+        write_text(path, domain_to_pddl(robot, header=f"{task.domain} without {task.removed_action}"))
+    return path
