@@ -29,7 +29,7 @@ demos: setup
 
 # The paper's user study from the shipped data: results/study.md, CSVs, PNGs.
 reproduce-study: setup
-	$(BIN)/python -m guided_lfd.study --root . --out results
+	$(BIN)/guided-lfd study --root . --out results
 
 test: setup
 	$(BIN)/python -m pytest -q -n $(JOBS)

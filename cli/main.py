@@ -66,6 +66,10 @@ SUBCOMMANDS: dict[str, Subcommand] = {
         "cli.validate", "validate",
         "Execute PLAN from the problem's initial state; say which precondition of which step fails.",
     ),
+    "study": Subcommand(
+        "cli.study", "study",
+        "Reproduce the paper's user study: study.md, CSVs, plots and per-demonstration artefacts in --out.",
+    ),
 }
 
 

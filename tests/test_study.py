@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import csv
+import json
 from pathlib import Path
 
 import pytest
@@ -68,8 +70,27 @@ def test_study_report_and_files(study):
     md = (out / "study.md").read_text()
     assert "| mean time ratio, guided / complete (Table I) | 0.385 (61% less time) | 0.385" in md
     assert "holds for every demonstrator and both kitchens" in md
-    for name in ("study-time.csv", "study-size.csv", "study-measures.csv", "study.json"):
-        assert (out / name).stat().st_size > 0
+    tables = {name: list(csv.DictReader(open(out / name, encoding="utf-8")))
+              for name in ("study-time.csv", "study-size.csv", "study-measures.csv")}
+    # 2 kitchens x 5 demonstrators (x 2 demonstrations for the times).
+    assert [len(rows) for rows in tables.values()] == [20, 10, 10]
+    assert tables["study-time.csv"][0] == {"kitchen": "kitchen-1", "demonstrator": "P1", "demonstration": "excuse",
+                                           "paper_time_s": "3.71", "reproduced_time_s": "3.7"}
+    assert {r["excuse_on_merged_domain"] for r in tables["study-measures.csv"]} == {"already-solvable"}
+    doc = json.loads((out / "study.json").read_text())
+    assert (doc["format"], doc["format_version"]) == ("guided-lfd/study", 1)
+    assert doc["reproduced"]["size_reduction_kitchen-1"] == pytest.approx(0.677, abs=1e-3)
+    assert [k["excuse"] for k in doc["kitchens"]] == [["+(open pinkdrawer)"], ["+(clear pinkdrawer)"]]
+    learned = (out / "study" / "kitchen-1" / "P1-excuse.learned.pddl").read_text()
+    assert learned.startswith(";; Learned by guided-lfd from data/demos/kitchen-1/P1-excuse.csv")
+
+
+def test_the_study_subcommand_writes_what_reproduce_writes(study, runner, app, tmp_path):
+    out, _, _ = study
+    result = runner.invoke(app, ["study", "--root", str(ROOT), "--out", str(tmp_path), "--quiet"])
+    assert result.exit_code == 0, result.output
+    assert result.stdout.splitlines()[1].startswith("mean time ratio (guided / complete)")
+    assert _files(tmp_path) == _files(out)
 
 
 def _files(folder: Path) -> dict[str, bytes]:

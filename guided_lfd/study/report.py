@@ -1,235 +1,20 @@
-"""The paper's user study, reproduced end to end (``make reproduce-study``).
-
-For Kitchen I and II and demonstrators P1-P5 the whole chain runs on the
-shipped demonstrations (``data/demos``): segment -> learn-domain -> merge ->
-excuse -> evaluate.  Its results are put beside the paper's own measurements
-(``data/study``: Table I demonstration times, Table II sizes).
-
-Everything written is deterministic (no timings, sorted output, plots without
-date metadata), so two runs give byte-identical files.
-
-Run: ``python -m guided_lfd.study [--data data] [--out results]``.
-"""
+"""The study's report: tables (CSV, markdown), plots and the side-by-side summary."""
 
 from __future__ import annotations
 
-import argparse
 import csv
 import io
 
 import statistics
-import sys
-from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any, Callable
+from typing import Any
 
-from guided_lfd.demonstration.learn import ground_actions, learn_domain
-from guided_lfd.demonstration.segment import segment, segments_document
-from guided_lfd.demonstration.trace import load_demonstration
-from guided_lfd.evaluate import (
-    PredictedSizes, RobotReachability, misdirected_guidance, predicted_sizes, solvability_after, usefulness,
-)
-from guided_lfd.excuse.engine import describe_change, find_excuses
 from guided_lfd.io import json_document, write_text
-from guided_lfd.merge import merge_domains
-from guided_lfd.pddl.model import Domain
-from guided_lfd.pddl.reader import parse_domain, parse_task
-from guided_lfd.pddl.writer import domain_to_pddl
-
-KITCHENS = ("kitchen-1", "kitchen-2")
-KITCHEN_NAMES = {"kitchen-1": "Kitchen I", "kitchen-2": "Kitchen II"}
-DEMONSTRATORS = ("P1", "P2", "P3", "P4", "P5")
-#: The demonstrator whose complete demonstrations the paper's tool could not
-#: process (parallel hand activities); the paper excludes them from sizes.
-UNPROCESSED_BY_PAPER = "P3"
-#: Bound on the human states explored for misdirected guidance.
-STUDY_EXPLORATION_BOUND = 20_000
 
 
-# -- the paper's data ------------------------------------------------------------------
+from guided_lfd.study.paper import DEMONSTRATORS, KITCHEN_NAMES, PaperData, headline, size_reduction, time_ratios
+from guided_lfd.study.run import KitchenResult, _round
 
-@dataclass
-class PaperData:
-    """Tables I and II as shipped in ``data/study``."""
-
-    times: dict[tuple[str, str, str], float]  # (kitchen, demonstrator, excuse|complete) -> s
-    printed_ratio: dict[str, float]  # Table I's bottom row, as printed
-    sizes: dict[tuple[str, str], dict[str, int | None]]  # (kitchen, demonstrator) -> column -> value
-
-
-def _rows(path: Path) -> list[dict[str, str]]:
-    with open(path, encoding="utf-8", newline="") as handle:
-        return list(csv.DictReader(handle))
-
-
-def load_paper_data(folder: Path) -> PaperData:
-    """Read ``table1-*.csv`` and ``table2-*.csv`` from ``folder``."""
-    times = {(r["kitchen"], r["demonstrator"], r["demonstration"]): float(r["time_s"])
-             for r in _rows(folder / "table1-demonstration-time.csv")}
-    ratio = {r["demonstrator"]: float(r["ratio"]) for r in _rows(folder / "table1-ratio.csv")}
-    sizes = {}
-    for r in _rows(folder / "table2-demonstration-size.csv"):
-        sizes[(r["kitchen"], r["demonstrator"])] = {k: (int(v) if v else None) for k, v in r.items()
-                                                    if k not in ("kitchen", "demonstrator")}
-    return PaperData(times, ratio, sizes)
-
-
-def time_ratios(times: dict[tuple[str, str, str], float]) -> dict[str, float]:
-    """Per demonstrator: excuse-guided over complete time, both kitchens pooled (Table I's Ratio row)."""
-    out = {}
-    for p in DEMONSTRATORS:
-        guided = sum(times[(k, p, "excuse")] for k in KITCHENS)
-        complete = sum(times[(k, p, "complete")] for k in KITCHENS)
-        out[p] = guided / complete
-    return out
-
-
-def size_reduction(observed: dict[tuple[str, str], tuple[int | None, int | None]], kitchen: str) -> float:
-    """1 - mean over demonstrators (P3 excluded) of observed excuse size / observed complete size."""
-    ratios = []
-    for p in DEMONSTRATORS:
-        if p == UNPROCESSED_BY_PAPER:
-            continue
-        excuse, complete = observed[(kitchen, p)]
-        if excuse is None or not complete:
-            continue
-        ratios.append(excuse / complete)
-    return 1 - statistics.fmean(ratios)
-
-
-def headline(paper: PaperData) -> dict[str, float]:
-    """The paper's headline figures, computed from the shipped tables as the paper describes."""
-    printed = statistics.fmean(paper.printed_ratio[p] for p in DEMONSTRATORS)
-    from_times = statistics.fmean(time_ratios(paper.times).values())
-    observed = {key: (v["observed_minimal_excuse"], v["observed_goal"]) for key, v in paper.sizes.items()}
-    return {
-        "mean_time_ratio": round(printed, 3),  # as the paper reports it
-        "less_time": round(1 - printed, 4),  # 0.6148: "61% less time"
-        "mean_time_ratio_from_times": round(from_times, 4),
-        **{f"size_reduction_{k}": round(size_reduction(observed, k), 4) for k in KITCHENS},
-    }
-
-
-# -- the reproduction ------------------------------------------------------------------
-
-@dataclass
-class DemoResult:
-    """One demonstration run through segment -> learn-domain."""
-
-    kitchen: str
-    demonstrator: str
-    kind: str  # excuse | complete
-    duration_s: float
-    segments: int
-    demonstrated_actions: int
-    useful_actions: int
-    learned_actions: list[str]
-    learned: Domain
-
-
-@dataclass
-class DemonstratorResult:
-    """Everything measured for one kitchen and demonstrator."""
-
-    kitchen: str
-    demonstrator: str
-    demos: dict[str, DemoResult]
-    predicted: dict[str, int | None]
-    f1: float | None
-    solvable_after_excuse_demo: bool
-    plan_after_excuse_demo: list[str] | None
-    excuse_on_merged: str
-
-
-@dataclass
-class KitchenResult:
-    """Per kitchen: the excuse the robot asks for and the measures that do not depend on the demonstrator."""
-
-    kitchen: str
-    excuse: list[str]
-    excuse_text: list[str]
-    human_predicted: dict[str, int | None]
-    human_f1: float | None
-    nonminimal_excuse: list[str]
-    misdirection: dict[str, Any]
-    demonstrators: list[DemonstratorResult] = field(default_factory=list)
-
-
-def _relative(path: Path, root: Path) -> str:
-    try:
-        return str(path.resolve().relative_to(root.resolve()))
-    except ValueError:
-        return str(path)
-
-
-def run_demo(root: Path, out: Path, kitchen: str, demonstrator: str, kind: str, robot: Domain) -> DemoResult:
-    """Segment and learn one demonstration; writes its segments JSON and learned PDDL under ``out``."""
-    trace = root / "data" / "demos" / kitchen / f"{demonstrator}-{kind}.csv"
-    state = trace.with_name(trace.stem + ".state.csv")
-    demo = load_demonstration(str(trace), str(state))
-    segments = [s for s in segment(demo) if s.activity != "Idle"]
-    doc = segments_document(demo, segments, _relative(state, root))
-    doc["trace"] = _relative(trace, root)
-    source = f"{kitchen}/{demonstrator}-{kind}"
-    steps = ground_actions(doc, source)
-    learned = learn_domain([(source, doc)], name=f"learned-{kitchen}-{demonstrator}-{kind}".lower())
-    folder = out / "study" / kitchen
-    folder.mkdir(parents=True, exist_ok=True)
-    write_text(folder / f"{demonstrator}-{kind}.segments.json", json_document("segments", doc))
-    write_text(folder / f"{demonstrator}-{kind}.learned.pddl",
-               domain_to_pddl(learned, header=f"Learned by guided-lfd from data/demos/{kitchen}/{trace.name}"))
-    times = demo.frames["time"]
-    useful = usefulness(steps, robot, doc.get("objects", {}))
-    return DemoResult(kitchen, demonstrator, kind, round(float(times.max() - times.min()), 2), len(segments),
-                      len(steps), useful.useful, [a.name for a in learned.actions], learned)
-
-
-def run_kitchen(root: Path, out: Path, kitchen: str, bound: int = STUDY_EXPLORATION_BOUND,
-                progress: Callable[[str], None] | None = None) -> KitchenResult:
-    """The chain for one kitchen and all demonstrators."""
-    folder = root / "data" / "domains" / kitchen
-    robot, problem = parse_task(str(folder / "robot.pddl"), str(folder / "problem.pddl"))
-    human = parse_domain(str(folder / "human.pddl"))
-    report = find_excuses(robot, problem)
-    if report.excuse is None:
-        raise RuntimeError(f"{kitchen}: the robot's task has no excuse ({report.status})")
-    excuse = report.excuse.changes
-    reach = RobotReachability(robot, problem)
-    reference = predicted_sizes(human, problem, excuse, reach)
-    misdirection = misdirected_guidance(human, robot, problem, excuse, bound, reach)
-    result = KitchenResult(
-        kitchen, [str(c) for c in excuse], [describe_change(c, problem.spellings) for c in excuse],
-        _predicted(reference), _round(reference.f1), reference.nonminimal_changes,
-        misdirection.as_dict(),
-    )
-    for p in DEMONSTRATORS:
-        if progress:
-            progress(f"{KITCHEN_NAMES[kitchen]} {p}")
-        demos = {kind: run_demo(root, out, kitchen, p, kind, robot) for kind in ("excuse", "complete")}
-        # Solvability after demonstration: the prior + what the excuse demonstration taught.
-        merged = merge_domains([robot, demos["excuse"].learned], name=robot.name).domain
-        write_text(out / "study" / kitchen / f"{p}.merged.pddl",
-                   domain_to_pddl(merged, header=f"Merged by guided-lfd: {kitchen}/robot.pddl + {p}-excuse"))
-        solv = solvability_after(merged, problem, robot)
-        on_merged = find_excuses(merged, problem).status
-        # Predicted sizes: planning on what this demonstrator showed (both demonstrations) + the prior.
-        knowledge = merge_domains([robot, demos["excuse"].learned, demos["complete"].learned], name=robot.name).domain
-        sizes = predicted_sizes(knowledge, problem, excuse, reach)
-        result.demonstrators.append(DemonstratorResult(
-            kitchen, p, demos, _predicted(sizes), _round(sizes.f1), solv.solvable, solv.plan, on_merged))
-    return result
-
-
-def _predicted(sizes: PredictedSizes) -> dict[str, int | None]:
-    return {"minimal_excuse": sizes.minimal_excuse, "nonminimal_excuse": sizes.nonminimal_excuse,
-            "goal": sizes.goal, "remaining_after_excuse": sizes.remaining_after_excuse}
-
-
-def _round(value: float | None, digits: int = 3) -> float | None:
-    return None if value is None else round(value, digits)
-
-
-# -- writing the results ---------------------------------------------------------------
 
 def _csv_text(header: list[str], rows: list[list[Any]]) -> str:
     buf = io.StringIO()
@@ -457,11 +242,8 @@ def side_by_side(paper: PaperData, kitchens: list[KitchenResult]) -> str:
     return "\n".join(lines) + "\n"
 
 
-def reproduce(root: Path, out: Path,
-              progress: Callable[[str], None] | None = None) -> tuple[PaperData, list[KitchenResult]]:
-    """Run the study and write ``out/study.md``, CSVs, plots and per-demonstration artefacts."""
-    paper = load_paper_data(root / "data" / "study")
-    kitchens = [run_kitchen(root, out, k, progress=progress) for k in KITCHENS]
+def write_report(out: Path, paper: PaperData, kitchens: list[KitchenResult]) -> None:
+    """Write ``out/study.md``, the three CSV tables, the plots and ``study.json``."""
     out.mkdir(parents=True, exist_ok=True)
     for name, (header, rows) in (("study-time.csv", time_table(paper, kitchens)),
                                  ("study-size.csv", size_table(paper, kitchens)),
@@ -482,27 +264,3 @@ def reproduce(root: Path, out: Path,
                                                for d in k.demonstrators]}
                             for k in kitchens]}
     write_text(out / "study.json", json_document("study", summary))
-    return paper, kitchens
-
-
-def main(argv: list[str] | None = None) -> int:
-    """Command-line entry point: ``python -m guided_lfd.study``."""
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--root", type=Path, default=Path("."), help="repository root (with data/)")
-    parser.add_argument("--out", type=Path, default=Path("results"), help="where results go")
-    args = parser.parse_args(argv)
-
-    def progress(message: str) -> None:
-        print(f"  {message}", file=sys.stderr)
-
-    paper, kitchens = reproduce(args.root, args.out, progress)
-    sys.stdout.write(side_by_side(paper, kitchens))
-    print(f"wrote {args.out / 'study.md'}", file=sys.stderr)
-    return 0
-
-
-if __name__ == "__main__":  # pragma: no cover
-    raise SystemExit(main())
-
-
-
