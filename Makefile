@@ -25,7 +25,7 @@ demo: setup
 	$(BIN)/guided-lfd excuse data/domains/kitchen-2/robot.pddl data/domains/kitchen-2/problem.pddl --json --quiet
 
 demos: setup
-	$(BIN)/python -m guided_lfd.demonstration.study_data data/demos
+	$(BIN)/guided-lfd demos data/demos
 
 # The paper's user study from the shipped data: results/study.md, CSVs, PNGs.
 reproduce-study: setup

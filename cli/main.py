@@ -66,6 +66,18 @@ SUBCOMMANDS: dict[str, Subcommand] = {
         "cli.validate", "validate",
         "Execute PLAN from the problem's initial state; say which precondition of which step fails.",
     ),
+    "bench": Subcommand(
+        "cli.bench", "bench",
+        "Run the excuse benchmark: every strategy and semantics on every task, as whole command-line runs.",
+    ),
+    "quality": Subcommand(
+        "cli.quality", "quality",
+        "Segmentation frame F1 and segment counts per demonstration, learned-domain precision and recall per kitchen.",
+    ),
+    "demos": Subcommand(
+        "cli.demos", "demos",
+        "Render the study's demonstrations (Kitchen I/II x P1-P5, excuse and complete) as hand traces.",
+    ),
     "study": Subcommand(
         "cli.study", "study",
         "Reproduce the paper's user study: study.md, CSVs, plots and per-demonstration artefacts in --out.",

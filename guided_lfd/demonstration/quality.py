@@ -137,29 +137,19 @@ def quality_report(demos: Path = Path("data/demos"), domains: Path = Path("data/
     return QualityReport(segmentation, learning)
 
 
-def main(argv: list[str] | None = None) -> int:
-    """Print the quality report: ``python -m guided_lfd.demonstration.quality [DEMOS [DOMAINS]]``."""
-    argv = argv or []
-    demos = Path(argv[0]) if argv else Path("data/demos")
-    domains = Path(argv[1]) if len(argv) > 1 else Path("data/domains")
-    report = quality_report(demos, domains)
-    print("| demonstration | frame F1 | segments (truth / found) |")
-    print("|---|---|---|")
+def quality_markdown(report: QualityReport) -> str:
+    """The report as ``guided-lfd quality`` prints it: the segmentation table, then learning per kitchen."""
+    lines = ["| demonstration | frame F1 | segments (truth / found) |", "|---|---|---|"]
     for q in report.segmentation:
-        print(f"| {q.name} | {q.f1:.3f} | {q.truth_segments} / {q.segments} |")
+        lines.append(f"| {q.name} | {q.f1:.3f} | {q.truth_segments} / {q.segments} |")
     exact = sum(q.truth_segments == q.segments for q in report.segmentation)
-    print(f"\nsegment counts exact: {exact} / {len(report.segmentation)}; minimum frame F1 {report.min_f1:.3f}\n")
+    lines += ["", f"segment counts exact: {exact} / {len(report.segmentation)}; minimum frame F1 {report.min_f1:.3f}", ""]
     for kitchen, learned in report.learning.items():
-        print(f"{kitchen}: preconditions precision {learned['pre_precision']:.2f} recall {learned['pre_recall']:.2f}; "
-              f"effects precision {learned['eff_precision']:.2f} recall {learned['eff_recall']:.2f}; "
-              f"{', '.join(learned['matched'])}")  # type: ignore[arg-type]
-    return 0
+        lines.append(f"{kitchen}: preconditions precision {learned['pre_precision']:.2f} recall "
+                     f"{learned['pre_recall']:.2f}; effects precision {learned['eff_precision']:.2f} recall "
+                     f"{learned['eff_recall']:.2f}; {', '.join(learned['matched'])}")  # type: ignore[arg-type]
+    return "\n".join(lines) + "\n"
 
 
-if __name__ == "__main__":
-    import sys
-
-    raise SystemExit(main(sys.argv[1:]))
-
-
-__all__ = ["Segment", "segmentation_quality", "learning_quality", "compare_actions", "quality_report", "QualityReport"]
+__all__ = ["Segment", "segmentation_quality", "learning_quality", "compare_actions", "quality_report", "QualityReport",
+           "quality_markdown"]

@@ -157,20 +157,3 @@ def _parallel(steps: list[Step]) -> list[Step]:
     left = [replace(s, hand="left") for s in steps[reach:release + 1]]
     first, earlier = steps[:1], [replace(s, parallel=True) for s in steps[1:reach]]
     return first + [replace(s, parallel=True) for s in left[:2]] + earlier + left[2:] + steps[release + 1:]
-
-
-def main(argv: list[str] | None = None) -> int:
-    """``python -m guided_lfd.demonstration.study_data [OUT]``: render the study's demonstrations."""
-    import argparse
-
-    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("out", nargs="?", default="data/demos", type=Path)
-    parser.add_argument("--domains", default="data/domains", type=Path)
-    args = parser.parse_args(argv)
-    demos = render_study(args.domains, args.out)
-    print(f"rendered {len(demos)} demonstrations into {args.out}")
-    return 0
-
-
-if __name__ == "__main__":
-    raise SystemExit(main())

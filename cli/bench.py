@@ -1,0 +1,108 @@
+"""``guided-lfd bench``: the excuse benchmark (generate the suite, run it, report), as benchmarks/README.md describes."""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+from typing import Annotated
+
+import typer
+
+from cli.common import QuietOption, command, ui
+from guided_lfd.errors import OptionError
+
+STEPS = ("generate", "run", "report", "all")
+
+
+@command
+def bench(
+    step: Annotated[str, typer.Argument(metavar="STEP", help="generate | run | report | all (run, then report).")],
+    root: Annotated[Path, typer.Option("--root", metavar="DIR", help="Repository root (data/, benchmarks/).")]
+    = Path("."),
+    ipc: Annotated[Path | None, typer.Option("--ipc", metavar="DIR", help="IPC collection (default ROOT/data/benchmarks/ipc).")] = None,
+    tasks: Annotated[str, typer.Option("--tasks", help="Comma-separated IPC task names per domain.")]
+    = ",".join(f"task{i:02d}" for i in range(1, 11)),
+    suite: Annotated[Path | None, typer.Option("--suite", metavar="CSV", help="Suite file (default ROOT/benchmarks/suite.csv).")] = None,
+    results: Annotated[Path | None, typer.Option("--results", metavar="DIR", help="Results folder (default ROOT/benchmarks/results).")] = None,
+    time_limit: Annotated[float, typer.Option("--time-limit", metavar="SECONDS", help="Per run.")] = 60.0,
+    jobs: Annotated[int, typer.Option("--jobs", help="Runs at a time.")] = 2,
+    memory_limit: Annotated[int, typer.Option("--memory-limit", metavar="MIB",
+                                              help="Address-space cap per run (0 = none); a run past it is 'memout'.")] = 8192,
+    strategies: Annotated[str, typer.Option("--strategies", help="Comma-separated strategies.")] = "landmark,baseline",
+    semantics: Annotated[str, typer.Option("--semantics", help="Comma-separated semantics.")] = "literal,consistent",
+    only: Annotated[str, typer.Option("--only", help="Comma-separated substrings of task ids to run "
+                                                      "(their rows replace theirs in the results; the rest stay).")] = "",
+    stop_after_unfinished: Annotated[str, typer.Option(
+        "--stop-after-unfinished", help="Strategies that skip a family's later tasks after its first unfinished one, "
+                                        "counted unsolved at the limit ('' = none).")] = "baseline",
+    executor: Annotated[str, typer.Option("--executor", help="local | dask.")] = "local",
+    scheduler: Annotated[str | None, typer.Option("--scheduler", help="Dask scheduler address (default: a local cluster).")] = None,
+    quiet: QuietOption = False,
+) -> None:
+    """Run the excuse benchmark: every strategy and semantics on every task, as whole command-line runs."""
+    from guided_lfd import benchmark
+
+    if step not in STEPS:
+        raise OptionError(f"STEP {step}: expected one of: {', '.join(STEPS)}")
+    if memory_limit < 0:
+        raise OptionError(f"--memory-limit {memory_limit}: expected MiB >= 0 (0 = no cap)")
+    if executor not in ("local", "dask"):
+        raise OptionError(f"--executor {executor}: expected local or dask")
+    ipc = ipc or root / "data" / "benchmarks" / "ipc"
+    suite = suite or root / "benchmarks" / "suite.csv"
+    results = results or root / "benchmarks" / "results"
+    if memory_limit and executor == "dask":
+        ui.info("note: --memory-limit applies to local runs; Dask workers keep their own limits")
+    if step == "generate":
+        tasks_found = benchmark.generate_suite(ipc, root / "data" / "domains", tasks.split(","), log=ui.info_plain)
+        benchmark.write_suite(tasks_found, suite, root)
+        ui.info(f"{len(tasks_found)} tasks over {len({t.domain for t in tasks_found})} domains -> {suite}")
+        return
+    results_csv = results / "results.csv"
+    if step in ("run", "all"):
+        _run(benchmark, root, suite, results, results_csv, time_limit, jobs, memory_limit, strategies, semantics,
+             only, stop_after_unfinished, executor, scheduler)
+    if step in ("report", "all"):
+        results.mkdir(parents=True, exist_ok=True)
+        rows = benchmark.read_results(results_csv)
+        plots = benchmark.plot(rows, results, time_limit)
+        # The command the summary names (benchmarks/excuse_bench.py is this subcommand).
+        text = benchmark.summary_markdown(rows, time_limit, "python benchmarks/excuse_bench.py all --jobs 2", plots, results)
+        from guided_lfd.io import write_text
+
+        write_text(results / "summary.md", text)
+        sys.stdout.write(text + "\n")
+
+
+def _run(benchmark, root: Path, suite_file: Path, results: Path, results_csv: Path, time_limit: float, jobs: int,
+         memory_limit: int, strategies: str, semantics: str, only: str, stop_after_unfinished: str, executor: str,
+         scheduler: str | None) -> None:
+    """Run the suite (resuming a partial run), then write the results CSV (a subset run merges its rows)."""
+    suite = benchmark.read_suite(suite_file, root)
+    if only:
+        keys = only.split(",")
+        suite = [t for t in suite if any(k in t.id for k in keys)]
+    done = [0]
+    total = len(suite) * len(strategies.split(",")) * len(semantics.split(","))
+    log = benchmark.RowLog(results / "results.partial.csv")
+    if log.done:
+        ui.info(f"resuming: {len(log.done)} runs already in {log.path}")
+
+    def progress(row):
+        done[0] += 1
+        log.append(row)
+        ui.info_plain(f"[{done[0]}/{total}] {row['id']} {row['strategy']} {row['semantics']}: "
+                      f"{row['status']} size={row['size']} {row['wall_s']}s")
+
+    benchmark.run_suite(suite, strategies.split(","), semantics.split(","), time_limit, jobs, executor, scheduler,
+                        progress, previous=log.rows, memory_limit_mb=memory_limit or None,
+                        stop_after_unfinished=[s for s in stop_after_unfinished.split(",") if s])
+    rows = benchmark.read_results(log.path)
+    if only and results_csv.exists():
+        # A subset run updates its rows in the results; the other runs' rows stay.
+        subset = len(rows)
+        rows = benchmark.merge_rows(benchmark.read_results(results_csv), rows)
+        ui.info(f"{results_csv}: {subset} row(s) replaced or added, {len(rows)} in all")
+    rows = sorted(rows, key=lambda r: (r["id"], r["semantics"], r["strategy"]))
+    benchmark.write_results(rows, results_csv)
+    log.path.unlink()
