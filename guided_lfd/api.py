@@ -20,9 +20,12 @@ __all__ = ["PlanReport", "plan", "read_task", "validate"]
 Source = str | Path
 
 
-def _is_pddl_text(source: Source) -> bool:
-    """PDDL text rather than a path: a string whose first word is a list or a comment."""
-    return isinstance(source, str) and source.lstrip()[:1] in ("(", ";")
+def _is_text(source: Source) -> bool:
+    """PDDL or plan text rather than a path: a string with a parenthesis or a line break in it, or nothing.
+
+    File names with either are possible but rare; such a file can be given as a ``Path``.
+    """
+    return isinstance(source, str) and ("(" in source or "\n" in source or not source.strip())
 
 
 def read_task(domain: Source, problem: Source) -> tuple[Domain, Problem]:
@@ -33,8 +36,9 @@ def read_task(domain: Source, problem: Source) -> tuple[Domain, Problem]:
     """
     from guided_lfd.pddl.reader import parse_task
 
-    domain_text = domain if _is_pddl_text(domain) else None
-    problem_text = problem if _is_pddl_text(problem) else None
+    # Text as a file would give it: without a byte-order mark.
+    domain_text = domain.removeprefix("\ufeff") if _is_text(domain) else None  # type: ignore[union-attr]
+    problem_text = problem.removeprefix("\ufeff") if _is_text(problem) else None  # type: ignore[union-attr]
     return parse_task("<domain>" if domain_text is not None else domain,
                       "<problem>" if problem_text is not None else problem,
                       domain_text=domain_text, problem_text=problem_text)
@@ -86,7 +90,12 @@ def plan(domain: Domain, problem: Problem, search: str | None = None,
     from guided_lfd.planning import DEFAULT_SEARCH, plan_task
     from guided_lfd.validation import validate_plan
 
+    from guided_lfd.errors import OptionError
+    from guided_lfd.planning import SEARCHES
+
     search = search or DEFAULT_SEARCH
+    if search not in SEARCHES:
+        raise OptionError(f"unknown search '{search}' (expected one of: {', '.join(SEARCHES)})")
     _, result = plan_task(domain, problem, search, time_limit)
     if result.plan is None:
         return PlanReport(domain.path, problem.path, None, None, None, search, result.time_s)
@@ -108,7 +117,7 @@ def validate(domain: Domain, problem: Problem, plan: Source | Sequence[PlanStep 
     """
     from guided_lfd.validation import parse_plan, parse_plan_text, validate_plan
 
-    if isinstance(plan, Path) or (isinstance(plan, str) and not _is_pddl_text(plan)):
+    if isinstance(plan, Path) or (isinstance(plan, str) and not _is_text(plan)):
         steps = parse_plan(str(plan), domain, problem)
     elif isinstance(plan, str):
         steps = parse_plan_text(plan, "<plan>", domain, problem)

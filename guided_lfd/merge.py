@@ -131,6 +131,30 @@ def _merge_predicates(merged: dict[str, Predicate], types: dict[str, str | None]
             merged[name] = Predicate(name, params)
 
 
+def _merge_functions(domains: list[Domain], types: dict[str, str | None], predicates: dict[str, Predicate],
+                     result: MergeResult) -> dict[str, Predicate]:
+    """The domains' cost functions united: one arity each, argument types widened as for predicates."""
+    merged: dict[str, Predicate] = {}
+    for domain in domains:
+        for name, fun in domain.functions.items():
+            if name in predicates:
+                raise MergeError(f"{name} is a function in {domain.path} and a predicate in another domain; "
+                                 "expected distinct names", domain.locate(name, ":functions"))
+            old = merged.get(name)
+            if old is None:
+                merged[name] = fun
+                continue
+            if old.arity != fun.arity:
+                raise MergeError(f"function {name} takes {old.arity} argument(s) in one domain and {fun.arity} "
+                                 f"in {domain.path}; expected the same arity", domain.locate(name, ":functions"))
+            params = tuple((v, common_supertype(types, t, u)) for (v, t), (_, u) in zip(old.params, fun.params))
+            if params != old.params:
+                result.refined.append(f"function {name}: argument types widened to "
+                                      f"({' '.join(t for _, t in params)}) to cover {domain.path}")
+                merged[name] = Predicate(name, params)
+    return merged
+
+
 def _key(action: ActionSchema, order: tuple[int, ...]) -> tuple:
     """The action's content with its parameters renamed positionally in ``order``."""
     binding = {action.params[i][0]: f"?p{k}" for k, i in enumerate(order)}
@@ -235,13 +259,7 @@ def merge_domains(domains: list[Domain], name: str | None = None) -> MergeResult
                 cost = 1
                 result.costed.append(f"{new_name} ({domain.path}) has no action cost: it costs 1")
             actions.append(replace(action, name=new_name, origin=_origin(action, domain), cost=cost))
-    functions: dict[str, Predicate] = {}
-    for domain in domains:
-        for fname, fun in domain.functions.items():
-            if fname in functions and functions[fname].arity != fun.arity:
-                raise MergeError(f"function {fname} takes {functions[fname].arity} argument(s) and "
-                                 f"{fun.arity} ({domain.path}); expected one arity", domain.locate(fname, ":functions"))
-            functions.setdefault(fname, fun)
+    functions = _merge_functions(domains, types, predicates, result)
     merged = Domain(
         name=name or domains[0].name,
         requirements=tuple(requirements),

@@ -54,3 +54,16 @@ def test_a_chain_whose_worker_dies_is_crashed_rows_and_the_run_goes_on(client, m
     by_id = {r["id"]: r for r in rows}
     assert by_id[suite[0].id]["status"] == "crashed" and "worker died: KilledWorker" in by_id[suite[0].id]["excuse"]
     assert by_id[suite[1].id]["status"] == "excuse-found"
+
+
+def test_a_dead_workers_chain_keeps_its_resumed_rows(client, monkeypatch):
+    suite = _slice()[:1]
+    earlier = run_suite(suite, ["landmark"], ["consistent"], 30.0, jobs=1)
+
+    def dies(chain, *args, **kwargs):
+        raise distributed.KilledWorker(task="run_chain", last_worker=SimpleNamespace(address="inproc://w"),
+                                       allowed_failures=0)
+
+    monkeypatch.setattr(benchmark.runner, "run_chain", dies)
+    rows = run_suite(suite, ["landmark"], ["consistent"], 30.0, executor="dask", scheduler=client, previous=earlier)
+    assert rows == earlier  # resumed, not turned into 'crashed'

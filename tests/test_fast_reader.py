@@ -21,7 +21,8 @@ def _outcome(domain: str, problem: str):
         return ("error", type(exc).__name__, str(exc))
     return ("ok", dom.name, dom.requirements, repr(dom.actions), repr(dom.predicates), repr(dom.types),
             repr(dom.constants), dom.implicit_constants, dom.warnings, dom.spellings, prob.name, prob.domain_name,
-            repr(sorted(prob.init)), repr(prob.goal), repr(prob.objects), prob.spellings)
+            repr(sorted(prob.init)), repr(prob.goal), repr(prob.objects), prob.spellings,
+            repr(dom.functions), repr(sorted(prob.function_values.items())), prob.metric)
 
 
 def _tarski_only(monkeypatch, domain: str, problem: str):

@@ -79,3 +79,25 @@ def test_validate_takes_steps_text_or_a_file(tmp_path):
 
 def test_semantics_may_be_given_as_a_word():
     assert ExcuseOptions(semantics="literal").semantics.value == "literal"
+
+
+def test_plan_text_with_step_numbers_an_empty_plan_and_text_with_a_bom(tmp_path):
+    domain, problem = read_task(str(DATA / "costs/domain.pddl"), str(DATA / "costs/problem.pddl"))
+    numbered = "0: (drive home mid1)\n1: (drive mid1 mid2)\n2: (drive mid2 shop)\n"
+    assert validate(domain, problem, numbered).cost == 15
+    empty = validate(domain, problem, "")
+    assert not empty.valid and empty.steps == []  # an empty plan: the goal is not reached
+    with_bom = "\ufeff" + (DATA / "costs/domain.pddl").read_text()
+    assert read_task(with_bom, str(DATA / "costs/problem.pddl"))[0].actions == domain.actions
+
+
+def test_bad_names_and_options_are_the_libraries_one_line_errors():
+    from guided_lfd.errors import InputFileError, OptionError
+
+    with pytest.raises(InputFileError) as info:
+        read_task("a\0b", "x.pddl")
+    assert "NUL" in str(info.value)
+    domain, problem = read_task(*kitchen(1))
+    with pytest.raises(OptionError) as info:
+        plan(domain, problem, "nope")
+    assert "unknown search 'nope'" in str(info.value)

@@ -234,7 +234,9 @@ def _run_dask(work, time_limit, scheduler, on_row, memory_limit_mb, done, stoppi
             try:
                 chain_rows = fut.result()
             except Exception as exc:  # noqa: BLE001 - KilledWorker, a worker's crash: rows, not a traceback
-                chain_rows = [crashed(task, strategy, sem, exc) for task, strategy, sem in chain_of[fut.key]]
+                # Resumed rows stay as they were; the chain's other runs are lost with the worker.
+                chain_rows = [done.get((task.id, strategy, sem)) or crashed(task, strategy, sem, exc)
+                              for task, strategy, sem in chain_of[fut.key]]
             for row in chain_rows:
                 rows.append(row)
                 if on_row and (row["id"], row["strategy"], row["semantics"]) not in done:

@@ -30,7 +30,7 @@ import threading
 from typing import Any
 
 from guided_lfd.errors import SearchTimeout
-from guided_lfd.pddl import names
+from guided_lfd.pddl import costs, names
 from guided_lfd.pddl.model import (EITHER_PREFIX, EQUALITY, TOTAL_COST, ActionSchema, Atom, Domain, Literal, Predicate, Problem,
                                    either_type, type_members)
 from guided_lfd.pddl.source import SExpr, SourceMap, Token
@@ -490,6 +490,8 @@ def _check_implicit_constants(domain: Domain, objects: dict[str, str], checker: 
     for act in domain.actions:
         terms = {**{n: objects[n] for n in domain.implicit_constants}, **domain.constants, **dict(act.params)}
         _check_literals([*act.precondition, *map(Literal, act.add + act.delete)], terms, domain.predicates, checker)
+        if isinstance(act.cost, Atom):
+            _check_literals([Literal(act.cost)], terms, domain.functions, checker)
 
 
 def _is_truth(cond) -> bool:
@@ -556,7 +558,7 @@ def _problem(src: SourceMap, path: str, domain: Domain) -> Problem:
         raise _NotPlain("metric")
     _unique([o.name for o in fd_objects])
     objects = {o.name: o.type_name for o in fd_objects}
-    if set(objects) & (set(domain.constants) | set(domain.predicates)):
+    if set(objects) & (set(domain.constants) | set(domain.predicates) | set(domain.functions)):
         raise _NotPlain("an object named like a constant or predicate")
     checker = _Types(domain.types)
     for t in objects.values():
@@ -567,7 +569,7 @@ def _problem(src: SourceMap, path: str, domain: Domain) -> Problem:
     if len(fd_init) != len(init_section) - 1 or any(not isinstance(a, pddl.Atom) for a in facts):
         raise _NotPlain("repeated or non-atomic initial facts")
     init = [Literal(Atom(a.predicate, tuple(a.args))) for a in facts]
-    values = _function_values(init_section, terms, domain, checker)
+    values = costs.read_function_values(src, domain, objects)
     goal = _literals(fd_goal)
     if any(lit.atom.predicate == EQUALITY for lit in init + goal):
         raise _NotPlain("equality in the initial state or goal")
@@ -583,19 +585,3 @@ def _assignment_shape(fact: list[Any], domain: Domain) -> None:
         raise _NotPlain("assignment")
     if not all(isinstance(w, str) for w in fact[1]):
         raise _NotPlain("assignment term")
-
-
-def _function_values(init_section: list[Any], terms: dict[str, str], domain: Domain,
-                     checker: "_Types") -> dict[Atom, int]:
-    """The initial values of the numeric functions other than total-cost (each given once)."""
-    values: dict[Atom, int] = {}
-    for fact in init_section[1:]:
-        if fact[:1] != ["="]:
-            continue
-        atom = Atom(fact[1][0], tuple(fact[1][1:]))
-        if atom in values:
-            raise _NotPlain("a value given twice")
-        _check_literals([Literal(atom)], terms, domain.functions, checker)
-        if atom.predicate != TOTAL_COST:
-            values[atom] = int(fact[2])
-    return values

@@ -177,13 +177,15 @@ def implicit_constant_uses(src: SourceMap) -> dict[str, ImplicitUse]:
 def implicit_constant_type(src: SourceMap, name: str) -> str:
     """The type an implicit constant is read with when no problem declares it (lower-case).
 
-    The most specific of the types its uses need (predicate parameters; an
+    The most specific of the types its uses need (predicate and cost-function parameters; an
     ``either`` parameter needs none), so that every use that some object
     could fit type-checks; with no such type the first one needed (a use then
     does not type-check, which no object could fix).
     """
     declared: dict[str, list[str | None]] = {}
-    for pred in _predicate_declarations(src):
+    functions = src.section(":functions")
+    cost_functions = [f for f in functions.items[1:] if isinstance(f, SExpr)] if functions is not None else []
+    for pred in [*_predicate_declarations(src), *cost_functions]:  # a cost term's arguments need types too
         declared[pred.head() or ""] = [None if isinstance(t, SExpr) else (t.lower if t is not None else "object")
                                        for _, t in typed_names(pred.items[1:])]
     try:

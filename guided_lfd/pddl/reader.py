@@ -11,7 +11,7 @@ import logging
 import os
 import re
 from contextlib import contextmanager
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Iterator
 
@@ -27,7 +27,6 @@ from guided_lfd.errors import (
 from guided_lfd.pddl.model import (
     EQUALITY,
     SUPPORTED_REQUIREMENTS,
-    TOTAL_COST,
     ActionSchema,
     Atom,
     Domain,
@@ -36,7 +35,7 @@ from guided_lfd.pddl.model import (
     Problem,
     type_members,
 )
-from guided_lfd.pddl import fast_reader, names
+from guided_lfd.pddl import costs, fast_reader, names
 from guided_lfd.pddl.source import SExpr, SourceMap, Token, read_text
 
 # Keywords of PDDL features beyond STRIPS, with the requirement they belong to.
@@ -87,6 +86,8 @@ def _check_features(src: SourceMap, what: str) -> None:
                     src.location(tok.line, tok.col),
                 )
     _check_numeric(src)
+    if what == "domain":
+        costs.check_cost_effects(src)
     # Keywords only count at the head of a list: an object may be called 'or'.
     for node in _lists(src):
         name = node.head()
@@ -213,6 +214,8 @@ def keywords_lowered(text: str) -> str:
         if low.startswith(":"):
             return low
         if before == "(" and low in fast_reader.RESERVED_WORDS or before == "-" and low in _KEYWORD_TYPES:
+            return low
+        if before.lower() == ":metric" and low in ("minimize", "maximize"):
             return low
         return word
 
@@ -359,6 +362,9 @@ def _tarski_text(src: SourceMap, kind: str, rewrite: _Rewrite) -> tuple[str, lis
     (empty preconditions, the implicit constants' declaration), then
     ``:types`` parents first and keywords in lower case.
     """
+    if kind == "problem" and costs.assignment_lists(src):
+        # The values are read from the source for both paths (guided_lfd.pddl.costs).
+        src = SourceMap(src.path, costs.without_assignments(src))
     respelled = [(tok, rewrite.types[tok.lower]) for tok in names.type_positions(src, set(rewrite.types))]
     eithers = names.either_lists(src) if kind == "domain" else []
     if kind == "problem" and rewrite.fresh:
@@ -609,7 +615,7 @@ def _domain_from_tarski(reader, src: SourceMap, path: str, rewrite: _Rewrite) ->
         source=src,
         implicit_constants=tuple(implicit),
         warnings=tuple(names.implicit_constant_warning(src, use) for use in implicit.values()),
-        functions=_tarski_functions(lang, src),
+        functions=_tarski_functions(lang, src, rewrite),
     )
     names.check_either_members(src, domain.types)
     _check_either_arguments(domain, src, None)
@@ -707,7 +713,7 @@ def _locate_atom_argument(src: SourceMap, scopes: list[SExpr], pred: str, index:
     return src.locate(arg)
 
 
-def _tarski_functions(lang, src: SourceMap) -> dict[str, Predicate]:
+def _tarski_functions(lang, src: SourceMap, rewrite: _Rewrite) -> dict[str, Predicate]:
     """The functions of the ``:functions`` section (tarski's language adds built-ins such as ``ite``)."""
     section = src.section(":functions")
     declared = {item.head() for item in section.items[1:] if isinstance(item, SExpr)} if section else set()
@@ -716,7 +722,7 @@ def _tarski_functions(lang, src: SourceMap) -> dict[str, Predicate]:
         name = str(fun.name).lower()
         if name not in declared:
             continue
-        out[name] = Predicate(name, tuple((f"?x{i}", str(s.name).lower()) for i, s in enumerate(fun.domain)))
+        out[name] = Predicate(name, tuple((f"?x{i}", rewrite.type_name(s.name)) for i, s in enumerate(fun.domain)))
     return out
 
 
@@ -860,6 +866,7 @@ def parse_task(domain_path: str | Path, problem_path: str | Path, *, domain_text
     _tarski_parse(reader, "problem", psrc, rewrite)
     problem = _problem_from_tarski(reader, psrc, pname, domain_constants, rewrite)
     _check_either_arguments(domain, dsrc, problem.objects, (psrc, problem))
+    problem = replace(problem, function_values=costs.read_function_values(psrc, domain, problem.objects))
     return domain, problem
 
 
@@ -902,14 +909,6 @@ def _problem_from_tarski(reader, src: SourceMap, path: str, domain_constants: di
         name = _pred_name(atom.predicate)
         init.add(Atom(name, tuple(_term_name(t) for t in atom.subterms)))
     goal = tuple(_literals(reader.problem.goal, src, "the goal"))
-    values: dict[Atom, int] = {}
-    for (fname, *_), extension in reader.problem.init.function_extensions.items():
-        name = str(fname).lower()
-        if name == TOTAL_COST:
-            continue
-        for args, value in extension.data.items():
-            atom = Atom(name, tuple(str(a.expr.name).lower() for a in args))
-            values[atom] = as_cost_number(float(value.name), f"the value of {atom}", src.locate(name, ":init"))
     metric = src.section(":metric") is not None
     for lit in goal:
         if lit.atom.predicate == EQUALITY:
@@ -922,7 +921,6 @@ def _problem_from_tarski(reader, src: SourceMap, path: str, domain_constants: di
         goal=goal,
         path=path,
         spellings=src.spellings(),
-        function_values=values,
         metric=metric,
     )
 

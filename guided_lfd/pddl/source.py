@@ -51,6 +51,8 @@ def read_text(path: str | Path, expected: str = "PDDL") -> str:
         raise InputFileError("is a directory, expected a file", Location(name)) from None
     except OSError as exc:
         raise InputFileError(f"cannot read file ({exc.strerror})", Location(name)) from None
+    except ValueError:  # a NUL in the name: no file can be called so
+        raise InputFileError("file not found (the name contains a NUL character)", Location(name.replace("\0", "\\0"))) from None
     if len(data) > MAX_INPUT_BYTES:
         raise InputFileError(f"larger than {MAX_INPUT_BYTES // (1024 * 1024)} MiB, expected {expected}", Location(name))
     if b"\x00" in data:

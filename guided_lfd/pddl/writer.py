@@ -67,7 +67,8 @@ def action_to_pddl(action: ActionSchema, indent: str = "  ") -> str:
     effects = [str(a) for a in action.add] + [f"(not {a})" for a in action.delete]
     if action.cost is not None:
         effects.append(f"(increase ({TOTAL_COST}) {action.cost})")
-    lines.append(f"{indent}  :effect {_conj(effects)})")
+    # An empty effect is '(and)': tarski's grammar has no '()' there.
+    lines.append(f"{indent}  :effect {_conj(effects) if effects else '(and)'})")
     return "\n".join(lines)
 
 
