@@ -95,8 +95,8 @@ def excuse(
                   + "\n".join(f"  {c}" for c in report.excuse.changes))
         write_text(excuse_problem, problem_to_pddl(prob, report.excuse.state, header=header))
     stats = report.statistics
-    ui.info(f"[dim]{report.strategy} search: {stats.get('candidates', 0)} candidate(s), "
-            f"{stats.get('planner_calls', 0)} reachability check(s), {stats['time_s']:.2f} s[/]")
+    ui.info(f"[dim]{report.strategy} search: {stats.candidates or 0} candidate(s), "
+            f"{stats.planner_calls or 0} reachability check(s), {stats.time_s or 0:.2f} s[/]")
     if code:
         raise typer.Exit(code)
 

@@ -31,7 +31,7 @@ def assert_checked(domain, problem, report):
     """Re-check every excuse with the independent checker."""
     groups = report.checked_groups
     for e in report.excuses:
-        steps = [PlanStep(s[1:-1].split()[0], tuple(s[1:-1].split()[1:])) for s in e.plan]
+        steps = e.plan
         assert check_excuse(domain, problem, e.changes, steps, groups) == []
 
 
@@ -42,7 +42,7 @@ def test_kitchen_1_excuse_is_open_pinkdrawer(strategy, semantics):
     report = find_excuses(domain, problem, ExcuseOptions(semantics=semantics, strategy=strategy))
     assert report.status == "excuse-found"
     assert changes_of(report) == [["+(open pinkdrawer)"]]
-    assert report.excuse.plan == ["(take redplate table)", "(put_inside redplate pinkdrawer)"]
+    assert [str(step) for step in report.excuse.plan] == ["(take redplate table)", "(put_inside redplate pinkdrawer)"]
     assert_checked(domain, problem, report)
 
 
@@ -52,7 +52,7 @@ def test_kitchen_2_excuse_is_clear_pinkdrawer(strategy, semantics):
     domain, problem = parse_task(*kitchen(2))
     report = find_excuses(domain, problem, ExcuseOptions(semantics=semantics, strategy=strategy))
     assert changes_of(report) == [["+(clear pinkdrawer)"]]
-    assert report.excuse.plan[0] == "(open_drawer pinkdrawer)"
+    assert report.excuse.plan[0] == PlanStep("open_drawer", ("pinkdrawer",))
 
 
 def test_kitchen_2_with_human_invariants_moves_the_chair_consistently():
@@ -252,7 +252,7 @@ def test_strategy_matches_brute_force(tmp_path_factory, strategy, semantics, pdd
         assert {e.size for e in report.excuses} == {size}
         assert sorted(sorted(str(c) for c in e.changes) for e in report.excuses) == expected
         for e in report.excuses:
-            steps = [PlanStep(s[1:-1].split()[0], tuple(s[1:-1].split()[1:])) for s in e.plan]
+            steps = e.plan
             assert check_excuse(domain, problem, e.changes, steps, groups) == []
 
 
@@ -318,11 +318,11 @@ def test_hill_climbing_answers_household_checks_and_not_small_ones(tmp_path):
     (tmp_path / "house.pddl").write_text(household.problem_pddl(house))
     domain, problem = parse_task(tmp_path / "robot.pddl", tmp_path / "house.pddl")
     report = find_excuses(domain, problem, ExcuseOptions())
-    assert report.statistics["oracle_hill_climbs"] >= 1
-    assert report.statistics["oracle_expanded"] == 0  # no goal-count search was needed
+    assert report.statistics.counters["oracle_hill_climbs"] >= 1
+    assert report.statistics.counters["oracle_expanded"] == 0  # no goal-count search was needed
     assert report.excuse.plan_optimal and len(report.excuse.plan) == 8
     small = find_excuses(*parse_task(*kitchen(1)), ExcuseOptions())
-    assert small.statistics["oracle_hill_climbs"] == 0
+    assert small.statistics.counters["oracle_hill_climbs"] == 0
 
 
 def test_one_status_type_from_the_strategies_to_the_exit_code(runner, app):
@@ -341,3 +341,13 @@ def test_one_status_type_from_the_strategies_to_the_exit_code(runner, app):
             result = runner.invoke(app, args + ([] if max_size is None else ["--max-size", "0"]))
             assert result.exit_code == expected.exit_code
             assert json.loads(result.stdout)["status"] == expected.value
+
+
+def test_statistics_are_typed_and_written_in_the_documented_order():
+    from guided_lfd.excuse.statistics import ExcuseStatistics
+
+    stats = ExcuseStatistics(ground_atoms=3, candidates=2, counters={"evaluations": 5}, phase="searching", time_s=0.1)
+    assert list(stats.to_dict()) == ["ground_atoms", "candidates", "evaluations", "phase", "time_s"]
+    report = find_excuses(*parse_task(*kitchen(1)))
+    assert isinstance(report.statistics, ExcuseStatistics) and report.statistics.candidates >= 1
+    assert report.excuse.plan and all(isinstance(step, PlanStep) for step in report.excuse.plan)

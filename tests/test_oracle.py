@@ -69,7 +69,7 @@ def test_excuse_search_uses_the_pair_check_and_finds_the_exact_excuse():
     report = find_excuses(domain, problem, ExcuseOptions(semantics=Semantics.LITERAL, all_minimal=True))
     assert [sorted(str(c) for c in e.changes) for e in report.excuses] == [
         ["+(calibrated cam0)", "+(power_on cam0)"]]
-    assert report.statistics["oracle_pair_proofs"] >= 1
+    assert report.statistics.counters["oracle_pair_proofs"] >= 1
 
 
 def test_pair_check_cannot_refute_three_slots_and_the_search_does():
@@ -127,4 +127,4 @@ def test_the_ff_search_confirms_when_the_goal_count_search_cannot(monkeypatch):
     monkeypatch.setattr(ReachabilityOracle, "_goal_count_search", _never_decides)
     report = find_excuses(*parse_task(*kitchen(1)), ExcuseOptions())
     assert report.status == "excuse-found"
-    assert report.statistics["oracle_ff_searches"] >= 1
+    assert report.statistics.counters["oracle_ff_searches"] >= 1

@@ -18,7 +18,7 @@ __all__ = ["excuse_document", "excuse_summary", "excuse_text"]
 def excuse_summary(report: ExcuseReport, spellings: dict[str, str]) -> str:
     """Why no excuse is given, in one line (empty when one is)."""
     if report.status is ExcuseStatus.NONE:
-        fixed = report.statistics.get("fixed_predicates") or []
+        fixed = report.statistics.fixed_predicates or []
         while_fixed = f" while {', '.join(fixed)} stay fixed" if fixed else ""
         if report.unachievable_goals:
             goals = ", ".join(str(g) for g in report.unachievable_goals)
@@ -43,7 +43,7 @@ def _excuse_dict(e: Excuse, spellings: dict[str, str]) -> dict[str, Any]:
             for c in e.changes
         ],
         "state": [str(a) for a in sorted(e.state)],
-        "plan": e.plan,
+        "plan": [str(step) for step in e.plan],
         "plan_length": len(e.plan),
         "plan_cost": e.plan_cost,
         "plan_optimal": e.plan_optimal,
@@ -63,11 +63,11 @@ def excuse_document(report: ExcuseReport, domain: str, problem: str, spellings: 
         "message": excuse_summary(report, spellings) or None,
         "excuse": _excuse_dict(first, spellings) if first else None,
         "alternatives": [_excuse_dict(e, spellings) for e in report.excuses[1:]],
-        "robot_plan": report.robot_plan,
+        "robot_plan": None if report.robot_plan is None else [str(step) for step in report.robot_plan],
         "robot_plan_cost": report.robot_plan_cost,
         "unachievable_goals": [str(g) for g in report.unachievable_goals],
         "invariants": sorted({g.invariant for g in report.invariant_groups}),
-        "statistics": report.statistics,
+        "statistics": report.statistics.to_dict(),
     }
 
 

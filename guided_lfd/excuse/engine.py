@@ -23,6 +23,7 @@ from guided_lfd.excuse.reach import ReachabilityOracle
 from guided_lfd.excuse.space import (
     ChangeSpace, MutexGroup, Semantics, build_space, check_cost_predicates, check_fixed,
 )
+from guided_lfd.excuse.statistics import ExcuseStatistics
 from guided_lfd.excuse.status import ExcuseStatus
 from guided_lfd.excuse.strategies import DEFAULT_STRATEGY, STRATEGIES, Progress, SearchLimits
 from guided_lfd.grounding import GroundAction, GroundTask, bits, ground
@@ -69,7 +70,8 @@ class Excuse:
     changes: list[Change]
     cost: int
     state: frozenset[Atom]
-    plan: list[str]
+    #: The robot's plan from the excuse state (validated), step by step.
+    plan: list[PlanStep]
     plan_optimal: bool
     #: The plan's cost: its length, or its total-cost under the problem's metric (:action-costs).
     plan_cost: int | None = None
@@ -93,10 +95,10 @@ class ExcuseReport:
     excuses: list[Excuse]
     semantics: Semantics
     strategy: str
-    statistics: dict[str, Any]
+    statistics: ExcuseStatistics
     unachievable_goals: list[Literal]
     invariant_groups: list[MutexGroup]
-    robot_plan: list[str] | None = None  # when the task is already solvable
+    robot_plan: list[PlanStep] | None = None  # when the task is already solvable
     checked_groups: list[tuple[frozenset[Atom], bool]] = field(default_factory=list)
     robot_plan_cost: int | None = None  # the cost of ``robot_plan`` (see Excuse.plan_cost)
     #: The task asked about (its paths and spellings go into the document).
@@ -269,7 +271,7 @@ class _Run:
         self.progress = progress
         self.start, self.deadline = start, deadline
         self.phase = "grounding"
-        self.stats: dict[str, Any] = {}
+        self.stats = ExcuseStatistics()
         self.excuses: list[Excuse] = []
         self.space: ChangeSpace | None = None
         self.unachievable: list[Literal] = []
@@ -281,10 +283,11 @@ class _Run:
             self.progress(phase, 0, 0)
         check_deadline(self.deadline, phase)
 
-    def report(self, status: ExcuseStatus, robot_plan: list[str] | None = None, **more: Any) -> ExcuseReport:
-        """The report of the run so far."""
-        self.stats.update(more)
-        self.stats["time_s"] = round(time.monotonic() - self.start, 4)
+    def report(self, status: ExcuseStatus, robot_plan: list[PlanStep] | None = None, **more: Any) -> ExcuseReport:
+        """The report of the run so far (``more``: statistics fields to set)."""
+        for name, value in more.items():
+            setattr(self.stats, name, value)
+        self.stats.time_s = round(time.monotonic() - self.start, 4)
         space = self.space
         groups = space.groups if space is not None else []
         checked = _group_atoms(space) if space is not None else []
@@ -295,9 +298,9 @@ class _Run:
 
     def timed_out(self) -> ExcuseReport:
         """The report when the time limit ended the run: excuses completed so far stay."""
-        self.stats["phase"] = self.phase
+        self.stats.phase = self.phase
         if self.excuses:  # --all ran out of time: what was found is minimal
-            self.stats["incomplete"] = True
+            self.stats.incomplete = True
             return self.report(ExcuseStatus.FOUND)
         return self.report(ExcuseStatus.TIMEOUT)
 
@@ -314,15 +317,11 @@ class _Run:
             groups = mutex_groups(options.invariants_from or self.domain, task, self.deadline)
         self._enter("change space")
         space = self.space = build_space(task, options.semantics, fixed, options.costs, groups)
-        self.stats.update({
-            "ground_atoms": len(task.atoms),
-            "ground_actions": len(task.actions),
-            "changeable_atoms": space.changeable.bit_count(),
-            "relevant_atoms": space.relevant_atoms.bit_count(),
-            "relevant_actions": len(space.relevant_actions),
-            "invariant_groups": len(space.groups),
-            "fixed_predicates": fixed,
-        })
+        stats = self.stats
+        stats.ground_atoms, stats.ground_actions = len(task.atoms), len(task.actions)
+        stats.changeable_atoms, stats.relevant_atoms = space.changeable.bit_count(), space.relevant_atoms.bit_count()
+        stats.relevant_actions, stats.invariant_groups = len(space.relevant_actions), len(space.groups)
+        stats.fixed_predicates = fixed
         self.unachievable = unachievable_goals(task)
         # Already solvable: no excuse needed.  The compiled relaxed task and the
         # oracle are built once here and handed to the search, which reuses the
@@ -344,16 +343,16 @@ class _Run:
                                   robot_plan_deadline(self.start))
             _verify(self.domain, self.problem, [], plan, space)
             self.robot_plan_cost = sum(a.cost for a in plan)
-            return self.report(ExcuseStatus.ALREADY_SOLVABLE, [a.name for a in plan], candidates=0, planner_calls=1)
+            return self.report(ExcuseStatus.ALREADY_SOLVABLE, _steps(plan), candidates=0, planner_calls=1)
 
         self._enter("searching")
         limits = SearchLimits(all_minimal=options.all_minimal, max_size=options.max_size, deadline=self.deadline)
         search_start = time.monotonic()
-        self.stats["setup_time_s"] = round(search_start - self.start, 6)
+        self.stats.setup_time_s = round(search_start - self.start, 6)
         outcome = STRATEGIES[options.strategy].search(space, limits, self.progress, oracle=oracle, relaxed=relaxed)
-        self.stats["search_time_s"] = round(time.monotonic() - search_start, 6)
-        self.stats.update(candidates=outcome.candidates, planner_calls=outcome.planner_calls + 1,
-                          nodes_expanded=outcome.expanded, **outcome.extra)
+        self.stats.search_time_s = round(time.monotonic() - search_start, 6)
+        self.stats.candidates, self.stats.planner_calls = outcome.candidates, outcome.planner_calls + 1
+        self.stats.nodes_expanded, self.stats.counters = outcome.expanded, dict(outcome.extra)
         self.phase = "robot plan"
         plans_until = robot_plan_deadline(self.start)
         for changes in outcome.solutions:
@@ -363,15 +362,19 @@ class _Run:
             change_list = _changes_of(task, changes)
             _verify(self.domain, self.problem, change_list, plan, space)
             self.excuses.append(Excuse(change_list, space.cost(changes),
-                                       excuse_state(self.problem.init, change_list), [a.name for a in plan], optimal,
+                                       excuse_state(self.problem.init, change_list), _steps(plan), optimal,
                                        sum(a.cost for a in plan)))
         status = outcome.status
         if status is ExcuseStatus.TIMEOUT:
-            self.stats["phase"] = "searching"
+            self.stats.phase = "searching"
             if self.excuses:
                 status = ExcuseStatus.FOUND  # --all ran out of time: what was found is minimal
-                self.stats["incomplete"] = True
+                self.stats.incomplete = True
         return self.report(status)
+
+
+def _steps(plan: list[GroundAction]) -> list[PlanStep]:
+    return [PlanStep(a.schema, a.args) for a in plan]
 
 
 def _excuse_order(e: Excuse) -> tuple:

@@ -1,0 +1,48 @@
+"""What an excuse search did: the task's size, the search's effort and times (the document's ``statistics``)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field, fields
+from typing import Any
+
+__all__ = ["ExcuseStatistics"]
+
+
+@dataclass
+class ExcuseStatistics:
+    """The statistics of one :func:`~guided_lfd.excuse.engine.find_excuses` run.
+
+    A field is None until the run gets there (a run that timed out while
+    grounding has only ``phase`` and ``time_s``); :meth:`to_dict` leaves
+    those out, in the order the README documents.
+    """
+
+    ground_atoms: int | None = None
+    ground_actions: int | None = None
+    changeable_atoms: int | None = None
+    relevant_atoms: int | None = None
+    relevant_actions: int | None = None
+    invariant_groups: int | None = None
+    fixed_predicates: list[str] | None = None
+    setup_time_s: float | None = None  # from the run's start to the search's
+    search_time_s: float | None = None
+    candidates: int | None = None  # change sets that reached the reachability check
+    planner_calls: int | None = None  # reachability checks (the baseline: planner calls)
+    nodes_expanded: int | None = None
+    #: Strategy-specific counters (``evaluations``, ``oracle_expanded``, ``oracle_pair_proofs``, ...), in their order.
+    counters: dict[str, int] = field(default_factory=dict)
+    phase: str | None = None  # where a timed-out run was
+    incomplete: bool | None = None  # --all ran out of time: the excuses listed are minimal, maybe not all
+    time_s: float | None = None  # the whole run
+
+    def to_dict(self) -> dict[str, Any]:
+        """The document's ``statistics``: the fields that are set, the counters after ``nodes_expanded``."""
+        out: dict[str, Any] = {}
+        for f in fields(self):
+            if f.name == "counters":
+                out.update(self.counters)
+                continue
+            value = getattr(self, f.name)
+            if value is not None:
+                out[f.name] = value
+        return out
