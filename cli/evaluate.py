@@ -11,12 +11,12 @@ import typer
 from cli.common import JsonOption, OutputOption, QuietOption, check_files, output_format, command, ui
 from guided_lfd.demonstration.learn import ground_actions, load_segments
 from guided_lfd.errors import EXIT_BAD_OPTION, InputFileError, Location, OptionError
-from guided_lfd.evaluate import DEFAULT_EXPLORATION_BOUND, Demonstration, excuse_problem, report_rows
+from guided_lfd.evaluate import DEFAULT_EXPLORATION_BOUND, Demonstration, excuse_problem
 from guided_lfd.evaluate import evaluate as run_evaluation
 from guided_lfd.excuse.check import read_excuse
 from guided_lfd.excuse.engine import find_excuses
 from guided_lfd.excuse.status import ExcuseStatus
-from guided_lfd.io import json_document, write_text
+from guided_lfd.io import write_text
 from guided_lfd.pddl.reader import parse_domain, parse_problem_for, parse_task
 
 
@@ -87,11 +87,10 @@ def evaluate(
         parse_problem_for(merged_domain, problem)
     ui.info("[dim]evaluating: planning on the human domain, exploring its states ...[/]")
     result = run_evaluation(robot_domain, task, human_domain, changes, documents, merged_domain, other, bound)
-    result = {"robot": robot, "problem": problem, "human": human, "excuse_source": source,
-              "merged": merged, **result}
-    rows = report_rows(result)
+    rows = result.rows()
     if json_out:
-        text = json_document("evaluation", result)
+        text = result.to_json({"robot": robot, "problem": problem, "human": human, "excuse_source": source,
+                               "merged": merged})
     elif csv_out:
         buf = io.StringIO()
         writer = csv.writer(buf, lineterminator="\n")

@@ -337,43 +337,68 @@ class Demonstration:
     types: dict[str, str]
 
 
+@dataclass
+class Evaluation:
+    """The paper's measures for one task, excuse and (optionally) demonstrations and merged domain."""
+
+    excuse: list[Change]
+    sizes: PredictedSizes
+    misdirection: Misdirection
+    #: Each demonstration with how much of it was new to the robot.
+    demonstrations: list[tuple[Demonstration, Usefulness]] = field(default_factory=list)
+    #: Whether the merged domain solves the task (None without a merged domain).
+    solvability: Solvability | None = None
+
+    def to_dict(self) -> dict[str, Any]:
+        """The measures as the ``guided-lfd/evaluation`` document has them (after its input keys)."""
+        sizes = self.sizes
+        return {
+            "excuse": [str(c) for c in self.excuse],
+            "demonstration_size": {
+                "f1": _round(sizes.f1),
+                "predicted": {
+                    "minimal_excuse": sizes.minimal_excuse,
+                    "nonminimal_excuse": sizes.nonminimal_excuse,
+                    "goal": sizes.goal,
+                    "remaining_after_excuse": sizes.remaining_after_excuse,
+                },
+                "nonminimal_excuse": sizes.nonminimal_changes,
+                "plans": sizes.plans,
+            },
+            "misdirected_guidance": self.misdirection.as_dict(),
+            "demonstrations": [
+                {"source": demo.source, "demonstrated_actions": useful.demonstrated, "useful_actions": useful.useful,
+                 "useful_fraction": _round(useful.fraction), "steps": useful.steps}
+                for demo, useful in self.demonstrations
+            ],
+            "solvability_after_demonstration": None if self.solvability is None else {
+                "solvable": self.solvability.solvable, "plan": self.solvability.plan,
+                "demonstrated_actions_used": self.solvability.demonstrated_actions_used,
+            },
+        }
+
+    def to_json(self, inputs: dict[str, Any] | None = None) -> str:
+        """The ``guided-lfd/evaluation`` document: ``inputs`` (paths, the excuse's source) first, then the measures."""
+        from guided_lfd.io import json_document
+
+        return json_document("evaluation", {**(inputs or {}), **self.to_dict()})
+
+    def rows(self) -> list[tuple[str, str, str]]:
+        """The measures as (measure, value, detail) rows, for the table and the CSV."""
+        return report_rows(self.to_dict())
+
+
 def evaluate(robot: Domain, problem: Problem, human: Domain, excuse: list[Change],
              demonstrations: list[Demonstration] = (),  # type: ignore[assignment]
              merged: Domain | None = None, nonminimal: list[Change] | None = None,
-             bound: int = DEFAULT_EXPLORATION_BOUND) -> dict[str, Any]:
-    """All measures as one JSON-ready dictionary (see the module docstring)."""
+             bound: int = DEFAULT_EXPLORATION_BOUND) -> Evaluation:
+    """All the paper's measures for the task (see the module docstring)."""
     reach = RobotReachability(robot, problem)
     sizes = predicted_sizes(human, problem, excuse, reach, nonminimal)
     misdirection = misdirected_guidance(human, robot, problem, excuse, bound, reach)
-    report: dict[str, Any] = {
-        "excuse": [str(c) for c in excuse],
-        "demonstration_size": {
-            "f1": _round(sizes.f1),
-            "predicted": {
-                "minimal_excuse": sizes.minimal_excuse,
-                "nonminimal_excuse": sizes.nonminimal_excuse,
-                "goal": sizes.goal,
-                "remaining_after_excuse": sizes.remaining_after_excuse,
-            },
-            "nonminimal_excuse": sizes.nonminimal_changes,
-            "plans": sizes.plans,
-        },
-        "misdirected_guidance": misdirection.as_dict(),
-        "demonstrations": [],
-        "solvability_after_demonstration": None,
-    }
-    for demo in demonstrations:
-        useful = usefulness(demo.steps, robot, demo.types)
-        report["demonstrations"].append({
-            "source": demo.source, "demonstrated_actions": useful.demonstrated, "useful_actions": useful.useful,
-            "useful_fraction": _round(useful.fraction), "steps": useful.steps,
-        })
-    if merged is not None:
-        solv = solvability_after(merged, problem, robot)
-        report["solvability_after_demonstration"] = {
-            "solvable": solv.solvable, "plan": solv.plan, "demonstrated_actions_used": solv.demonstrated_actions_used,
-        }
-    return report
+    useful = [(demo, usefulness(demo.steps, robot, demo.types)) for demo in demonstrations]
+    solvability = solvability_after(merged, problem, robot) if merged is not None else None
+    return Evaluation(list(excuse), sizes, misdirection, useful, solvability)
 
 
 def _round(value: float | None) -> float | None:

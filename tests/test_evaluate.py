@@ -8,7 +8,7 @@ import json
 
 import pytest
 
-from conftest import DOMAINS
+from conftest import DOMAINS, kitchen
 from guided_lfd.demonstration.learn import DemonstratedAction
 from guided_lfd.evaluate import (
     RobotReachability, excuse_goal, holds, known_skill, misdirected_guidance, predicted_sizes, solvability_after,
@@ -194,3 +194,16 @@ def test_cli_evaluate_on_a_solvable_task_says_there_is_nothing_to_evaluate(runne
     assert result.exit_code == 37
     assert "nothing to evaluate: the robot can already solve the task" in result.stderr
     assert result.stderr.count("\n") == 1
+
+
+def test_evaluate_returns_an_evaluation_with_its_document_and_rows():
+    from guided_lfd.evaluate import Evaluation, evaluate
+    from guided_lfd.excuse.engine import find_excuses
+
+    robot, problem = parse_task(*kitchen(2))
+    human = parse_domain(kitchen(2, "human")[0])
+    result = evaluate(robot, problem, human, find_excuses(robot, problem).excuse.changes, bound=500)
+    assert isinstance(result, Evaluation)
+    doc = json.loads(result.to_json({"robot": "r.pddl"}))
+    assert list(doc)[:3] == ["format", "format_version", "robot"] and doc["excuse"] == ["+(clear pinkdrawer)"]
+    assert result.rows()[0] == ("excuse", "+(clear pinkdrawer)", "1 change(s)")
