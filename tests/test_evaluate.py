@@ -8,7 +8,7 @@ import json
 
 import pytest
 
-from conftest import DOMAINS, kitchen
+from conftest import DOMAINS
 from guided_lfd.demonstration.learn import DemonstratedAction
 from guided_lfd.evaluate import (
     RobotReachability, excuse_goal, holds, known_skill, misdirected_guidance, predicted_sizes, solvability_after,
@@ -200,8 +200,7 @@ def test_evaluate_returns_an_evaluation_with_its_document_and_rows():
     from guided_lfd.evaluate import Evaluation, evaluate
     from guided_lfd.excuse.engine import find_excuses
 
-    robot, problem = parse_task(*kitchen(2))
-    human = parse_domain(kitchen(2, "human")[0])
+    robot, problem, human = kitchen(2)
     result = evaluate(robot, problem, human, find_excuses(robot, problem).excuse.changes, bound=500)
     assert isinstance(result, Evaluation)
     doc = json.loads(result.to_json({"robot": "r.pddl"}))
