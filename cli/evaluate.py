@@ -13,7 +13,7 @@ from guided_lfd.demonstration.learn import ground_actions, load_segments
 from guided_lfd.errors import EXIT_BAD_OPTION, InputFileError, Location, OptionError
 from guided_lfd.evaluate import DEFAULT_EXPLORATION_BOUND, Demonstration, excuse_problem
 from guided_lfd.evaluate import evaluate as run_evaluation
-from guided_lfd.excuse.check import read_excuse
+from guided_lfd.excuse.document import read_excuse
 from guided_lfd.excuse.engine import find_excuses
 from guided_lfd.excuse.status import ExcuseStatus
 from guided_lfd.io import write_text

@@ -31,7 +31,7 @@ _EXPORTS = {
     "ExcuseReport": "guided_lfd.excuse.engine",
     "Excuse": "guided_lfd.excuse.engine",
     "Semantics": "guided_lfd.excuse.space",
-    "Change": "guided_lfd.excuse.check",
+    "Change": "guided_lfd.excuse.change",
     "PlanStep": "guided_lfd.validation",
     "ValidationReport": "guided_lfd.validation",
     "Domain": "guided_lfd.pddl.model",
@@ -44,7 +44,7 @@ __all__ = ["__version__", *_EXPORTS]
 if TYPE_CHECKING:  # for type checkers and IDEs; at run time __getattr__ loads them
     from guided_lfd.api import PlanReport, plan, read_task, validate
     from guided_lfd.errors import GuidedLfdError
-    from guided_lfd.excuse.check import Change
+    from guided_lfd.excuse.change import Change
     from guided_lfd.excuse.engine import Excuse, ExcuseOptions, ExcuseReport, find_excuses
     from guided_lfd.excuse.space import Semantics
     from guided_lfd.pddl.model import Domain, Problem

@@ -25,7 +25,7 @@ from dataclasses import dataclass, field, replace
 from typing import Any
 
 from guided_lfd.demonstration.learn import DemonstratedAction
-from guided_lfd.excuse.check import Change, excuse_state
+from guided_lfd.excuse.change import Change, excuse_state
 from guided_lfd.excuse.reach import ReachabilityOracle
 from guided_lfd.excuse.space import Semantics, build_space
 from guided_lfd.grounding import GroundTask, ground

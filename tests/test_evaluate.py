@@ -13,7 +13,7 @@ from guided_lfd.demonstration.learn import DemonstratedAction
 from guided_lfd.evaluate import (
     RobotReachability, excuse_goal, holds, known_skill, misdirected_guidance, predicted_sizes, solvability_after,
 )
-from guided_lfd.excuse.check import Change
+from guided_lfd.excuse.change import Change
 from guided_lfd.merge import merge_domains
 from guided_lfd.pddl.model import Atom, Literal
 from guided_lfd.pddl.reader import parse_domain, parse_task

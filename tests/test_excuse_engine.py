@@ -12,7 +12,8 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from conftest import BLOCKS, kitchen
-from guided_lfd.excuse.check import Change, check_excuse
+from guided_lfd.excuse.change import Change
+from guided_lfd.excuse.check import check_excuse
 from guided_lfd.excuse.engine import ExcuseOptions, find_excuses
 from guided_lfd.excuse.space import Semantics
 from guided_lfd.excuse.strategies import STRATEGIES

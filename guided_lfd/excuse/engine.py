@@ -17,7 +17,8 @@ from typing import Any
 from guided_lfd.deadline import check as check_deadline
 from guided_lfd.deadline import deadline_after, linger, lingering, watchdog
 from guided_lfd.errors import SearchTimeout
-from guided_lfd.excuse.check import Change, check_excuse, excuse_state
+from guided_lfd.excuse.change import Change, excuse_state
+from guided_lfd.excuse.check import check_excuse
 from guided_lfd.excuse.lmcut import RelaxedExcuseTask
 from guided_lfd.excuse.reach import ReachabilityOracle
 from guided_lfd.excuse.space import (
