@@ -9,9 +9,10 @@ from typing import Annotated
 import typer
 
 from cli.common import JsonOption, OutputOption, QuietOption, check_files, output_format, command, ui
-from guided_lfd.demonstration.learn import ground_actions, load_segments
+from guided_lfd.demonstration.learn import ground_actions
+from guided_lfd.demonstration.segments_document import load_segments
 from guided_lfd.errors import EXIT_BAD_OPTION, InputFileError, Location, OptionError
-from guided_lfd.evaluate import DEFAULT_EXPLORATION_BOUND, Demonstration, excuse_problem
+from guided_lfd.evaluate import DEFAULT_EXPLORATION_BOUND, Demonstration, excuse_defect
 from guided_lfd.evaluate import evaluate as run_evaluation
 from guided_lfd.excuse.document import read_excuse
 from guided_lfd.excuse.engine import find_excuses
@@ -74,7 +75,7 @@ def evaluate(
         changes, source = report.excuse.changes, "computed (guided-lfd excuse defaults)"
     other = read_excuse(nonminimal, robot_domain, task) if nonminimal else None
     for path, given in ((excuse, changes), (nonminimal, other)):
-        why = excuse_problem(robot_domain, task, given) if path and given is not None else None
+        why = excuse_defect(robot_domain, task, given) if path and given is not None else None
         if why:
             raise InputFileError(f"{why} (expected an excuse for {problem})", Location(path))
     documents = []

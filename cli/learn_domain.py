@@ -8,10 +8,10 @@ import typer
 
 from cli.common import OutputOption, QuietOption, check_files, command, ui
 from guided_lfd.demonstration.learn import learn_domain as learn
-from guided_lfd.demonstration.learn import load_segments
+from guided_lfd.demonstration.segments_document import load_segments
 from guided_lfd.errors import OptionError
 from guided_lfd.io import write_text
-from guided_lfd.pddl.model import pddl_name_problem
+from guided_lfd.pddl.model import pddl_name_defect
 from guided_lfd.pddl.reader import parse_domain
 from guided_lfd.pddl.writer import domain_to_pddl
 
@@ -27,7 +27,7 @@ def learn_domain(
     quiet: QuietOption = False,
 ) -> None:
     """Turn demonstrated hand activities into lifted PDDL actions (nodes of interest, generalised)."""
-    why = pddl_name_problem(name.lower())
+    why = pddl_name_defect(name.lower())
     if why:
         raise OptionError(f"--name {name!r}: expected {why}")
     check_files([*segments, prior], {"--output": output})

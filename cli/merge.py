@@ -12,7 +12,7 @@ from guided_lfd.errors import OptionError
 from guided_lfd.io import json_document, write_text
 from guided_lfd.merge import merge_domains
 from guided_lfd.pddl.compile import compile_negative_preconditions
-from guided_lfd.pddl.model import pddl_name_problem
+from guided_lfd.pddl.model import pddl_name_defect
 from guided_lfd.pddl.reader import parse_domain, parse_problem_for
 from guided_lfd.pddl.writer import domain_to_pddl, problem_to_pddl
 
@@ -37,7 +37,7 @@ def merge(
         raise OptionError("--positive-for and --problem-output go together")
     if problem_output is not None and problem_output == output:
         raise OptionError("--problem-output must differ from --output")
-    why = None if name is None else pddl_name_problem(name.lower())
+    why = None if name is None else pddl_name_defect(name.lower())
     if why:
         raise OptionError(f"--name {name!r}: expected {why}")
     check_files([prior, *learned, positive_for], {"--output": output, "--problem-output": problem_output})

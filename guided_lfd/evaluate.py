@@ -52,7 +52,7 @@ def holds(goal: tuple[Literal, ...], state: frozenset[Atom] | set[Atom]) -> bool
     return all(literal_holds(lit, state) for lit in goal)
 
 
-def excuse_problem(robot: Domain, problem: Problem, excuse: list[Change]) -> str | None:
+def excuse_defect(robot: Domain, problem: Problem, excuse: list[Change]) -> str | None:
     """Why ``excuse`` is not an excuse for the robot's task (Definition 2), or None if it is one."""
     if not excuse:
         return "the excuse has no changes"

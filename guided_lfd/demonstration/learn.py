@@ -24,13 +24,12 @@ holds) is a demonstrated action:
 
 from __future__ import annotations
 
-import re
 from dataclasses import dataclass, replace
 
 from guided_lfd.demonstration.mutex import drop_implied_negative_preconditions, proven_invariants
 from guided_lfd.demonstration.trace import HAND_PREDICATES
 from guided_lfd.errors import Location, MergeError, TraceError
-from guided_lfd.pddl.model import ActionSchema, Atom, Domain, Literal, Predicate, common_supertype, pddl_name_problem
+from guided_lfd.pddl.model import ActionSchema, Atom, Domain, Literal, Predicate, common_supertype
 
 #: Activities that are never planning actions.
 SKIPPED = ("Idle",)
@@ -115,133 +114,6 @@ def ground_actions(document: dict, source: str = "segments") -> list[Demonstrate
         out.append(DemonstratedAction(name, objects, frozenset(pre), frozenset(add), frozenset(delete),
                                       f"{source} segment {seg['index']} ({seg['activity']} {' '.join(roles)})"))
     return out
-
-
-def load_segments(path: str) -> dict:
-    """Read a ``guided-lfd/segments`` JSON document (``-`` = stdin); TraceError if it is not one."""
-    from guided_lfd.io import read_json_document
-
-    text, doc = read_json_document(path, "segments", TraceError, "`guided-lfd segment`")
-    problem = document_problem(doc)
-    if problem is not None:
-        keys, message = problem
-        where = _json_position(text, keys)
-        name = "".join(f"[{k}]" if isinstance(k, int) else f".{k}" for k in keys).lstrip(".")
-        raise TraceError(f"{name}: {message}", Location(path, *where) if where else Location(path))
-    return doc
-
-
-#: A fluent as the segments document writes it: ``(pred arg ...)``.
-_ATOM_TEXT = re.compile(r"\(\s*(\S+?)((?:\s+[^\s()]+)*)\s*\)")
-#: An object name in a segment: no blanks or parentheses, not a variable.
-_OBJECT = re.compile(r"[^\s()?][^\s()]*")
-
-
-def document_problem(doc: dict) -> tuple[tuple, str] | None:
-    """The first thing that keeps ``doc`` from being a usable segments document: (JSON path, what was expected)."""
-    def show(value) -> str:
-        import json
-
-        text = json.dumps(value, ensure_ascii=False)
-        return text if len(text) <= 60 else text[:57] + "..."
-
-    arity: dict[str, int] = {}
-
-    def atoms(keys: tuple, value) -> tuple[tuple, str] | None:
-        if not isinstance(value, list):
-            return keys, f"expected a list of fluents like \"(open pinkdrawer)\", got {show(value)}"
-        for k, text in enumerate(value):
-            match = _ATOM_TEXT.fullmatch(text.strip()) if isinstance(text, str) else None
-            if match is None or any(a.startswith("?") for a in match.group(2).split()):
-                return keys + (k,), f"expected a fluent like \"(open pinkdrawer)\", got {show(text)}"
-            why = pddl_name_problem(match.group(1))
-            if why:
-                return keys + (k,), f"predicate {show(match.group(1))}: expected {why}"
-            n = len(match.group(2).split())
-            if arity.setdefault(match.group(1), n) != n:
-                return keys + (k,), (f"{match.group(1)} has {n} argument(s) here and {arity[match.group(1)]} "
-                                     "elsewhere; expected the same number")
-        return None
-
-    objects = doc.get("objects", {})
-    if not isinstance(objects, dict):
-        return ("objects",), f"expected an object mapping object names to types, got {show(objects)}"
-    for obj, kind in objects.items():
-        if not _OBJECT.fullmatch(obj):
-            return ("objects",), f"object name {show(obj)}: expected no blanks or parentheses"
-        why = "a string" if not isinstance(kind, str) else pddl_name_problem(kind) if kind != "object" else None
-        if why:
-            return ("objects", obj), f"type of {obj}: expected {why}, got {show(kind)}"
-    if "initial" in doc:
-        found = atoms(("initial",), doc["initial"])
-        if found:
-            return found
-    segments = doc.get("segments", [])
-    if not isinstance(segments, list):
-        return ("segments",), f"expected a list of segments, got {show(segments)}"
-    for i, seg in enumerate(segments):
-        here = ("segments", i)
-        if not isinstance(seg, dict):
-            return here, f"expected a segment (an object with index, hand, activity, before, after), got {show(seg)}"
-        for key in ("index", "hand", "activity", "before", "after"):
-            if key not in seg:
-                return here, f"missing key '{key}' (expected index, hand, activity, before, after)"
-        if not isinstance(seg["index"], int) or isinstance(seg["index"], bool):
-            return here + ("index",), f"expected a whole number, got {show(seg['index'])}"
-        if not isinstance(seg["hand"], str):
-            return here + ("hand",), f"expected left or right, got {show(seg['hand'])}"
-        activity = seg["activity"]
-        why = "a string" if not isinstance(activity, str) else pddl_name_problem(activity.lower())
-        if why:
-            return here + ("activity",), f"expected an activity name, {why}, got {show(activity)}"
-        for key in ("object", "target", "held_before", "held_after"):
-            value = seg.get(key)
-            if value is not None and not (isinstance(value, str) and (value == "" or _OBJECT.fullmatch(value))):
-                return here + (key,), f"expected an object name or \"\", got {show(value)}"
-        for key in ("before", "after"):
-            found = atoms(here + (key,), seg[key])
-            if found:
-                return found
-    clash = sorted(set(objects.values()) & (set(arity) | set(HAND_PREDICATES)))
-    if clash:
-        return ("objects",), f"type '{clash[0]}' is also a predicate; expected distinct names"
-    return None
-
-
-def _json_position(text: str, keys: tuple) -> tuple[int, int] | None:
-    """1-based line and column of the innermost object or list on ``keys`` in JSON ``text``."""
-    import json
-    import json.decoder
-    import json.scanner
-
-    where: dict[int, int] = {}
-    decoder = json.JSONDecoder()
-
-    def parse_object(s_and_end, *args):
-        value, end = json.decoder.JSONObject(s_and_end, *args)
-        where[id(value)] = s_and_end[1] - 1
-        return value, end
-
-    def parse_array(s_and_end, scan_once):
-        value, end = json.decoder.JSONArray(s_and_end, scan_once)
-        where[id(value)] = s_and_end[1] - 1
-        return value, end
-
-    decoder.parse_object, decoder.parse_array = parse_object, parse_array  # type: ignore[assignment]
-    try:
-        value, _ = json.scanner.py_make_scanner(decoder)(text, json.decoder.WHITESPACE.match(text, 0).end())
-    except (ValueError, StopIteration, RecursionError):
-        return None
-    offset = where.get(id(value))
-    for key in keys:
-        try:
-            value = value[key]
-        except (KeyError, IndexError, TypeError):
-            break
-        offset = where.get(id(value), offset)
-    if offset is None:
-        return None
-    return text.count("\n", 0, offset) + 1, offset - text.rfind("\n", 0, offset)
 
 
 def _atom(text: str, source: str) -> Atom:

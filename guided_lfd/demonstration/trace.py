@@ -48,7 +48,7 @@ import numpy as np
 import pandas as pd
 
 from guided_lfd.errors import Location, TraceError
-from guided_lfd.pddl.model import PDDL_NAME, PDDL_RESERVED, Atom, pddl_name_problem
+from guided_lfd.pddl.model import PDDL_NAME, PDDL_RESERVED, Atom, pddl_name_defect
 from guided_lfd.pddl.source import read_text
 
 TRACE_COLUMNS = ("time", "hand", "x", "y", "z", "grip", "in_hand", "act_on")
@@ -187,7 +187,7 @@ def load_state(path: str, span: tuple[float, float] | None = None,
                 raise TraceError(f"column 'fluent': expected object(Name,type), got '{raw}'",
                                  _where(path, frame, i, "fluent"))
             name, kind = atom.args
-            why = pddl_name_problem(kind) if kind != "object" else None  # the root type
+            why = pddl_name_defect(kind) if kind != "object" else None  # the root type
             if why:
                 raise TraceError(f"column 'fluent': type '{kind}' of {name}: expected {why}",
                                  _where(path, frame, i, "fluent"))
@@ -199,7 +199,7 @@ def load_state(path: str, span: tuple[float, float] | None = None,
             original = _FLUENT.match(raw).group(2).split(",")[0].strip()  # type: ignore[union-attr]
             spellings[atom.args[0]] = original
             continue
-        why = pddl_name_problem(atom.predicate)
+        why = pddl_name_defect(atom.predicate)
         if why:
             raise TraceError(f"column 'fluent': predicate '{atom.predicate}': expected {why}",
                              _where(path, frame, i, "fluent"))
@@ -309,4 +309,4 @@ def hand_move(frame: pd.DataFrame) -> np.ndarray:
 
 __all__ = ["Demonstration", "load_demonstration", "load_state", "parse_fluent", "hand_move", "TRACE_COLUMNS",
            "STATE_COLUMNS", "HAND_PREDICATES", "MOVE_THRESHOLD_M_S", "MOVE_WINDOW_S", "EFFECT_DELAY_S",
-           "PDDL_NAME", "PDDL_RESERVED", "pddl_name_problem"]
+           "PDDL_NAME", "PDDL_RESERVED", "pddl_name_defect"]

@@ -54,7 +54,7 @@ def type_members(t: str) -> tuple[str, ...]:
     return (t,)
 
 
-def pddl_name_problem(name: str) -> str | None:
+def pddl_name_defect(name: str) -> str | None:
     """Why ``name`` cannot be written as a PDDL name (domain, predicate, type), else None."""
     if not PDDL_NAME.fullmatch(name):
         return "a PDDL name (an ASCII letter, then letters, digits, '-' or '_')"
