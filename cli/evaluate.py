@@ -12,7 +12,7 @@ from cli.common import JsonOption, OutputOption, QuietOption, check_files, outpu
 from guided_lfd.demonstration.learn import ground_actions
 from guided_lfd.demonstration.segments_document import load_segments
 from guided_lfd.errors import EXIT_BAD_OPTION, InputFileError, Location, OptionError
-from guided_lfd.evaluate import DEFAULT_EXPLORATION_BOUND, Demonstration, excuse_defect
+from guided_lfd.evaluate import DEFAULT_EXPLORATION_BOUND, DemonstrationSteps, excuse_defect
 from guided_lfd.evaluate import evaluate as run_evaluation
 from guided_lfd.excuse.document import read_excuse
 from guided_lfd.excuse.engine import find_excuses
@@ -81,7 +81,7 @@ def evaluate(
     documents = []
     for path in demos:
         doc = load_segments(path)
-        documents.append(Demonstration(path, ground_actions(doc, path), doc.get("objects", {})))
+        documents.append(DemonstrationSteps(path, ground_actions(doc, path), doc.get("objects", {})))
     merged_domain = parse_domain(merged) if merged else None
     ui.reading_warnings(merged_domain)
     if merged_domain is not None:

@@ -329,8 +329,11 @@ def _prior_names(prior: Domain | None) -> set[str]:
 # -- the whole report ----------------------------------------------------------------
 
 @dataclass
-class Demonstration:
-    """One demonstration to evaluate: its source and its demonstrated actions."""
+class DemonstrationSteps:
+    """A demonstration as evaluate sees it: where it came from, its demonstrated actions, its objects' types.
+
+    (The recorded demonstration itself, frames and states, is :class:`guided_lfd.demonstration.trace.Demonstration`.)
+    """
 
     source: str
     steps: list[DemonstratedAction]
@@ -345,7 +348,7 @@ class Evaluation:
     sizes: PredictedSizes
     misdirection: Misdirection
     #: Each demonstration with how much of it was new to the robot.
-    demonstrations: list[tuple[Demonstration, Usefulness]] = field(default_factory=list)
+    demonstrations: list[tuple[DemonstrationSteps, Usefulness]] = field(default_factory=list)
     #: Whether the merged domain solves the task (None without a merged domain).
     solvability: Solvability | None = None
 
@@ -389,7 +392,7 @@ class Evaluation:
 
 
 def evaluate(robot: Domain, problem: Problem, human: Domain, excuse: list[Change],
-             demonstrations: list[Demonstration] = (),  # type: ignore[assignment]
+             demonstrations: list[DemonstrationSteps] = (),  # type: ignore[assignment]
              merged: Domain | None = None, nonminimal: list[Change] | None = None,
              bound: int = DEFAULT_EXPLORATION_BOUND) -> Evaluation:
     """All the paper's measures for the task (see the module docstring)."""

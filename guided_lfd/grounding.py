@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import functools
 import time
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from itertools import product
 from typing import Iterable, Sequence
 
@@ -85,7 +85,6 @@ class GroundTask:
     goal_pos: int
     goal_neg: int
     actions: list[GroundAction]
-    fixed_static: frozenset[str] = field(default_factory=frozenset)
 
     def satisfies_goal(self, state: int) -> bool:
         """Whether ``state`` models the goal."""
@@ -205,7 +204,7 @@ def ground(
             goal_pos |= 1 << index[lit.atom]
         else:
             goal_neg |= 1 << index[lit.atom]
-    return GroundTask(domain, problem, atoms, index, init, goal_pos, goal_neg, ground_actions, frozenset(static))
+    return GroundTask(domain, problem, atoms, index, init, goal_pos, goal_neg, ground_actions)
 
 
 def _key_function(atom: Atom, params: list[str]):

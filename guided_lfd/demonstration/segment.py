@@ -40,7 +40,6 @@ import numpy as np
 from guided_lfd.demonstration.trace import EFFECT_DELAY_S, Demonstration
 from guided_lfd.pddl.model import Atom
 
-ACTIVITIES = ("Idle", "Reach", "Take", "Put", "Stack", "Release", "Open", "Close", "Push", "Manipulate")
 #: Runs shorter than this are sensor jitter wherever they occur (s): a few
 #: frames, as a flickering grip or the speed crossing its threshold produce.
 JITTER_S = 0.06
