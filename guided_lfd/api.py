@@ -88,7 +88,7 @@ def plan(domain: Domain, problem: Problem, search: str | None = None,
     validate or its cost disagrees with the validator's (a bug, never hidden).
     """
     from guided_lfd.planning import DEFAULT_SEARCH, plan_task
-    from guided_lfd.validation import validate_plan
+    from guided_lfd.validation import validated
 
     from guided_lfd.errors import OptionError
     from guided_lfd.planning import SEARCHES
@@ -100,9 +100,7 @@ def plan(domain: Domain, problem: Problem, search: str | None = None,
     if result.plan is None:
         return PlanReport(domain.path, problem.path, None, None, None, search, result.time_s)
     steps = [PlanStep(a.schema, a.args) for a in result.plan]
-    report = validate_plan(domain, problem.init, problem.goal, steps, problem)
-    if not report.valid:
-        raise RuntimeError("planner returned a plan that does not validate")
+    report = validated(domain, problem, steps, "the planner's plan")
     if report.cost != sum(a.cost for a in result.plan):
         raise RuntimeError("planner and validator disagree on the plan's cost")
     return PlanReport(domain.path, problem.path, steps, report.cost, result.optimal, search, result.time_s)

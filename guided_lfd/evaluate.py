@@ -26,12 +26,11 @@ from typing import Any
 
 from guided_lfd.demonstration.learn import DemonstratedAction
 from guided_lfd.excuse.change import Change, excuse_state
-from guided_lfd.excuse.reach import ReachabilityOracle
-from guided_lfd.excuse.space import Semantics, build_space
+from guided_lfd.excuse.prepare import prepare
 from guided_lfd.grounding import GroundTask, ground
 from guided_lfd.pddl.model import Atom, Domain, Literal, Problem
 from guided_lfd.planning import plan_task
-from guided_lfd.validation import PlanStep, validate_plan
+from guided_lfd.validation import PlanStep, validate_plan, validated
 from guided_lfd.validation import holds as literal_holds
 
 #: Default bound on the states explored for misdirected guidance.
@@ -75,8 +74,7 @@ def optimal_plan(domain: Domain, problem: Problem, goal: tuple[Literal, ...] | N
     if result.plan is None:
         return None
     steps = [PlanStep(a.schema, a.args) for a in result.plan]
-    if not validate_plan(domain, task_problem.init, task_problem.goal, steps).valid:
-        raise RuntimeError("internal check failed: a predicted demonstration plan does not validate")
+    validated(domain, task_problem, steps, "a predicted demonstration plan")
     return steps
 
 
@@ -150,8 +148,9 @@ class RobotReachability:
     """Whether the robot reaches its goal from a given state (memoised across states)."""
 
     def __init__(self, robot: Domain, problem: Problem) -> None:
-        self.task: GroundTask = ground(robot, problem)  # no pruning: any atom may change
-        self.oracle = ReachabilityOracle(build_space(self.task, Semantics.LITERAL))
+        prepared = prepare(robot, problem)  # no pruning: any atom may change
+        self.task: GroundTask = prepared.task
+        self.oracle = prepared.oracle
 
     def __call__(self, state: frozenset[Atom] | set[Atom]) -> bool:
         bits = 0

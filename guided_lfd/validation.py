@@ -159,6 +159,18 @@ def cost_kind(problem: Problem) -> str:
     return "general cost" if problem.metric else "unit cost"
 
 
+def validated(domain: Domain, problem: Problem, steps: list[PlanStep], what: str = "a plan",
+              state: frozenset[Atom] | set[Atom] | None = None,
+              goal: tuple[Literal, ...] | None = None) -> ValidationReport:
+    """The report of ``steps`` from ``state`` (default: the problem's initial state) to ``goal`` (the problem's);
+    a :class:`RuntimeError` if they do not validate: a plan guided-lfd made that fails is a bug, never hidden."""
+    report = validate_plan(domain, problem.init if state is None else state, problem.goal if goal is None else goal,
+                           steps, problem)
+    if not report.valid:
+        raise RuntimeError(f"internal check failed: {what} does not validate")
+    return report
+
+
 def holds(lit: Literal, state: set[Atom] | frozenset[Atom]) -> bool:
     """Whether the literal (equality included) is true in ``state``."""
     if lit.atom.predicate == EQUALITY:

@@ -41,17 +41,12 @@ def _robot_solves(robot, problem, complete, time_limit: float) -> bool | None:
     """Whether the robot can solve the task (None = undecided in time)."""
     from guided_lfd.errors import SearchTimeout
     from guided_lfd.excuse.engine import ExcuseOptions
-    from guided_lfd.excuse.reach import ReachabilityOracle
-    from guided_lfd.excuse.space import Semantics, build_space
-    from guided_lfd.grounding import ground
+    from guided_lfd.excuse.prepare import prepare
 
-    options = ExcuseOptions(fixed_from=complete)
-    fixed = options.fixed_predicates(robot)
-    task = ground(robot, problem, fixed=fixed)
-    space = build_space(task, Semantics.LITERAL, fixed)
-    oracle = ReachabilityOracle(space, time.monotonic() + time_limit)
+    fixed = ExcuseOptions(fixed_from=complete).fixed_predicates(robot)
     try:
-        return oracle.solve(task.init) is not None
+        prepared = prepare(robot, problem, fixed=fixed, deadline=time.monotonic() + time_limit)
+        return prepared.oracle.solve(prepared.task.init) is not None
     except SearchTimeout:
         return None
 

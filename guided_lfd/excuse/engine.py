@@ -20,17 +20,18 @@ from guided_lfd.errors import SearchTimeout
 from guided_lfd.excuse.change import Change, excuse_state
 from guided_lfd.excuse.check import check_excuse
 from guided_lfd.excuse.lmcut import RelaxedExcuseTask
+from guided_lfd.excuse.prepare import prepare
 from guided_lfd.excuse.reach import ReachabilityOracle
 from guided_lfd.excuse.space import (
-    ChangeSpace, MutexGroup, Semantics, build_space, check_cost_predicates, check_fixed,
+    ChangeSpace, MutexGroup, Semantics, check_cost_predicates, check_fixed,
 )
 from guided_lfd.excuse.statistics import ExcuseStatistics
 from guided_lfd.excuse.status import ExcuseStatus
 from guided_lfd.excuse.strategies import DEFAULT_STRATEGY, STRATEGIES, Progress, SearchLimits
-from guided_lfd.grounding import GroundAction, GroundTask, bits, ground
+from guided_lfd.grounding import GroundAction, GroundTask, bits
 from guided_lfd.optimal import certified_optimal, shorten_plan
 from guided_lfd.pddl.model import Atom, Domain, Literal, Problem, pretty_atom
-from guided_lfd.validation import PlanStep
+from guided_lfd.validation import PlanStep, validated
 
 
 @dataclass
@@ -309,15 +310,10 @@ class _Run:
         """Ground, build the change space, check solvability, search, and plan from each excuse."""
         options = self.options
         fixed = options.fixed_predicates(self.domain)
-        task = ground(self.domain, self.problem, fixed=fixed, deadline=self.deadline)
-        groups: list[MutexGroup] = []
-        if options.semantics is Semantics.CONSISTENT and not task.satisfies_goal(task.init):
-            self._enter("invariant synthesis")
-            from guided_lfd.excuse.invariants import mutex_groups
-
-            groups = mutex_groups(options.invariants_from or self.domain, task, self.deadline)
-        self._enter("change space")
-        space = self.space = build_space(task, options.semantics, fixed, options.costs, groups)
+        prepared = prepare(self.domain, self.problem, options.semantics, fixed, options.costs,
+                           options.invariants_from, self.deadline, self._enter)
+        task, space, oracle = prepared.task, prepared.space, prepared.oracle
+        self.space = space
         stats = self.stats
         stats.ground_atoms, stats.ground_actions = len(task.atoms), len(task.actions)
         stats.changeable_atoms, stats.relevant_atoms = space.changeable.bit_count(), space.relevant_atoms.bit_count()
@@ -329,7 +325,6 @@ class _Run:
         # oracle's memory of dead states.
         self._enter("relaxed task")
         relaxed = RelaxedExcuseTask(space)
-        oracle = ReachabilityOracle(space, self.deadline)
         linger(task, relaxed, oracle)
         self._enter("already solvable?")
         plan0 = None
@@ -393,10 +388,7 @@ def _verify(domain: Domain, problem: Problem, changes: list[Change], plan: list[
     steps = [PlanStep(a.schema, a.args) for a in plan]
     groups = _group_atoms(space)
     if not changes:
-        from guided_lfd.validation import validate_plan
-
-        if not validate_plan(domain, problem.init, problem.goal, steps, problem).valid:
-            raise RuntimeError("internal check failed: the robot plan does not validate")
+        validated(domain, problem, steps, "the robot plan")
         return
     problems = check_excuse(domain, problem, changes, steps, groups)
     if problems:

@@ -1,0 +1,50 @@
+"""Ground a task, build its change space and the robot's reachability oracle: the one way it is done.
+
+The excuse engine, the evaluation's "can the robot reach the goal from
+here?" and the benchmark's "is this task unsolvable without the skill?" all
+start here.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Callable, Sequence
+
+from guided_lfd.excuse.reach import ReachabilityOracle
+from guided_lfd.excuse.space import ChangeSpace, MutexGroup, Semantics, build_space
+from guided_lfd.grounding import GroundTask, ground
+from guided_lfd.pddl.model import Domain, Problem
+
+__all__ = ["PreparedTask", "prepare"]
+
+
+@dataclass
+class PreparedTask:
+    """A ground task, the excuse changes it admits, and the oracle that answers reachability on it."""
+
+    task: GroundTask
+    groups: list[MutexGroup]
+    space: ChangeSpace
+    oracle: ReachabilityOracle
+
+
+def prepare(domain: Domain, problem: Problem, semantics: Semantics = Semantics.LITERAL, fixed: Sequence[str] = (),
+            costs: Sequence[str] = (), invariants_from: Domain | None = None, deadline: float | None = None,
+            on_phase: Callable[[str], None] | None = None) -> PreparedTask:
+    """Ground ``problem`` (``fixed`` predicates' static atoms pruned), synthesise invariants for the
+    consistent semantics (from ``invariants_from``, else ``domain``), build the change space and the oracle.
+
+    ``on_phase`` hears each phase's name as it begins (for a timed-out run's report).
+    """
+    task = ground(domain, problem, fixed=fixed, deadline=deadline)
+    groups: list[MutexGroup] = []
+    if semantics is Semantics.CONSISTENT and not task.satisfies_goal(task.init):
+        if on_phase:
+            on_phase("invariant synthesis")
+        from guided_lfd.excuse.invariants import mutex_groups
+
+        groups = mutex_groups(invariants_from or domain, task, deadline)
+    if on_phase:
+        on_phase("change space")
+    space = build_space(task, semantics, list(fixed), list(costs), groups)
+    return PreparedTask(task, groups, space, ReachabilityOracle(space, deadline))
