@@ -2,26 +2,17 @@
 
 from __future__ import annotations
 
-import csv
-import io
-
 import statistics
 from pathlib import Path
 from typing import Any
 
 from guided_lfd.io import json_document, write_text
-
-
+from guided_lfd.reporting import PlotsUnavailable, csv_text, markdown_table, pyplot, save_figure
 from guided_lfd.study.paper import DEMONSTRATORS, KITCHEN_NAMES, PaperData, headline, size_reduction, time_ratios
 from guided_lfd.study.run import KitchenResult, _round
 
-
-def _csv_text(header: list[str], rows: list[list[Any]]) -> str:
-    buf = io.StringIO()
-    writer = csv.writer(buf, lineterminator="\n")
-    writer.writerow(header)
-    writer.writerows(["" if v is None else v for v in row] for row in rows)
-    return buf.getvalue()
+#: Resolution of the study's PNG plots.
+DPI = 110
 
 
 def time_table(paper: PaperData, kitchens: list[KitchenResult]) -> tuple[list[str], list[list[Any]]]:
@@ -88,11 +79,8 @@ def reproduced_headline(kitchens: list[KitchenResult]) -> dict[str, float]:
 def plot(paper: PaperData, kitchens: list[KitchenResult], out: Path) -> list[Path]:
     """Demonstration times and predicted vs observed sizes, as PNG (empty list without matplotlib)."""
     try:
-        import matplotlib
-
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-    except ImportError:
+        plt = pyplot()
+    except PlotsUnavailable:
         return []
     paths = []
     fig, axes = plt.subplots(1, 2, figsize=(10, 4), sharey=True)
@@ -109,7 +97,7 @@ def plot(paper: PaperData, kitchens: list[KitchenResult], out: Path) -> list[Pat
         ax.set_title(f"{KITCHEN_NAMES[k.kitchen]}: demonstration time")
         ax.set_ylabel("seconds")
     axes[0].legend(fontsize=8)
-    paths.append(_save(plt, fig, out / "study-time.png"))
+    paths.append(save_figure(fig, out / "study-time.png", DPI))
 
     fig, axes = plt.subplots(1, 2, figsize=(10, 4), sharey=True)
     for ax, k in zip(axes, kitchens):
@@ -128,27 +116,8 @@ def plot(paper: PaperData, kitchens: list[KitchenResult], out: Path) -> list[Pat
         ax.set_xticks(xs, DEMONSTRATORS)
         ax.set_title(f"{KITCHEN_NAMES[k.kitchen]}: demonstration size (actions)")
     axes[0].legend(fontsize=7)
-    paths.append(_save(plt, fig, out / "study-sizes.png"))
+    paths.append(save_figure(fig, out / "study-sizes.png", DPI))
     return paths
-
-
-def _save(plt: Any, fig: Any, path: Path) -> Path:
-    """Write ``fig`` as PNG without version metadata (so reruns are byte-identical)."""
-    fig.tight_layout()
-    fig.savefig(path, dpi=110, metadata={"Software": None})
-    plt.close(fig)
-    return path
-
-
-def _md_table(header: list[str], rows: list[list[Any]]) -> str:
-    def cell(v: Any) -> str:
-        if v is None or v == "":
-            return "-"
-        return f"{v:.3f}" if isinstance(v, float) else str(v)
-
-    lines = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
-    lines += ["| " + " | ".join(cell(v) for v in row) + " |" for row in rows]
-    return "\n".join(lines)
 
 
 def study_markdown(paper: PaperData, kitchens: list[KitchenResult], plots: list[Path]) -> str:
@@ -195,14 +164,14 @@ def study_markdown(paper: PaperData, kitchens: list[KitchenResult], plots: list[
             out.append(f"  * `{' '.join(cause['cause'])}`: {cause['states']} state(s), e.g. "
                        f"`{' '.join(cause['example_difference'])}`")
         out.append("")
-    out += ["### Per demonstrator", "", _md_table(*measures_table(kitchens)), "",
+    out += ["### Per demonstrator", "", markdown_table(*measures_table(kitchens)), "",
             f"Plan solvability after demonstration (prior + the excuse demonstration's learned actions solve the "
             f"original task): **{'holds for every demonstrator and both kitchens' if solvable else 'FAILS for some'}**.",
             ""]
-    out += ["## Table I: demonstration time (s)", "", _md_table(*time_table(paper, kitchens)), "",
+    out += ["## Table I: demonstration time (s)", "", markdown_table(*time_table(paper, kitchens)), "",
             "The rendered traces are timed to the paper's measurements, so the reproduced times match by "
             "construction (up to one frame at 90 Hz); what they check is that the trace files carry them.", ""]
-    out += ["## Table II: demonstration size (planning actions)", "", _md_table(*size_table(paper, kitchens)), "",
+    out += ["## Table II: demonstration size (planning actions)", "", markdown_table(*size_table(paper, kitchens)), "",
             "**O** (observed) is the number of actions the chain learns from each demonstration. The rendered "
             "demonstrations are padded with redundant skills to the paper's O counts, so a match shows that "
             "segmentation and learning recover every demonstrated action. P3's complete demonstrations use both "
@@ -248,7 +217,7 @@ def write_report(out: Path, paper: PaperData, kitchens: list[KitchenResult]) -> 
     for name, (header, rows) in (("study-time.csv", time_table(paper, kitchens)),
                                  ("study-size.csv", size_table(paper, kitchens)),
                                  ("study-measures.csv", measures_table(kitchens))):
-        write_text(out / name, _csv_text(header, rows))
+        write_text(out / name, csv_text(header, rows))
     plots = plot(paper, kitchens, out)
     write_text(out / "study.md", study_markdown(paper, kitchens, plots))
     summary = {"paper": headline(paper), "reproduced": reproduced_headline(kitchens),

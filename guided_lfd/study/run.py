@@ -17,6 +17,7 @@ from guided_lfd.excuse.engine import describe_change, find_excuses
 from guided_lfd.merge import merge_domains
 from guided_lfd.pddl.model import Domain
 from guided_lfd.pddl.reader import parse_domain, parse_task
+from guided_lfd.reporting import relative_path
 
 from guided_lfd.study.paper import DEMONSTRATORS, KITCHEN_NAMES, KITCHENS, PaperData, load_paper_data
 
@@ -73,21 +74,14 @@ class KitchenResult:
     demonstrators: list[DemonstratorResult] = field(default_factory=list)
 
 
-def _relative(path: Path, root: Path) -> str:
-    try:
-        return str(path.resolve().relative_to(root.resolve()))
-    except ValueError:
-        return str(path)
-
-
 def run_demo(root: Path, kitchen: str, demonstrator: str, kind: str, robot: Domain) -> DemoResult:
     """Segment and learn one demonstration (its segments document and learned domain are in the result)."""
     trace = root / "data" / "demos" / kitchen / f"{demonstrator}-{kind}.csv"
     state = trace.with_name(trace.stem + ".state.csv")
     demo = load_demonstration(str(trace), str(state))
     segments = [s for s in segment(demo) if s.activity != "Idle"]
-    doc = segments_document(demo, segments, _relative(state, root))
-    doc["trace"] = _relative(trace, root)
+    doc = segments_document(demo, segments, relative_path(state, root))
+    doc["trace"] = relative_path(trace, root)
     source = f"{kitchen}/{demonstrator}-{kind}"
     steps = ground_actions(doc, source)
     learned = learn_domain([(source, doc)], name=f"learned-{kitchen}-{demonstrator}-{kind}".lower())
