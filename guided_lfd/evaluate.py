@@ -31,6 +31,7 @@ from guided_lfd.excuse.space import Semantics, build_space
 from guided_lfd.grounding import GroundTask, ground
 from guided_lfd.pddl.model import Atom, Domain, Literal, Problem
 from guided_lfd.planning import plan_task
+from guided_lfd.reporting import round_fraction
 from guided_lfd.validation import PlanStep, validate_plan
 from guided_lfd.validation import holds as literal_holds
 
@@ -183,7 +184,7 @@ class Misdirection:
 
     def as_dict(self) -> dict[str, Any]:
         """The JSON form used by reports."""
-        return {"fraction": _round(self.fraction), "excuse_states": self.excuse_states,
+        return {"fraction": round_fraction(self.fraction), "excuse_states": self.excuse_states,
                 "misdirected_states": self.misdirected, "explored_states": self.explored, "bound": self.bound,
                 "exhaustive": self.complete, "causes": self.examples}
 
@@ -348,7 +349,7 @@ def evaluate(robot: Domain, problem: Problem, human: Domain, excuse: list[Change
     report: dict[str, Any] = {
         "excuse": [str(c) for c in excuse],
         "demonstration_size": {
-            "f1": _round(sizes.f1),
+            "f1": round_fraction(sizes.f1),
             "predicted": {
                 "minimal_excuse": sizes.minimal_excuse,
                 "nonminimal_excuse": sizes.nonminimal_excuse,
@@ -366,7 +367,7 @@ def evaluate(robot: Domain, problem: Problem, human: Domain, excuse: list[Change
         useful = usefulness(demo.steps, robot, demo.types)
         report["demonstrations"].append({
             "source": demo.source, "demonstrated_actions": useful.demonstrated, "useful_actions": useful.useful,
-            "useful_fraction": _round(useful.fraction), "steps": useful.steps,
+            "useful_fraction": round_fraction(useful.fraction), "steps": useful.steps,
         })
     if merged is not None:
         solv = solvability_after(merged, problem, robot)
@@ -374,10 +375,6 @@ def evaluate(robot: Domain, problem: Problem, human: Domain, excuse: list[Change
             "solvable": solv.solvable, "plan": solv.plan, "demonstrated_actions_used": solv.demonstrated_actions_used,
         }
     return report
-
-
-def _round(value: float | None) -> float | None:
-    return None if value is None else round(value, 4)
 
 
 def report_rows(report: dict[str, Any]) -> list[tuple[str, str, str]]:

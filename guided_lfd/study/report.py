@@ -7,9 +7,9 @@ from pathlib import Path
 from typing import Any
 
 from guided_lfd.io import json_document, write_text
-from guided_lfd.reporting import PlotsUnavailable, csv_text, markdown_table, pyplot, save_figure
+from guided_lfd.reporting import PlotsUnavailable, csv_text, markdown_table, pyplot, round_fraction, save_figure
 from guided_lfd.study.paper import DEMONSTRATORS, KITCHEN_NAMES, PaperData, headline, size_reduction, time_ratios
-from guided_lfd.study.run import KitchenResult, _round
+from guided_lfd.study.run import KitchenResult
 
 #: Resolution of the study's PNG plots.
 DPI = 110
@@ -56,7 +56,7 @@ def measures_table(kitchens: list[KitchenResult]) -> tuple[list[str], list[list[
     rows = []
     for k in kitchens:
         for d in k.demonstrators:
-            fr = {kind: (_round(x.useful_actions / x.demonstrated_actions) if x.demonstrated_actions else None)
+            fr = {kind: (round_fraction(x.useful_actions / x.demonstrated_actions) if x.demonstrated_actions else None)
                   for kind, x in d.demos.items()}
             rows.append([k.kitchen, d.demonstrator, " ".join(k.excuse), d.f1, fr["excuse"], fr["complete"],
                          "yes" if d.solvable_after_excuse_demo else "no", d.excuse_on_merged,
@@ -72,8 +72,8 @@ def reproduced_headline(kitchens: list[KitchenResult]) -> dict[str, float]:
     observed = {(k.kitchen, d.demonstrator): (d.demos["excuse"].demonstrated_actions,
                                               d.demos["complete"].demonstrated_actions)
                 for k in kitchens for d in k.demonstrators}
-    return {"mean_time_ratio": round(ratio, 4), "less_time": round(1 - ratio, 4),
-            **{f"size_reduction_{k.kitchen}": round(size_reduction(observed, k.kitchen), 4) for k in kitchens}}
+    return {"mean_time_ratio": round_fraction(ratio), "less_time": round_fraction(1 - ratio),
+            **{f"size_reduction_{k.kitchen}": round_fraction(size_reduction(observed, k.kitchen)) for k in kitchens}}
 
 
 def plot(paper: PaperData, kitchens: list[KitchenResult], out: Path) -> list[Path]:

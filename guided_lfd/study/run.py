@@ -17,7 +17,7 @@ from guided_lfd.excuse.engine import describe_change, find_excuses
 from guided_lfd.merge import merge_domains
 from guided_lfd.pddl.model import Domain
 from guided_lfd.pddl.reader import parse_domain, parse_task
-from guided_lfd.reporting import relative_path
+from guided_lfd.reporting import relative_path, round_fraction
 
 from guided_lfd.study.paper import DEMONSTRATORS, KITCHEN_NAMES, KITCHENS, PaperData, load_paper_data
 
@@ -106,7 +106,7 @@ def run_kitchen(root: Path, kitchen: str, bound: int = STUDY_EXPLORATION_BOUND,
     misdirection = misdirected_guidance(human, robot, problem, excuse, bound, reach)
     result = KitchenResult(
         kitchen, [str(c) for c in excuse], [describe_change(c, problem.spellings) for c in excuse],
-        _predicted(reference), _round(reference.f1), reference.nonminimal_changes,
+        _predicted(reference), round_fraction(reference.f1), reference.nonminimal_changes,
         misdirection.as_dict(),
     )
     for p in DEMONSTRATORS:
@@ -121,17 +121,13 @@ def run_kitchen(root: Path, kitchen: str, bound: int = STUDY_EXPLORATION_BOUND,
         knowledge = merge_domains([robot, demos["excuse"].learned, demos["complete"].learned], name=robot.name).domain
         sizes = predicted_sizes(knowledge, problem, excuse, reach)
         result.demonstrators.append(DemonstratorResult(
-            kitchen, p, demos, _predicted(sizes), _round(sizes.f1), solv.solvable, solv.plan, on_merged, merged))
+            kitchen, p, demos, _predicted(sizes), round_fraction(sizes.f1), solv.solvable, solv.plan, on_merged, merged))
     return result
 
 
 def _predicted(sizes: PredictedSizes) -> dict[str, int | None]:
     return {"minimal_excuse": sizes.minimal_excuse, "nonminimal_excuse": sizes.nonminimal_excuse,
             "goal": sizes.goal, "remaining_after_excuse": sizes.remaining_after_excuse}
-
-
-def _round(value: float | None, digits: int = 3) -> float | None:
-    return None if value is None else round(value, digits)
 
 
 def run_study(root: Path, progress: Callable[[str], None] | None = None) -> tuple[PaperData, list[KitchenResult]]:
