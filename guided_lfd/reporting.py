@@ -108,8 +108,12 @@ def save_figure(fig: Any, path: Path, dpi: int) -> Path:
     return path
 
 
-def plots_markdown(plots: list[Path] | None, base: Path) -> list[str]:
-    """The ``## Plots`` section: a link per plot (relative to ``base``), or :data:`PLOTS_HINT` when skipped."""
+def plots_markdown(plots: list[Path] | None, base: Path | None = None) -> list[str]:
+    """The ``## Plots`` section: a link per plot, or :data:`PLOTS_HINT` when ``plots`` is None (skipped).
+
+    A link is relative to ``base`` (default: the plot's own folder, i.e. its file name).
+    """
     if plots is None:
         return ["## Plots", "", f"Not drawn: {PLOTS_HINT}."]
-    return ["## Plots", ""] + [f"![{p.stem}]({relative_path(p, base)})" for p in plots]
+    return ["## Plots", ""] + [f"![{p.stem}]({relative_path(p, p.parent if base is None else base)})"
+                               for p in plots]

@@ -15,7 +15,8 @@ DPI = 120
 
 
 def plot(rows: list[dict[str, Any]], folder: Path, time_limit: float) -> list[Path]:
-    """Cactus plot and time-vs-size plot as PNG files."""
+    """Cactus plot and time-vs-size plot as PNG files (:class:`~guided_lfd.reporting.PlotsUnavailable` without
+    matplotlib: the caller skips them and passes ``plots=None`` to :func:`summary_markdown`)."""
     plt = pyplot()
     folder.mkdir(parents=True, exist_ok=True)
     configs = sorted({(r["strategy"], r["semantics"]) for r in rows})
@@ -100,9 +101,9 @@ def _limit_section(rows: list[dict[str, Any]], time_limit: float) -> list[str]:
     return out
 
 
-def summary_markdown(rows: list[dict[str, Any]], time_limit: float, command: str, plots: list[Path],
+def summary_markdown(rows: list[dict[str, Any]], time_limit: float, command: str, plots: list[Path] | None,
                      base: Path) -> str:
-    """The markdown summary: coverage table, speed-ups, agreement, plots."""
+    """The markdown summary: coverage table, speed-ups, agreement, plots (None: skipped, the section says so)."""
     comps = compare(rows, time_limit=time_limit)
     domains = sorted({r["domain"] for r in rows})
     lines = [
