@@ -79,42 +79,77 @@ def reproduced_headline(kitchens: list[KitchenResult]) -> dict[str, float]:
 def plot(paper: PaperData, kitchens: list[KitchenResult], out: Path) -> list[Path]:
     """Demonstration times and predicted vs observed sizes, as PNG (:class:`PlotsUnavailable` without matplotlib)."""
     plt = pyplot()
-    paths = []
+    return [_plot_times(plt, paper, kitchens, out / "study-time.png"),
+            _plot_sizes(plt, paper, kitchens, out / "study-sizes.png")]
+
+
+def _plot_times(plt: Any, paper: PaperData, kitchens: list[KitchenResult], path: Path) -> Path:
+    """Table I: the paper's times as bars, the rendered traces' durations as a black mark on each bar."""
     fig, axes = plt.subplots(1, 2, figsize=(10, 4), sharey=True)
     width = 0.2
+    kinds = (("excuse", "tab:green", "excuse demonstration (guided), paper"),
+             ("complete", "tab:grey", "complete demonstration, paper"))
     for ax, k in zip(axes, kitchens):
         xs = range(len(DEMONSTRATORS))
-        for j, (kind, colour) in enumerate((("excuse", "tab:green"), ("complete", "tab:grey"))):
-            paper_t = [paper.times[(k.kitchen, p, kind)] for p in DEMONSTRATORS]
-            ours = [d.demos[kind].duration_s for d in k.demonstrators]
-            ax.bar([x + (j - 0.5) * 2 * width for x in xs], paper_t, width, color=colour, label=f"{kind} (paper)")
-            ax.plot([x + (j - 0.5) * 2 * width for x in xs], ours, "k_", markersize=14,
-                    label=f"{kind} (rendered trace)" if j == 0 else None)
+        for j, (kind, colour, label) in enumerate(kinds):
+            at = [x + (j - 0.5) * 2 * width for x in xs]
+            ax.bar(at, [paper.times[(k.kitchen, p, kind)] for p in DEMONSTRATORS], width, color=colour, label=label)
+            ax.plot(at, [d.demos[kind].duration_s for d in k.demonstrators], "k_", markersize=14, markeredgewidth=2,
+                    label="rendered trace (reproduced), either demonstration" if j == 0 else None)
         ax.set_xticks(list(xs), DEMONSTRATORS)
-        ax.set_title(f"{KITCHEN_NAMES[k.kitchen]}: demonstration time")
-        ax.set_ylabel("seconds")
-    axes[0].legend(fontsize=8)
-    paths.append(save_figure(fig, out / "study-time.png", DPI))
+        ax.set_xlabel("demonstrator")
+        ax.set_title(f"{KITCHEN_NAMES[k.kitchen]}: demonstration time (Table I)")
+    axes[0].set_ylabel("demonstration time (s)")
+    axes[0].set_ylim(0, 1.3 * max(paper.times.values()))  # room for the legend above the bars
+    handles, labels = axes[0].get_legend_handles_labels()
+    order = [labels.index(name) for name in [label for _, _, label in kinds]
+             + ["rendered trace (reproduced), either demonstration"]]
+    axes[0].legend([handles[i] for i in order], [labels[i] for i in order], fontsize=8, loc="upper left")
+    return save_figure(fig, path, DPI)
 
-    fig, axes = plt.subplots(1, 2, figsize=(10, 4), sharey=True)
+
+def _plot_sizes(plt: Any, paper: PaperData, kitchens: list[KitchenResult], path: Path) -> Path:
+    """Table II: predicted (P) and observed (O) sizes; dashed the paper's, solid reproduced.
+
+    A missing value (the paper has no O for P3's complete demonstrations) is a gap in its line, not a line
+    drawn past it.
+    """
+    from matplotlib.lines import Line2D
+    from matplotlib.ticker import MaxNLocator
+
+    fig, axes = plt.subplots(1, 2, figsize=(10, 4.6), sharey=True)
+    quantities = [  # (key in the paper's table, reproduced values or None, name, marker, colour)
+        ("predicted_minimal_excuse", lambda d: d.predicted["minimal_excuse"],
+         "P(E): predicted, to the minimal excuse", "o", "tab:green"),
+        ("observed_minimal_excuse", None, "O(E): observed, excuse demonstration", "s", "tab:blue"),
+        ("predicted_goal", lambda d: d.predicted["goal"], "P(G): predicted, to the goal", "^", "tab:red"),
+        ("observed_goal", None, "O(G): observed, complete demonstration", "d", "tab:purple"),
+    ]
+    nan = float("nan")
+    xs = list(range(len(DEMONSTRATORS)))
     for ax, k in zip(axes, kitchens):
-        xs = list(range(len(DEMONSTRATORS)))
-        series = [
-            ("P E_min paper", [paper.sizes[(k.kitchen, p)]["predicted_minimal_excuse"] for p in DEMONSTRATORS], "o--", "tab:green"),
-            ("P E_min reproduced", [d.predicted["minimal_excuse"] for d in k.demonstrators], "o-", "tab:green"),
-            ("O E_min paper", [paper.sizes[(k.kitchen, p)]["observed_minimal_excuse"] for p in DEMONSTRATORS], "s--", "tab:blue"),
-            ("P G paper", [paper.sizes[(k.kitchen, p)]["predicted_goal"] for p in DEMONSTRATORS], "^--", "tab:red"),
-            ("P G reproduced", [d.predicted["goal"] for d in k.demonstrators], "^-", "tab:red"),
-            ("O G paper", [paper.sizes[(k.kitchen, p)]["observed_goal"] for p in DEMONSTRATORS], "d--", "tab:purple"),
-        ]
-        for label, ys, style, colour in series:
-            pts = [(x, y) for x, y in zip(xs, ys) if y is not None]
-            ax.plot([x for x, _ in pts], [y for _, y in pts], style, color=colour, label=label)
+        for key, ours, _, marker, colour in quantities:
+            theirs = [paper.sizes[(k.kitchen, p)][key] for p in DEMONSTRATORS]
+            ax.plot(xs, [nan if y is None else y for y in theirs], marker=marker, ls="--", color=colour)
+            if ours is not None:
+                ax.plot(xs, [nan if (y := ours(d)) is None else y for d in k.demonstrators], marker=marker, ls="-",
+                        color=colour)
+            for x, y in enumerate(theirs):
+                if y is None:  # say so in the gap, halfway between the neighbours
+                    near = [v for v in theirs[max(x - 1, 0):x + 2] if v is not None]
+                    ax.annotate(f"{DEMONSTRATORS[x]}: no paper value", (x, statistics.fmean(near) if near else 0),
+                                ha="center", va="center", fontsize=7, color=colour)
         ax.set_xticks(xs, DEMONSTRATORS)
-        ax.set_title(f"{KITCHEN_NAMES[k.kitchen]}: demonstration size (actions)")
-    axes[0].legend(fontsize=7)
-    paths.append(save_figure(fig, out / "study-sizes.png", DPI))
-    return paths
+        ax.set_xlabel("demonstrator")
+        ax.yaxis.set_major_locator(MaxNLocator(integer=True, steps=[1, 2, 5, 10]))
+        ax.set_title(f"{KITCHEN_NAMES[k.kitchen]}: demonstration size (Table II)")
+    axes[0].set_ylabel("size (planning actions)")
+    axes[0].legend([Line2D([], [], marker=m, ls="", color=c) for _, _, _, m, c in quantities],
+                   [name for _, _, name, _, _ in quantities], fontsize=7, loc="upper right")
+    axes[1].legend([Line2D([], [], ls="--", color="black"), Line2D([], [], ls="-", color="black")],
+                   ["paper (Table II)", "reproduced (planned on the learned domains)"], fontsize=7,
+                   loc="upper right")
+    return save_figure(fig, path, DPI)
 
 
 def study_markdown(paper: PaperData, kitchens: list[KitchenResult], plots: list[Path] | None) -> str:
