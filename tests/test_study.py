@@ -103,3 +103,13 @@ def test_study_is_deterministic(study, tmp_path):
     first, second = _files(out), _files(tmp_path)
     assert sorted(first) == sorted(second)
     assert [name for name in first if first[name] != second[name]] == []
+
+
+def test_the_committed_results_are_what_the_study_writes(study):
+    """results/ is regenerated with the code: every file but the PNGs (their bytes depend on the matplotlib
+    version) is byte-identical to a fresh run."""
+    out, _, _ = study
+    fresh, committed = _files(out), _files(ROOT / "results")
+    assert sorted(fresh) == sorted(committed)
+    assert [name for name in fresh if not name.endswith(".png") and fresh[name] != committed[name]] == []
+

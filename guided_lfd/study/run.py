@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any, Callable
 
@@ -96,6 +96,8 @@ def run_kitchen(root: Path, kitchen: str, bound: int = STUDY_EXPLORATION_BOUND,
     """The chain for one kitchen and all demonstrators (writes nothing)."""
     folder = root / "data" / "domains" / kitchen
     robot, problem = parse_task(str(folder / "robot.pddl"), str(folder / "problem.pddl"))
+    # The merged domains name the robot's file: relative to the root, whichever way the root is spelled.
+    robot = replace(robot, path=relative_path(robot.path, root))
     human = parse_domain(str(folder / "human.pddl"))
     report = find_excuses(robot, problem)
     if report.excuse is None:
