@@ -65,7 +65,13 @@ def bench(
     if step in ("report", "all"):
         results.mkdir(parents=True, exist_ok=True)
         rows = benchmark.read_results(results_csv)
-        plots = benchmark.plot(rows, results, time_limit)
+        from guided_lfd.reporting import PLOTS_HINT, PlotsUnavailable
+
+        try:
+            plots = benchmark.plot(rows, results, time_limit)
+        except PlotsUnavailable:
+            plots = None
+            ui.info_plain(f"plots skipped: {PLOTS_HINT}")
         # The command the summary names (benchmarks/excuse_bench.py is this subcommand).
         text = benchmark.summary_markdown(rows, time_limit, "python benchmarks/excuse_bench.py all --jobs 2", plots, results)
         from guided_lfd.io import write_text

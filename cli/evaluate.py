@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-import csv
-import io
 from typing import Annotated
 
 import typer
@@ -19,6 +17,7 @@ from guided_lfd.excuse.engine import find_excuses
 from guided_lfd.excuse.status import ExcuseStatus
 from guided_lfd.io import write_text
 from guided_lfd.pddl.reader import parse_domain, parse_problem_for, parse_task
+from guided_lfd.reporting import csv_text
 
 
 @command
@@ -93,11 +92,7 @@ def evaluate(
         text = result.to_json({"robot": robot, "problem": problem, "human": human, "excuse_source": source,
                                "merged": merged})
     elif csv_out:
-        buf = io.StringIO()
-        writer = csv.writer(buf, lineterminator="\n")
-        writer.writerow(["measure", "value", "detail"])
-        writer.writerows(rows)
-        text = buf.getvalue()
+        text = csv_text(["measure", "value", "detail"], rows)
     else:
         width = max(len(m) for m, _, _ in rows)
         vwidth = max(len(v) for _, v, _ in rows)

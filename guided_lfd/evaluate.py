@@ -30,6 +30,7 @@ from guided_lfd.excuse.prepare import prepare
 from guided_lfd.grounding import GroundTask, ground
 from guided_lfd.pddl.model import Atom, Domain, Literal, Problem
 from guided_lfd.planning import plan_task
+from guided_lfd.reporting import round_fraction
 from guided_lfd.validation import PlanStep, validate_plan, validated
 from guided_lfd.validation import holds as literal_holds
 
@@ -182,7 +183,7 @@ class Misdirection:
 
     def as_dict(self) -> dict[str, Any]:
         """The JSON form used by reports."""
-        return {"fraction": _round(self.fraction), "excuse_states": self.excuse_states,
+        return {"fraction": round_fraction(self.fraction), "excuse_states": self.excuse_states,
                 "misdirected_states": self.misdirected, "explored_states": self.explored, "bound": self.bound,
                 "exhaustive": self.complete, "causes": self.examples}
 
@@ -357,7 +358,7 @@ class Evaluation:
         return {
             "excuse": [str(c) for c in self.excuse],
             "demonstration_size": {
-                "f1": _round(sizes.f1),
+                "f1": round_fraction(sizes.f1),
                 "predicted": {
                     "minimal_excuse": sizes.minimal_excuse,
                     "nonminimal_excuse": sizes.nonminimal_excuse,
@@ -370,7 +371,7 @@ class Evaluation:
             "misdirected_guidance": self.misdirection.as_dict(),
             "demonstrations": [
                 {"source": demo.source, "demonstrated_actions": useful.demonstrated, "useful_actions": useful.useful,
-                 "useful_fraction": _round(useful.fraction), "steps": useful.steps}
+                 "useful_fraction": round_fraction(useful.fraction), "steps": useful.steps}
                 for demo, useful in self.demonstrations
             ],
             "solvability_after_demonstration": None if self.solvability is None else {
@@ -401,10 +402,6 @@ def evaluate(robot: Domain, problem: Problem, human: Domain, excuse: list[Change
     useful = [(demo, usefulness(demo.steps, robot, demo.types)) for demo in demonstrations]
     solvability = solvability_after(merged, problem, robot) if merged is not None else None
     return Evaluation(list(excuse), sizes, misdirection, useful, solvability)
-
-
-def _round(value: float | None) -> float | None:
-    return None if value is None else round(value, 4)
 
 
 def report_rows(report: dict[str, Any]) -> list[tuple[str, str, str]]:

@@ -103,3 +103,72 @@ def test_study_is_deterministic(study, tmp_path):
     first, second = _files(out), _files(tmp_path)
     assert sorted(first) == sorted(second)
     assert [name for name in first if first[name] != second[name]] == []
+
+
+def test_the_committed_results_are_what_the_study_writes(study):
+    """results/ is regenerated with the code: every file but the PNGs (their bytes depend on the matplotlib
+    version) is byte-identical to a fresh run."""
+    out, _, _ = study
+    fresh, committed = _files(out), _files(ROOT / "results")
+    assert sorted(fresh) == sorted(committed)
+    assert [name for name in fresh if not name.endswith(".png") and fresh[name] != committed[name]] == []
+
+
+def _figures(monkeypatch, module) -> dict[str, object]:
+    """Draw with ``module.save_figure`` recording each figure by file name (and still saving it)."""
+    drawn = {}
+    save = module.save_figure
+
+    def record(fig, path, dpi):
+        drawn[path.name] = fig
+        axes = fig.axes  # kept for inspection: save_figure closes the figure, not its artists
+        drawn[path.name + ":axes"] = axes
+        return save(fig, path, dpi)
+
+    monkeypatch.setattr(module, "save_figure", record)
+    return drawn
+
+
+def test_the_study_plots_name_their_marks_and_leave_p3_out(study, monkeypatch, tmp_path):
+    pytest.importorskip("matplotlib")
+    import math
+
+    from guided_lfd.study import report
+
+    _, paper, kitchens = study
+    drawn = _figures(monkeypatch, report)
+    assert [p.name for p in report.plot(paper, kitchens, tmp_path)] == ["study-time.png", "study-sizes.png"]
+    time_axes = drawn["study-time.png:axes"]
+    assert [t.get_text() for t in time_axes[0].get_legend().get_texts()] == [
+        "excuse demonstration (guided), paper", "complete demonstration, paper",
+        "rendered trace (reproduced), either demonstration"]
+    assert time_axes[0].get_ylabel() == "demonstration time (s)"
+    sizes = drawn["study-sizes.png:axes"]
+    assert sizes[0].get_ylabel() == "size (planning actions)"
+    assert [t.get_text() for t in sizes[1].get_legend().get_texts()] == [
+        "paper (Table II)", "reproduced (planned on the learned domains)"]
+    names = [t.get_text() for t in sizes[0].get_legend().get_texts()]
+    assert names[3] == "O(G): observed, complete demonstration"
+    for ax in sizes:  # the paper's O(G) line has a gap at P3, not a segment from P2 to P4
+        og = [line for line in ax.get_lines() if line.get_marker() == "d"]
+        assert len(og) == 1
+        ys = list(og[0].get_ydata())
+        assert math.isnan(ys[2]) and not any(math.isnan(y) for y in ys[:2] + ys[3:])
+        assert any(t.get_text() == "P3: no paper value" for t in ax.texts)
+
+
+def test_the_benchmark_plots_label_the_limit_the_time_and_whole_sizes(monkeypatch, tmp_path):
+    pytest.importorskip("matplotlib")
+    from guided_lfd.benchmark import read_results
+    from guided_lfd.benchmark import report
+
+    drawn = _figures(monkeypatch, report)
+    rows = read_results(ROOT / "benchmarks" / "results" / "results.csv")
+    first = [p.read_bytes() for p in report.plot(rows, tmp_path / "one", 60.0)]
+    cactus = drawn["cactus.png:axes"][0]
+    assert "time limit (60 s per run)" in [t.get_text() for t in cactus.get_legend().get_texts()]
+    assert "whole run" in cactus.get_ylabel() and "whole-run" in cactus.get_title()
+    for ax in drawn["time_vs_size.png:axes"]:
+        assert ax.get_xlabel().startswith("minimal excuse size")
+        assert all(float(x).is_integer() for x in ax.get_xticks())
+    assert [p.read_bytes() for p in report.plot(rows, tmp_path / "two", 60.0)] == first  # deterministic

@@ -6,20 +6,20 @@ import statistics
 from pathlib import Path
 from typing import Any, Callable
 
-from guided_lfd.benchmark.suite import _relative
 from guided_lfd.benchmark.results import SOLVED
 from guided_lfd.benchmark.analysis import NONTRIVIAL_S, SIZE_BUCKETS, compare, speedups_by_size, suite_part, whole_run_s
+from guided_lfd.reporting import markdown_table, plots_markdown, pyplot, save_figure
+
+#: Resolution of the benchmark's PNG plots.
+DPI = 120
 
 
 def plot(rows: list[dict[str, Any]], folder: Path, time_limit: float) -> list[Path]:
-    """Cactus plot and time-vs-size plot as PNG files."""
-    try:
-        import matplotlib
+    """Cactus plot and time-vs-size plot as PNG files (:class:`~guided_lfd.reporting.PlotsUnavailable` without
+    matplotlib: the caller skips them and passes ``plots=None`` to :func:`summary_markdown`)."""
+    plt = pyplot()
+    from matplotlib.ticker import MaxNLocator
 
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-    except ImportError:
-        raise ImportError("plots need the 'plots' extra: pip install 'guided-lfd[plots]'") from None
     folder.mkdir(parents=True, exist_ok=True)
     configs = sorted({(r["strategy"], r["semantics"]) for r in rows})
     fig, ax = plt.subplots(figsize=(6.4, 4.2))
@@ -29,14 +29,12 @@ def plot(rows: list[dict[str, Any]], folder: Path, time_limit: float) -> list[Pa
         ax.step(range(1, len(times) + 1), times, where="post", label=f"{st} ({se})")
     ax.set_yscale("log")
     ax.set_xlabel("tasks solved")
-    ax.set_ylabel("time per task (s, log)")
-    ax.axhline(time_limit, color="grey", lw=0.8, ls="--")
-    ax.set_title("Excuse search: cactus plot")
+    # whole_run_s: the time the summary's "whole run" columns use (not the search phase alone).
+    ax.set_ylabel("whole run per task (s, log scale)")
+    ax.axhline(time_limit, color="grey", lw=0.8, ls="--", label=f"time limit ({time_limit:g} s per run)")
+    ax.set_title("Cactus plot: whole-run time of the solved tasks")
     ax.legend(fontsize=8)
-    fig.tight_layout()
-    cactus = folder / "cactus.png"
-    fig.savefig(cactus, dpi=120, metadata={"Software": None})
-    plt.close(fig)
+    cactus = save_figure(fig, folder / "cactus.png", DPI)
     fig, axes = plt.subplots(1, 2, figsize=(9, 4.0), sharey=True)
     for ax, se in zip(axes, sorted({r["semantics"] for r in rows})):
         for st, marker in (("baseline", "x"), ("landmark", "o")):
@@ -46,15 +44,13 @@ def plot(rows: list[dict[str, Any]], folder: Path, time_limit: float) -> list[Pa
                 xs, ys = zip(*pts)
                 ax.scatter(xs, ys, marker=marker, alpha=0.6, label=st)
         ax.set_yscale("log")
-        ax.set_xlabel("minimal excuse size")
+        ax.set_xlabel("minimal excuse size (changes)")
+        ax.xaxis.set_major_locator(MaxNLocator(integer=True, steps=[1, 2, 5, 10]))
         ax.set_title(f"{se} semantics")
         ax.legend(fontsize=8)
-    axes[0].set_ylabel("time (s, log)")
-    fig.suptitle("Time vs excuse size (solved tasks)")
-    fig.tight_layout()
-    scatter = folder / "time_vs_size.png"
-    fig.savefig(scatter, dpi=120, metadata={"Software": None})
-    plt.close(fig)
+    axes[0].set_ylabel("whole run (s, log scale)")
+    fig.suptitle("Whole-run time vs minimal excuse size (tasks with an excuse found)")
+    scatter = save_figure(fig, folder / "time_vs_size.png", DPI)
     return [cactus, scatter]
 
 
@@ -64,8 +60,8 @@ def _parts_table(rows: list[dict[str, Any]]) -> list[str]:
     if parts == ["first"]:
         return []
     out = ["", "## Coverage by suite part", "",
-           "*first*: IPC task01-04 and the kitchens (the first suite); *grown*: IPC task05-10.", "",
-           "| part | semantics | tasks | solved: landmark | solved: baseline | baseline not run |", "|---|---|---|---|---|---|"]
+           "*first*: IPC task01-04 and the kitchens (the first suite); *grown*: IPC task05-10.", ""]
+    table = []
     for part in parts:
         for se in sorted({r["semantics"] for r in rows}):
             sub = [r for r in rows if suite_part(r) == part and r["semantics"] == se]
@@ -73,8 +69,10 @@ def _parts_table(rows: list[dict[str, Any]]) -> list[str]:
             lm = sum(r["status"] in SOLVED for r in sub if r["strategy"] == "landmark")
             bl = sum(r["status"] in SOLVED for r in sub if r["strategy"] == "baseline")
             skipped = sum(r["status"] == "not-run" for r in sub if r["strategy"] == "baseline")
-            out.append(f"| {part} | {se} | {n} | {lm} ({100 * lm / max(n, 1):.1f}%) | {bl} ({100 * bl / max(n, 1):.1f}%) "
-                       f"| {skipped} |")
+            table.append([part, se, n, f"{lm} ({100 * lm / max(n, 1):.1f}%)", f"{bl} ({100 * bl / max(n, 1):.1f}%)",
+                          skipped])
+    out.append(markdown_table(["part", "semantics", "tasks", "solved: landmark", "solved: baseline",
+                               "baseline not run"], table))
     return out
 
 
@@ -107,9 +105,9 @@ def _limit_section(rows: list[dict[str, Any]], time_limit: float) -> list[str]:
     return out
 
 
-def summary_markdown(rows: list[dict[str, Any]], time_limit: float, command: str, plots: list[Path],
+def summary_markdown(rows: list[dict[str, Any]], time_limit: float, command: str, plots: list[Path] | None,
                      base: Path) -> str:
-    """The markdown summary: coverage table, speed-ups, agreement, plots."""
+    """The markdown summary: coverage table, speed-ups, agreement, plots (None: skipped, the section says so)."""
     comps = compare(rows, time_limit=time_limit)
     domains = sorted({r["domain"] for r in rows})
     lines = [
@@ -134,53 +132,43 @@ def summary_markdown(rows: list[dict[str, Any]], time_limit: float, command: str
         "the already-grounded task (no re-parsing or re-grounding per candidate). Search phases shorter than "
         "0.1 ms count as 0.1 ms.",
         "",
-        "| semantics | tasks | solved: landmark | solved: baseline | both | median speed-up (search) "
-        "| geo-mean speed-up (search) | median speed-up (whole run) | non-trivial tasks "
-        "| median speed-up (whole run, non-trivial) "
-        "| size >= 3 solved: landmark | size >= 3 solved: baseline | size disagreements |",
-        "|---|---|---|---|---|---|---|---|---|---|---|---|---|",
+        markdown_table(
+            ["semantics", "tasks", "solved: landmark", "solved: baseline", "both", "median speed-up (search)",
+             "geo-mean speed-up (search)", "median speed-up (whole run)", "non-trivial tasks",
+             "median speed-up (whole run, non-trivial)", "size >= 3 solved: landmark", "size >= 3 solved: baseline",
+             "size disagreements"],
+            [[c.semantics, c.tasks, f"{c.solved_default} ({100 * c.solved_default / c.tasks:.0f}%)",
+              f"{c.solved_baseline} ({100 * c.solved_baseline / c.tasks:.0f}%)", c.both, f"{c.median_speedup:.0f}x",
+              f"{c.geomean_speedup:.0f}x", f"{c.median_total_speedup:.1f}x", c.nontrivial,
+              f"{c.median_nontrivial_speedup:.1f}x", c.large_default, c.large_baseline, len(c.size_mismatches)]
+             for c in comps]),
     ]
-    for c in comps:
-        lines.append(
-            f"| {c.semantics} | {c.tasks} | {c.solved_default} ({100 * c.solved_default / c.tasks:.0f}%) "
-            f"| {c.solved_baseline} ({100 * c.solved_baseline / c.tasks:.0f}%) | {c.both} | {c.median_speedup:.0f}x "
-            f"| {c.geomean_speedup:.0f}x | {c.median_total_speedup:.1f}x | {c.nontrivial} "
-            f"| {c.median_nontrivial_speedup:.1f}x "
-            f"| {c.large_default} | {c.large_baseline} | {len(c.size_mismatches)} |"
-        )
     lines += _parts_table(rows) + _limit_section(rows, time_limit)
-    lines += ["", "## Coverage per domain", "",
-              "| domain | tasks | " + " | ".join(f"{st} {se}" for se in ("literal", "consistent")
-                                                 for st in ("landmark", "baseline")) + " |",
-              "|---|---|" + "---|" * 4]
+    columns = [(se, st) for se in ("literal", "consistent") for st in ("landmark", "baseline")]
+    coverage = []
     for dom in domains:
         ids = {r["id"] for r in rows if r["domain"] == dom}
-        cells = []
-        for se in ("literal", "consistent"):
-            for st in ("landmark", "baseline"):
-                n = sum(1 for r in rows if r["domain"] == dom and r["semantics"] == se and r["strategy"] == st
-                        and r["status"] in SOLVED)
-                cells.append(str(n))
-        lines.append(f"| {dom} | {len(ids)} | " + " | ".join(cells) + " |")
+        coverage.append([dom, len(ids)] + [
+            sum(1 for r in rows if r["domain"] == dom and r["semantics"] == se and r["strategy"] == st
+                and r["status"] in SOLVED) for se, st in columns])
+    lines += ["", "## Coverage per domain", "",
+              markdown_table(["domain", "tasks"] + [f"{st} {se}" for se, st in columns], coverage)]
     by_size = speedups_by_size(rows)
     lines += ["", "## Median search speed-up by minimal excuse size", "",
               "On the tasks both strategies solve; each cell is the median and, in brackets, the number of tasks.",
-              "", "| semantics | " + " | ".join(f"size {b}" if b != "none" else "no excuse" for b in SIZE_BUCKETS)
-              + " |", "|---|" + "---|" * len(SIZE_BUCKETS)]
-    for se in sorted(by_size):
-        cells = [f"{statistics.median(v):.0f}x ({len(v)})" if (v := by_size[se].get(b)) else "-"
-                 for b in SIZE_BUCKETS]
-        lines.append(f"| {se} | " + " | ".join(cells) + " |")
+              "", markdown_table(
+                  ["semantics"] + [f"size {b}" if b != "none" else "no excuse" for b in SIZE_BUCKETS],
+                  [[se] + [f"{statistics.median(v):.0f}x ({len(v)})" if (v := by_size[se].get(b)) else "-"
+                           for b in SIZE_BUCKETS] for se in sorted(by_size)])]
     sizes: dict[str, int] = {}
     for r in rows:
         if r["strategy"] == "landmark" and r["status"] == "excuse-found":
             key = str(min(int(r["size"]), 6)) if int(r["size"]) < 6 else "6+"
             sizes[f"{r['semantics']} {key}"] = sizes.get(f"{r['semantics']} {key}", 0) + 1
-    lines += ["", "## Minimal excuse sizes found (landmark)", "", "| semantics | " +
-              " | ".join(["1", "2", "3", "4", "5", "6+"]) + " |", "|---|" + "---|" * 6]
-    for se in ("literal", "consistent"):
-        lines.append(f"| {se} | " + " | ".join(str(sizes.get(f"{se} {k}", 0))
-                                              for k in ["1", "2", "3", "4", "5", "6+"]) + " |")
+    keys = ["1", "2", "3", "4", "5", "6+"]
+    lines += ["", "## Minimal excuse sizes found (landmark)", "",
+              markdown_table(["semantics"] + keys,
+                             [[se] + [sizes.get(f"{se} {k}", 0) for k in keys] for se in ("literal", "consistent")])]
     mism = [m for c in comps if c.semantics != "both" for m in c.size_mismatches]
     lines += ["", "## Size agreement", "",
               "Every task both strategies solved has the same status and minimal size."
@@ -199,5 +187,5 @@ def summary_markdown(rows: list[dict[str, Any]], time_limit: float, command: str
     if memouts:
         lines += ["", f"Runs that exceeded the memory cap (memout, counted as unsolved): {len(memouts)}.", ""]
         lines += [f"- {r['id']} {r['strategy']} {r['semantics']}" for r in memouts]
-    lines += ["", "## Plots", ""] + [f"![{p.stem}]({_relative(str(p), base)})" for p in plots]
+    lines += [""] + plots_markdown(plots, base)
     return "\n".join(lines) + "\n"

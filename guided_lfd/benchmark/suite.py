@@ -8,7 +8,7 @@ from dataclasses import asdict, dataclass, replace
 from pathlib import Path
 from typing import Callable, Iterable
 
-
+from guided_lfd.reporting import relative_path
 
 SUITE_FIELDS = ["id", "domain", "task", "removed_action", "domain_file", "problem_file", "fixed_from"]
 
@@ -78,13 +78,6 @@ def generate_suite(ipc_root: Path, kitchen_root: Path | None, tasks: Iterable[st
     return out
 
 
-def _relative(path: str, root: Path) -> str:
-    try:
-        return str(Path(path).resolve().relative_to(root.resolve()))
-    except ValueError:
-        return path
-
-
 def write_suite(suite: list[BenchTask], path: Path, root: Path) -> None:
     """Write the suite as CSV with paths relative to ``root``."""
     from guided_lfd.io import write_text
@@ -96,7 +89,7 @@ def write_suite(suite: list[BenchTask], path: Path, root: Path) -> None:
     for t in suite:
         row = asdict(t)
         for key in ("domain_file", "problem_file", "fixed_from"):
-            row[key] = _relative(row[key], root) if row[key] else ""
+            row[key] = relative_path(row[key], root) if row[key] else ""
         writer.writerow(row)
     write_text(path, buf.getvalue())
 

@@ -34,7 +34,10 @@ __all__ = [
 
 def reproduce(root: Path, out: Path,
               progress: Callable[[str], None] | None = None) -> tuple[PaperData, list[KitchenResult]]:
-    """Run the study and write ``out/study.md``, CSVs, plots and per-demonstration artefacts."""
+    """Run the study and write ``out/study.md``, CSVs, plots and per-demonstration artefacts.
+
+    Without matplotlib the plots are skipped and ``study.md`` says so (:func:`write_report`).
+    """
     paper, kitchens = run_study(root, progress)
     write_artefacts(out, kitchens)
     write_report(out, paper, kitchens)

@@ -2,26 +2,17 @@
 
 from __future__ import annotations
 
-import csv
-import io
-
 import statistics
 from pathlib import Path
 from typing import Any
 
 from guided_lfd.io import json_document, write_text
-
-
+from guided_lfd.reporting import PlotsUnavailable, csv_text, markdown_table, plots_markdown, pyplot, round_fraction, save_figure
 from guided_lfd.study.paper import DEMONSTRATORS, KITCHEN_NAMES, PaperData, headline, size_reduction, time_ratios
-from guided_lfd.study.run import KitchenResult, _round
+from guided_lfd.study.run import KitchenResult
 
-
-def _csv_text(header: list[str], rows: list[list[Any]]) -> str:
-    buf = io.StringIO()
-    writer = csv.writer(buf, lineterminator="\n")
-    writer.writerow(header)
-    writer.writerows(["" if v is None else v for v in row] for row in rows)
-    return buf.getvalue()
+#: Resolution of the study's PNG plots.
+DPI = 110
 
 
 def time_table(paper: PaperData, kitchens: list[KitchenResult]) -> tuple[list[str], list[list[Any]]]:
@@ -65,7 +56,7 @@ def measures_table(kitchens: list[KitchenResult]) -> tuple[list[str], list[list[
     rows = []
     for k in kitchens:
         for d in k.demonstrators:
-            fr = {kind: (_round(x.useful_actions / x.demonstrated_actions) if x.demonstrated_actions else None)
+            fr = {kind: (round_fraction(x.useful_actions / x.demonstrated_actions) if x.demonstrated_actions else None)
                   for kind, x in d.demos.items()}
             rows.append([k.kitchen, d.demonstrator, " ".join(k.excuse), d.f1, fr["excuse"], fr["complete"],
                          "yes" if d.solvable_after_excuse_demo else "no", d.excuse_on_merged,
@@ -81,78 +72,88 @@ def reproduced_headline(kitchens: list[KitchenResult]) -> dict[str, float]:
     observed = {(k.kitchen, d.demonstrator): (d.demos["excuse"].demonstrated_actions,
                                               d.demos["complete"].demonstrated_actions)
                 for k in kitchens for d in k.demonstrators}
-    return {"mean_time_ratio": round(ratio, 4), "less_time": round(1 - ratio, 4),
-            **{f"size_reduction_{k.kitchen}": round(size_reduction(observed, k.kitchen), 4) for k in kitchens}}
+    return {"mean_time_ratio": round_fraction(ratio), "less_time": round_fraction(1 - ratio),
+            **{f"size_reduction_{k.kitchen}": round_fraction(size_reduction(observed, k.kitchen)) for k in kitchens}}
 
 
 def plot(paper: PaperData, kitchens: list[KitchenResult], out: Path) -> list[Path]:
-    """Demonstration times and predicted vs observed sizes, as PNG (empty list without matplotlib)."""
-    try:
-        import matplotlib
+    """Demonstration times and predicted vs observed sizes, as PNG (:class:`PlotsUnavailable` without matplotlib)."""
+    plt = pyplot()
+    return [_plot_times(plt, paper, kitchens, out / "study-time.png"),
+            _plot_sizes(plt, paper, kitchens, out / "study-sizes.png")]
 
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-    except ImportError:
-        return []
-    paths = []
+
+def _plot_times(plt: Any, paper: PaperData, kitchens: list[KitchenResult], path: Path) -> Path:
+    """Table I: the paper's times as bars, the rendered traces' durations as a black mark on each bar."""
     fig, axes = plt.subplots(1, 2, figsize=(10, 4), sharey=True)
     width = 0.2
+    kinds = (("excuse", "tab:green", "excuse demonstration (guided), paper"),
+             ("complete", "tab:grey", "complete demonstration, paper"))
     for ax, k in zip(axes, kitchens):
         xs = range(len(DEMONSTRATORS))
-        for j, (kind, colour) in enumerate((("excuse", "tab:green"), ("complete", "tab:grey"))):
-            paper_t = [paper.times[(k.kitchen, p, kind)] for p in DEMONSTRATORS]
-            ours = [d.demos[kind].duration_s for d in k.demonstrators]
-            ax.bar([x + (j - 0.5) * 2 * width for x in xs], paper_t, width, color=colour, label=f"{kind} (paper)")
-            ax.plot([x + (j - 0.5) * 2 * width for x in xs], ours, "k_", markersize=14,
-                    label=f"{kind} (rendered trace)" if j == 0 else None)
+        for j, (kind, colour, label) in enumerate(kinds):
+            at = [x + (j - 0.5) * 2 * width for x in xs]
+            ax.bar(at, [paper.times[(k.kitchen, p, kind)] for p in DEMONSTRATORS], width, color=colour, label=label)
+            ax.plot(at, [d.demos[kind].duration_s for d in k.demonstrators], "k_", markersize=14, markeredgewidth=2,
+                    label="rendered trace (reproduced), either demonstration" if j == 0 else None)
         ax.set_xticks(list(xs), DEMONSTRATORS)
-        ax.set_title(f"{KITCHEN_NAMES[k.kitchen]}: demonstration time")
-        ax.set_ylabel("seconds")
-    axes[0].legend(fontsize=8)
-    paths.append(_save(plt, fig, out / "study-time.png"))
+        ax.set_xlabel("demonstrator")
+        ax.set_title(f"{KITCHEN_NAMES[k.kitchen]}: demonstration time (Table I)")
+    axes[0].set_ylabel("demonstration time (s)")
+    axes[0].set_ylim(0, 1.3 * max(paper.times.values()))  # room for the legend above the bars
+    handles, labels = axes[0].get_legend_handles_labels()
+    order = [labels.index(name) for name in [label for _, _, label in kinds]
+             + ["rendered trace (reproduced), either demonstration"]]
+    axes[0].legend([handles[i] for i in order], [labels[i] for i in order], fontsize=8, loc="upper left")
+    return save_figure(fig, path, DPI)
 
-    fig, axes = plt.subplots(1, 2, figsize=(10, 4), sharey=True)
+
+def _plot_sizes(plt: Any, paper: PaperData, kitchens: list[KitchenResult], path: Path) -> Path:
+    """Table II: predicted (P) and observed (O) sizes; dashed the paper's, solid reproduced.
+
+    A missing value (the paper has no O for P3's complete demonstrations) is a gap in its line, not a line
+    drawn past it.
+    """
+    from matplotlib.lines import Line2D
+    from matplotlib.ticker import MaxNLocator
+
+    fig, axes = plt.subplots(1, 2, figsize=(10, 4.6), sharey=True)
+    quantities = [  # (key in the paper's table, reproduced values or None, name, marker, colour)
+        ("predicted_minimal_excuse", lambda d: d.predicted["minimal_excuse"],
+         "P(E): predicted, to the minimal excuse", "o", "tab:green"),
+        ("observed_minimal_excuse", None, "O(E): observed, excuse demonstration", "s", "tab:blue"),
+        ("predicted_goal", lambda d: d.predicted["goal"], "P(G): predicted, to the goal", "^", "tab:red"),
+        ("observed_goal", None, "O(G): observed, complete demonstration", "d", "tab:purple"),
+    ]
+    nan = float("nan")
+    xs = list(range(len(DEMONSTRATORS)))
     for ax, k in zip(axes, kitchens):
-        xs = list(range(len(DEMONSTRATORS)))
-        series = [
-            ("P E_min paper", [paper.sizes[(k.kitchen, p)]["predicted_minimal_excuse"] for p in DEMONSTRATORS], "o--", "tab:green"),
-            ("P E_min reproduced", [d.predicted["minimal_excuse"] for d in k.demonstrators], "o-", "tab:green"),
-            ("O E_min paper", [paper.sizes[(k.kitchen, p)]["observed_minimal_excuse"] for p in DEMONSTRATORS], "s--", "tab:blue"),
-            ("P G paper", [paper.sizes[(k.kitchen, p)]["predicted_goal"] for p in DEMONSTRATORS], "^--", "tab:red"),
-            ("P G reproduced", [d.predicted["goal"] for d in k.demonstrators], "^-", "tab:red"),
-            ("O G paper", [paper.sizes[(k.kitchen, p)]["observed_goal"] for p in DEMONSTRATORS], "d--", "tab:purple"),
-        ]
-        for label, ys, style, colour in series:
-            pts = [(x, y) for x, y in zip(xs, ys) if y is not None]
-            ax.plot([x for x, _ in pts], [y for _, y in pts], style, color=colour, label=label)
+        for key, ours, _, marker, colour in quantities:
+            theirs = [paper.sizes[(k.kitchen, p)][key] for p in DEMONSTRATORS]
+            ax.plot(xs, [nan if y is None else y for y in theirs], marker=marker, ls="--", color=colour)
+            if ours is not None:
+                ax.plot(xs, [nan if (y := ours(d)) is None else y for d in k.demonstrators], marker=marker, ls="-",
+                        color=colour)
+            for x, y in enumerate(theirs):
+                if y is None:  # say so in the gap, halfway between the neighbours
+                    near = [v for v in theirs[max(x - 1, 0):x + 2] if v is not None]
+                    ax.annotate(f"{DEMONSTRATORS[x]}: no paper value", (x, statistics.fmean(near) if near else 0),
+                                ha="center", va="center", fontsize=7, color=colour)
         ax.set_xticks(xs, DEMONSTRATORS)
-        ax.set_title(f"{KITCHEN_NAMES[k.kitchen]}: demonstration size (actions)")
-    axes[0].legend(fontsize=7)
-    paths.append(_save(plt, fig, out / "study-sizes.png"))
-    return paths
+        ax.set_xlabel("demonstrator")
+        ax.yaxis.set_major_locator(MaxNLocator(integer=True, steps=[1, 2, 5, 10]))
+        ax.set_title(f"{KITCHEN_NAMES[k.kitchen]}: demonstration size (Table II)")
+    axes[0].set_ylabel("size (planning actions)")
+    axes[0].legend([Line2D([], [], marker=m, ls="", color=c) for _, _, _, m, c in quantities],
+                   [name for _, _, name, _, _ in quantities], fontsize=7, loc="upper right")
+    axes[1].legend([Line2D([], [], ls="--", color="black"), Line2D([], [], ls="-", color="black")],
+                   ["paper (Table II)", "reproduced (planned on the learned domains)"], fontsize=7,
+                   loc="upper right")
+    return save_figure(fig, path, DPI)
 
 
-def _save(plt: Any, fig: Any, path: Path) -> Path:
-    """Write ``fig`` as PNG without version metadata (so reruns are byte-identical)."""
-    fig.tight_layout()
-    fig.savefig(path, dpi=110, metadata={"Software": None})
-    plt.close(fig)
-    return path
-
-
-def _md_table(header: list[str], rows: list[list[Any]]) -> str:
-    def cell(v: Any) -> str:
-        if v is None or v == "":
-            return "-"
-        return f"{v:.3f}" if isinstance(v, float) else str(v)
-
-    lines = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
-    lines += ["| " + " | ".join(cell(v) for v in row) + " |" for row in rows]
-    return "\n".join(lines)
-
-
-def study_markdown(paper: PaperData, kitchens: list[KitchenResult], plots: list[Path]) -> str:
-    """``results/study.md``."""
+def study_markdown(paper: PaperData, kitchens: list[KitchenResult], plots: list[Path] | None) -> str:
+    """``results/study.md`` (``plots`` None: matplotlib is missing, the plots section says so)."""
     ph, rh = headline(paper), reproduced_headline(kitchens)
     out = ["# The user study, reproduced", "",
            "Generated by `make reproduce-study` (`python -m guided_lfd.study`) from `data/study` (the paper's "
@@ -195,14 +196,14 @@ def study_markdown(paper: PaperData, kitchens: list[KitchenResult], plots: list[
             out.append(f"  * `{' '.join(cause['cause'])}`: {cause['states']} state(s), e.g. "
                        f"`{' '.join(cause['example_difference'])}`")
         out.append("")
-    out += ["### Per demonstrator", "", _md_table(*measures_table(kitchens)), "",
+    out += ["### Per demonstrator", "", markdown_table(*measures_table(kitchens)), "",
             f"Plan solvability after demonstration (prior + the excuse demonstration's learned actions solve the "
             f"original task): **{'holds for every demonstrator and both kitchens' if solvable else 'FAILS for some'}**.",
             ""]
-    out += ["## Table I: demonstration time (s)", "", _md_table(*time_table(paper, kitchens)), "",
+    out += ["## Table I: demonstration time (s)", "", markdown_table(*time_table(paper, kitchens)), "",
             "The rendered traces are timed to the paper's measurements, so the reproduced times match by "
             "construction (up to one frame at 90 Hz); what they check is that the trace files carry them.", ""]
-    out += ["## Table II: demonstration size (planning actions)", "", _md_table(*size_table(paper, kitchens)), "",
+    out += ["## Table II: demonstration size (planning actions)", "", markdown_table(*size_table(paper, kitchens)), "",
             "**O** (observed) is the number of actions the chain learns from each demonstration. The rendered "
             "demonstrations are padded with redundant skills to the paper's O counts, so a match shows that "
             "segmentation and learning recover every demonstrated action. P3's complete demonstrations use both "
@@ -221,8 +222,8 @@ def study_markdown(paper: PaperData, kitchens: list[KitchenResult], plots: list[
             "or lengthen an optimal plan.", "",
             "The per-demonstrator F1 above is planned on the prior merged with that demonstrator's learned "
             "domains; the paper's F1 on the human domain is the kitchen's figure in the section above.", ""]
-    if plots:
-        out += ["## Plots", ""] + [f"![{p.stem}]({p.name})" for p in plots] + [""]
+    if plots is None or plots:
+        out += plots_markdown(plots) + [""]
     return "\n".join(out)
 
 
@@ -242,14 +243,20 @@ def side_by_side(paper: PaperData, kitchens: list[KitchenResult]) -> str:
     return "\n".join(lines) + "\n"
 
 
-def write_report(out: Path, paper: PaperData, kitchens: list[KitchenResult]) -> None:
-    """Write ``out/study.md``, the three CSV tables, the plots and ``study.json``."""
+def write_report(out: Path, paper: PaperData, kitchens: list[KitchenResult]) -> list[Path] | None:
+    """Write ``out/study.md``, the three CSV tables, the plots and ``study.json``; return the plots.
+
+    Without matplotlib the plots are skipped (None is returned) and ``study.md`` says so.
+    """
     out.mkdir(parents=True, exist_ok=True)
     for name, (header, rows) in (("study-time.csv", time_table(paper, kitchens)),
                                  ("study-size.csv", size_table(paper, kitchens)),
                                  ("study-measures.csv", measures_table(kitchens))):
-        write_text(out / name, _csv_text(header, rows))
-    plots = plot(paper, kitchens, out)
+        write_text(out / name, csv_text(header, rows))
+    try:
+        plots: list[Path] | None = plot(paper, kitchens, out)
+    except PlotsUnavailable:
+        plots = None
     write_text(out / "study.md", study_markdown(paper, kitchens, plots))
     summary = {"paper": headline(paper), "reproduced": reproduced_headline(kitchens),
                "kitchens": [{"kitchen": k.kitchen, "excuse": k.excuse, "f1": k.human_f1,
@@ -264,3 +271,4 @@ def write_report(out: Path, paper: PaperData, kitchens: list[KitchenResult]) -> 
                                                for d in k.demonstrators]}
                             for k in kitchens]}
     write_text(out / "study.json", json_document("study", summary))
+    return plots

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any, Callable
 
@@ -17,6 +17,7 @@ from guided_lfd.excuse.engine import describe_change, find_excuses
 from guided_lfd.merge import merge_domains
 from guided_lfd.pddl.model import Domain
 from guided_lfd.pddl.reader import parse_domain, parse_task
+from guided_lfd.reporting import relative_path, round_fraction
 
 from guided_lfd.study.paper import DEMONSTRATORS, KITCHEN_NAMES, KITCHENS, PaperData, load_paper_data
 
@@ -73,21 +74,14 @@ class KitchenResult:
     demonstrators: list[DemonstratorResult] = field(default_factory=list)
 
 
-def _relative(path: Path, root: Path) -> str:
-    try:
-        return str(path.resolve().relative_to(root.resolve()))
-    except ValueError:
-        return str(path)
-
-
 def run_demo(root: Path, kitchen: str, demonstrator: str, kind: str, robot: Domain) -> DemoResult:
     """Segment and learn one demonstration (its segments document and learned domain are in the result)."""
     trace = root / "data" / "demos" / kitchen / f"{demonstrator}-{kind}.csv"
     state = trace.with_name(trace.stem + ".state.csv")
     demo = load_demonstration(str(trace), str(state))
     segments = [s for s in segment(demo) if s.activity != "Idle"]
-    doc = segments_document(demo, segments, _relative(state, root))
-    doc["trace"] = _relative(trace, root)
+    doc = segments_document(demo, segments, relative_path(state, root))
+    doc["trace"] = relative_path(trace, root)
     source = f"{kitchen}/{demonstrator}-{kind}"
     steps = ground_actions(doc, source)
     learned = learn_domain([(source, doc)], name=f"learned-{kitchen}-{demonstrator}-{kind}".lower())
@@ -102,6 +96,8 @@ def run_kitchen(root: Path, kitchen: str, bound: int = STUDY_EXPLORATION_BOUND,
     """The chain for one kitchen and all demonstrators (writes nothing)."""
     folder = root / "data" / "domains" / kitchen
     robot, problem = parse_task(str(folder / "robot.pddl"), str(folder / "problem.pddl"))
+    # The merged domains name the robot's file: relative to the root, whichever way the root is spelled.
+    robot = replace(robot, path=relative_path(robot.path, root))
     human = parse_domain(str(folder / "human.pddl"))
     report = find_excuses(robot, problem)
     if report.excuse is None:
@@ -112,7 +108,7 @@ def run_kitchen(root: Path, kitchen: str, bound: int = STUDY_EXPLORATION_BOUND,
     misdirection = misdirected_guidance(human, robot, problem, excuse, bound, reach)
     result = KitchenResult(
         kitchen, [str(c) for c in excuse], [describe_change(c, problem.spellings) for c in excuse],
-        _predicted(reference), _round(reference.f1), reference.nonminimal_changes,
+        _predicted(reference), round_fraction(reference.f1), reference.nonminimal_changes,
         misdirection.as_dict(),
     )
     for p in DEMONSTRATORS:
@@ -127,17 +123,13 @@ def run_kitchen(root: Path, kitchen: str, bound: int = STUDY_EXPLORATION_BOUND,
         knowledge = merge_domains([robot, demos["excuse"].learned, demos["complete"].learned], name=robot.name).domain
         sizes = predicted_sizes(knowledge, problem, excuse, reach)
         result.demonstrators.append(DemonstratorResult(
-            kitchen, p, demos, _predicted(sizes), _round(sizes.f1), solv.solvable, solv.plan, on_merged, merged))
+            kitchen, p, demos, _predicted(sizes), round_fraction(sizes.f1), solv.solvable, solv.plan, on_merged, merged))
     return result
 
 
 def _predicted(sizes: PredictedSizes) -> dict[str, int | None]:
     return {"minimal_excuse": sizes.minimal_excuse, "nonminimal_excuse": sizes.nonminimal_excuse,
             "goal": sizes.goal, "remaining_after_excuse": sizes.remaining_after_excuse}
-
-
-def _round(value: float | None, digits: int = 3) -> float | None:
-    return None if value is None else round(value, digits)
 
 
 def run_study(root: Path, progress: Callable[[str], None] | None = None) -> tuple[PaperData, list[KitchenResult]]:
