@@ -1,6 +1,6 @@
 """How well demonstrations are segmented and learned: the #4 quality report.
 
-``python -m guided_lfd.demonstration.quality`` prints, for the shipped
+``guided-lfd quality`` prints, for the shipped
 demonstrations, the frame-level activity F1 against the rendered ground truth,
 whether the segment count matches exactly, and the precision and recall of
 the learned actions' preconditions and effects against the human domain (the
