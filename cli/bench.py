@@ -8,38 +8,51 @@ from typing import Annotated
 
 import typer
 
-from cli.common import QuietOption, command, ui
+from cli.common import QuietOption, command, help_footer, ui
+from guided_lfd import errors
 from guided_lfd.errors import OptionError
 
 STEPS = ("generate", "run", "report", "all")
 
 
+@help_footer(
+    example="guided-lfd bench all --jobs 2",
+    exit_codes=(errors.EXIT_INPUT_FILE, errors.EXIT_PDDL_SYNTAX, errors.EXIT_PDDL_SEMANTIC, errors.EXIT_UNSUPPORTED,
+                errors.EXIT_OUTPUT),
+    success="step done (each run's own outcome is a row of the results)",
+)
 @command
 def bench(
     step: Annotated[str, typer.Argument(metavar="STEP", help="generate | run | report | all (run, then report).")],
     root: Annotated[Path, typer.Option("--root", metavar="DIR", help="Repository root (data/, benchmarks/).")]
     = Path("."),
     ipc: Annotated[Path | None, typer.Option("--ipc", metavar="DIR", help="IPC collection (default ROOT/data/benchmarks/ipc).")] = None,
-    tasks: Annotated[str, typer.Option("--tasks", help="Comma-separated IPC task names per domain.")]
+    tasks: Annotated[str, typer.Option("--tasks", metavar="NAMES", help="Comma-separated IPC task names per domain.")]
     = ",".join(f"task{i:02d}" for i in range(1, 11)),
     suite: Annotated[Path | None, typer.Option("--suite", metavar="CSV", help="Suite file (default ROOT/benchmarks/suite.csv).")] = None,
     results: Annotated[Path | None, typer.Option("--results", metavar="DIR", help="Results folder (default ROOT/benchmarks/results).")] = None,
     time_limit: Annotated[float, typer.Option("--time-limit", metavar="SECONDS", help="Per run.")] = 60.0,
-    jobs: Annotated[int, typer.Option("--jobs", help="Runs at a time.")] = 2,
+    jobs: Annotated[int, typer.Option("--jobs", metavar="N", help="Runs at a time.")] = 2,
     memory_limit: Annotated[int, typer.Option("--memory-limit", metavar="MIB",
                                               help="Address-space cap per run (0 = none); a run past it is 'memout'.")] = 8192,
-    strategies: Annotated[str, typer.Option("--strategies", help="Comma-separated strategies.")] = "landmark,baseline",
-    semantics: Annotated[str, typer.Option("--semantics", help="Comma-separated semantics.")] = "literal,consistent",
-    only: Annotated[str, typer.Option("--only", help="Comma-separated substrings of task ids to run "
+    strategies: Annotated[str, typer.Option("--strategies", metavar="NAMES", help="Comma-separated strategies.")] = "landmark,baseline",
+    semantics: Annotated[str, typer.Option("--semantics", metavar="NAMES", help="Comma-separated semantics.")] = "literal,consistent",
+    only: Annotated[str, typer.Option("--only", metavar="IDS", help="Comma-separated substrings of task ids to run "
                                                       "(their rows replace theirs in the results; the rest stay).")] = "",
     stop_after_unfinished: Annotated[str, typer.Option(
-        "--stop-after-unfinished", help="Strategies that skip a family's later tasks after its first unfinished one, "
+        "--stop-after-unfinished", metavar="NAMES", help="Strategies that skip a family's later tasks after its first unfinished one, "
                                         "counted unsolved at the limit ('' = none).")] = "baseline",
-    executor: Annotated[str, typer.Option("--executor", help="local | dask.")] = "local",
-    scheduler: Annotated[str | None, typer.Option("--scheduler", help="Dask scheduler address (default: a local cluster).")] = None,
+    executor: Annotated[str, typer.Option("--executor", metavar="[local|dask]", help="Where runs execute.")] = "local",
+    scheduler: Annotated[str | None, typer.Option("--scheduler", metavar="ADDRESS", help="Dask scheduler address (default: a local cluster).")] = None,
     quiet: QuietOption = False,
 ) -> None:
-    """Run the excuse benchmark: every strategy and semantics on every task, as whole command-line runs."""
+    """Run the excuse benchmark (generate, run, report).
+
+    Every strategy and semantics on every task of the suite, each run a whole
+    'guided-lfd excuse' process timed from outside; an interrupted run resumes.
+    The report writes summary.md and plots into the results folder and prints
+    the summary (see benchmarks/README.md).
+    """
     from guided_lfd import benchmark
 
     if step not in STEPS:

@@ -13,7 +13,10 @@ from typing import TYPE_CHECKING, Annotated, Callable, TypeVar
 import typer
 
 from cli.startup import resume_gc
-from guided_lfd.errors import EXIT_INTERNAL, EXIT_INTERRUPTED, EXIT_MEMORY, GuidedLfdError, OptionError
+from guided_lfd.errors import (
+    EXIT_BAD_OPTION, EXIT_CODES, EXIT_INTERNAL, EXIT_INTERRUPTED, EXIT_MEMORY, EXIT_OK, EXIT_USAGE, GuidedLfdError,
+    OptionError,
+)
 from guided_lfd.io import check_writable, write_text
 
 if TYPE_CHECKING:
@@ -140,15 +143,46 @@ ui = Ui()
 
 QuietOption = Annotated[bool, typer.Option("--quiet", "-q", help="No diagnostics on stderr (data and errors still appear).")]
 JsonOption = Annotated[bool, typer.Option("--json", help="Write a versioned JSON document instead of text.")]
-OutputOption = Annotated[str, typer.Option("--output", "-o", help="Write the result here ('-' = stdout). Written atomically.")]
+OutputOption = Annotated[str, typer.Option("--output", "-o", metavar="FILE",
+                                           help="Write the result to FILE ('-' = stdout), atomically.")]
 TimeLimitOption = Annotated[
-    float | None, typer.Option("--time-limit", help="Give up after this many seconds (exit 20).")
+    float | None, typer.Option("--time-limit", metavar="SECONDS",
+                               help="Give up after SECONDS, start-up and reading included (exit 20).")
 ]
 
 MemoryLimitOption = Annotated[
     int | None, typer.Option("--memory-limit", metavar="MIB",
                              help="Address-space cap in MiB; a run that needs more ends with exit 22.")
 ]
+
+
+#: Exit codes every subcommand can give: the last lines of each one's help list them too.
+COMMON_EXIT_CODES = (EXIT_INTERNAL, EXIT_USAGE, EXIT_BAD_OPTION, EXIT_INTERRUPTED)
+
+
+def help_footer(example: str, exit_codes: tuple[int, ...], success: str) -> Callable[[F], F]:
+    """Decorator: the command's help ends with EXAMPLE and the exit codes it can give.
+
+    ``exit_codes`` are the command's own (:data:`COMMON_EXIT_CODES` are added),
+    each listed with its meaning from :data:`guided_lfd.errors.EXIT_CODES`;
+    ``success`` says what exit 0 means for this command.  The text becomes the
+    command's epilog (``cli.main.load_subcommand`` passes it to typer).
+    """
+    codes = sorted({EXIT_OK, *exit_codes, *COMMON_EXIT_CODES})
+    unknown = [code for code in codes if code not in EXIT_CODES]
+    if unknown:
+        raise ValueError(f"undocumented exit code(s) {unknown}: add them to guided_lfd.errors.EXIT_CODES")
+    # "\b" (click's no-rewrap mark) keeps each block's lines as written.
+    lines = ["\b", "Example:", *(f"  {line}" for line in example.strip().splitlines()), "",
+             "\b", "Exit codes:"]
+    lines += [f"  {code:<4} {success if code == EXIT_OK else EXIT_CODES[code]}" for code in codes]
+    epilog = "\n".join(lines)
+
+    def attach(fn: F) -> F:
+        fn.help_epilog = epilog  # type: ignore[attr-defined]
+        return fn
+
+    return attach
 
 
 def apply_memory_limit(megabytes: int | None) -> None:

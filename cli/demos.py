@@ -7,9 +7,16 @@ from typing import Annotated
 
 import typer
 
-from cli.common import QuietOption, command, ui
+from cli.common import QuietOption, command, help_footer, ui
+from guided_lfd import errors
 
 
+@help_footer(
+    example="guided-lfd demos data/demos",
+    exit_codes=(errors.EXIT_INPUT_FILE, errors.EXIT_PDDL_SYNTAX, errors.EXIT_PDDL_SEMANTIC, errors.EXIT_UNSUPPORTED,
+                errors.EXIT_OUTPUT),
+    success="demonstrations rendered",
+)
 @command
 def demos(
     out: Annotated[Path, typer.Argument(metavar="OUT", help="Where the traces go.")] = Path("data/demos"),
@@ -17,7 +24,12 @@ def demos(
                                           help="The kitchens' domains and problems.")] = Path("data/domains"),
     quiet: QuietOption = False,
 ) -> None:
-    """Render the study's demonstrations (Kitchen I/II x P1-P5, excuse and complete) as hand traces."""
+    """Render the study's demonstrations as hand traces.
+
+    Kitchen I and II x participants P1-P5, each an excuse and a complete
+    demonstration: TRACE.csv and TRACE.state.csv per demonstration, byte for
+    byte the shipped data/demos.
+    """
     from guided_lfd.demonstration.study_data import render_study
 
     rendered = render_study(domains, out)

@@ -6,7 +6,8 @@ from typing import Annotated
 
 import typer
 
-from cli.common import JsonOption, OutputOption, QuietOption, check_files, output_format, command, ui
+from cli.common import JsonOption, OutputOption, QuietOption, check_files, output_format, command, help_footer, ui
+from guided_lfd import errors
 from guided_lfd.demonstration.learn import ground_actions
 from guided_lfd.demonstration.segments_document import load_segments
 from guided_lfd.errors import EXIT_BAD_OPTION, InputFileError, Location, OptionError
@@ -20,15 +21,25 @@ from guided_lfd.pddl.reader import parse_domain, parse_problem_for, parse_task
 from guided_lfd.reporting import csv_text
 
 
+@help_footer(
+    example="guided-lfd evaluate data/domains/kitchen-1/robot.pddl \\\n"
+            "    data/domains/kitchen-1/problem.pddl \\\n"
+            "    --human data/domains/kitchen-1/human.pddl -d p1.segments.json",
+    exit_codes=(errors.EXIT_NO_EXCUSE, errors.EXIT_TOO_LARGE, errors.EXIT_INPUT_FILE, errors.EXIT_PDDL_SYNTAX,
+                errors.EXIT_PDDL_SEMANTIC, errors.EXIT_UNSUPPORTED, errors.EXIT_MISMATCH, errors.EXIT_TRACE,
+                errors.EXIT_OUTPUT),
+    success="measures written",
+)
 @command
 def evaluate(
-    robot: Annotated[str, typer.Argument(help="The robot's prior domain (the one the excuse is for).")],
-    problem: Annotated[str, typer.Argument(help="The robot's task.")],
+    robot: Annotated[str, typer.Argument(metavar="ROBOT", help="The robot's prior domain, the one the excuse is for "
+                                                                "('-' = stdin).")],
+    problem: Annotated[str, typer.Argument(metavar="PROBLEM", help="The robot's task ('-' = stdin).")],
     human: Annotated[str, typer.Option("--human", metavar="DOMAIN",
                                        help="The demonstrator's domain (human skills), for predicted sizes "
                                             "and misdirected guidance.")],
     excuse: Annotated[str | None, typer.Option("--excuse", metavar="JSON",
-                                               help="Excuse from `guided-lfd excuse --json` (default: compute "
+                                               help="Excuse from 'guided-lfd excuse --json' (default: compute "
                                                     "the minimal excuse).")] = None,
     nonminimal: Annotated[str | None, typer.Option(
         "--nonminimal-excuse", metavar="JSON",
@@ -36,19 +47,25 @@ def evaluate(
              "the human's full plan).")] = None,
     demonstration: Annotated[list[str] | None, typer.Option(
         "--demonstration", "-d", metavar="SEGMENTS",
-        help="Segments of a demonstration (from `guided-lfd segment`); repeatable. Gives the fraction of "
+        help="Segments of a demonstration (from 'guided-lfd segment'); repeatable. Gives the fraction of "
              "useful demonstration.")] = None,
     merged: Annotated[str | None, typer.Option("--merged", metavar="DOMAIN",
-                                               help="Prior + learned domain (from `guided-lfd merge`): is the "
+                                               help="Prior + learned domain (from 'guided-lfd merge'): is the "
                                                     "task solvable after the demonstration?")] = None,
-    bound: Annotated[int, typer.Option("--bound", help="Most human states explored for misdirected guidance.")]
+    bound: Annotated[int, typer.Option("--bound", metavar="N", help="Most human states explored for misdirected guidance.")]
     = DEFAULT_EXPLORATION_BOUND,
     csv_out: Annotated[bool, typer.Option("--csv", help="Write CSV rows (measure,value,detail).")] = False,
     output: OutputOption = "-",
     json_out: JsonOption = False,
     quiet: QuietOption = False,
 ) -> None:
-    """F1 savings, predicted sizes, useful fraction, misdirected guidance, solvability after demonstration."""
+    """Compute the paper's measures of a guided demonstration.
+
+    F1 savings and predicted demonstration sizes, the fraction of useful
+    demonstration (-d), misdirected guidance (bounded exploration of the
+    human's states) and solvability after the demonstration (--merged), for
+    the excuse of --excuse or else the minimal one. A table, --json or --csv.
+    """
     if bound < 1:
         raise OptionError(f"--bound {bound}: expected a number of states >= 1")
     chosen = output_format(output, json_out, csv_out, default="table")

@@ -8,7 +8,7 @@ import typer
 
 from cli.common import (
     JsonOption, MemoryLimitOption, OutputOption, QuietOption, TimeLimitOption, apply_memory_limit, check_files,
-    check_time_limit, command, emit, output_format,
+    check_time_limit, command, emit, help_footer, output_format,
     plain_stderr, started_at, ui,
 )
 from guided_lfd import errors
@@ -21,17 +21,25 @@ from guided_lfd.io import write_text
 from guided_lfd.pddl.reader import parse_domain, parse_task
 from guided_lfd.pddl.writer import problem_to_pddl
 
+@help_footer(
+    example="guided-lfd excuse data/domains/kitchen-1/robot.pddl \\\n    data/domains/kitchen-1/problem.pddl",
+    exit_codes=(errors.EXIT_NO_EXCUSE, errors.EXIT_NO_EXCUSE_WITHIN_LIMIT, errors.EXIT_TIME_LIMIT,
+                errors.EXIT_TOO_LARGE, errors.EXIT_MEMORY, errors.EXIT_INPUT_FILE, errors.EXIT_PDDL_SYNTAX,
+                errors.EXIT_PDDL_SEMANTIC, errors.EXIT_UNSUPPORTED, errors.EXIT_MISMATCH, errors.EXIT_OUTPUT),
+    success="excuse found, or none needed (the task is already solvable)",
+)
 @command
 def excuse(
-    domain: Annotated[str, typer.Argument(help="The robot's domain (its skills).")],
-    problem: Annotated[str, typer.Argument(help="The task the robot cannot plan for.")],
+    domain: Annotated[str, typer.Argument(metavar="DOMAIN", help="The robot's domain: its skills ('-' = stdin).")],
+    problem: Annotated[str, typer.Argument(metavar="PROBLEM",
+                                           help="The task the robot cannot plan for ('-' = stdin).")],
     semantics: Annotated[
-        Semantics, typer.Option("--semantics", case_sensitive=False,
+        Semantics, typer.Option("--semantics", case_sensitive=False, metavar="[literal|consistent]",
                                 help="literal: the paper's definition over all atoms; "
                                      "consistent: the excuse state must also keep the state invariants.")
     ] = Semantics.CONSISTENT,
     strategy: Annotated[
-        str, typer.Option("--strategy", help=f"Search strategy: {', '.join(f'{k} ({v.description})' for k, v in STRATEGIES.items())}.")
+        str, typer.Option("--strategy", metavar="NAME", help=f"Search strategy: {', '.join(f'{k} ({v.description})' for k, v in STRATEGIES.items())}.")
     ] = DEFAULT_STRATEGY,
     fixed: Annotated[
         list[str] | None, typer.Option("--fixed", metavar="PRED", help="Predicate the excuse may not change (repeatable).")
@@ -42,7 +50,7 @@ def excuse(
                                             "Total cost is minimised, ties broken by size.")
     ] = None,
     all_minimal: Annotated[bool, typer.Option("--all", help="List every minimal excuse, not just the first.")] = False,
-    max_size: Annotated[int | None, typer.Option("--max-size", help="Give up beyond this many changes (exit 13).")] = None,
+    max_size: Annotated[int | None, typer.Option("--max-size", metavar="N", help="Give up beyond N changes (exit 13).")] = None,
     invariants_from: Annotated[
         str | None, typer.Option("--invariants-from", metavar="DOMAIN",
                                  help="Take the consistent semantics' invariants from this domain (e.g. the human's).")
@@ -54,7 +62,8 @@ def excuse(
     ] = None,
     excuse_problem: Annotated[
         str | None, typer.Option("--excuse-problem", metavar="FILE",
-                                 help="Also write the problem with the excuse state as its initial state.")
+                                 help="Also write the problem with the excuse state as its initial state to FILE "
+                                      "('-' = stdout).")
     ] = None,
     output: OutputOption = "-",
     json_out: JsonOption = False,
@@ -62,8 +71,12 @@ def excuse(
     memory_limit: MemoryLimitOption = None,
     quiet: QuietOption = False,
 ) -> None:
-    """Find a minimal excuse: the smallest change to the initial state after which the robot's
-    own skills reach the goal. The human then only demonstrates how to reach it."""
+    """Find a minimal excuse: what the human must demonstrate.
+
+    The excuse is the smallest change to the initial state after which the
+    robot's own skills reach the goal: the human then demonstrates only how to
+    reach it. The robot's plan from the excuse state is printed, validated.
+    """
     if strategy not in STRATEGIES:
         raise errors.OptionError(f"--strategy {strategy}: unknown strategy (expected one of: {', '.join(STRATEGIES)})")
     if max_size is not None and max_size < 0:

@@ -6,7 +6,8 @@ from typing import Annotated
 
 import typer
 
-from cli.common import OutputOption, QuietOption, check_files, command, ui
+from cli.common import OutputOption, QuietOption, check_files, command, help_footer, ui
+from guided_lfd import errors
 from guided_lfd.demonstration.learn import learn_domain as learn
 from guided_lfd.demonstration.segments_document import load_segments
 from guided_lfd.errors import OptionError
@@ -16,17 +17,30 @@ from guided_lfd.pddl.reader import parse_domain
 from guided_lfd.pddl.writer import domain_to_pddl
 
 
+@help_footer(
+    example="guided-lfd learn-domain p1.segments.json -o p1.learned.pddl",
+    exit_codes=(errors.EXIT_INPUT_FILE, errors.EXIT_PDDL_SYNTAX, errors.EXIT_PDDL_SEMANTIC, errors.EXIT_UNSUPPORTED,
+                errors.EXIT_MISMATCH, errors.EXIT_TRACE, errors.EXIT_OUTPUT),
+    success="domain written",
+)
 @command
 def learn_domain(
-    segments: Annotated[list[str], typer.Argument(help="Segment JSON files from `guided-lfd segment` ('-' = stdin).")],
+    segments: Annotated[list[str], typer.Argument(metavar="SEGMENTS",
+                                                  help="Segments JSON files from 'guided-lfd segment' "
+                                                       "('-' = stdin).")],
     prior: Annotated[
         str | None, typer.Option("--prior", metavar="DOMAIN", help="Keep this domain's types, predicates and actions.")
     ] = None,
-    name: Annotated[str, typer.Option("--name", help="Name of the learned domain.")] = "learned",
+    name: Annotated[str, typer.Option("--name", metavar="NAME", help="Name of the learned domain.")] = "learned",
     output: OutputOption = "-",
     quiet: QuietOption = False,
 ) -> None:
-    """Turn demonstrated hand activities into lifted PDDL actions (nodes of interest, generalised)."""
+    """Turn demonstrated hand activities into PDDL actions.
+
+    Each demonstrated skill becomes a lifted action: its preconditions are the
+    nodes of interest of the demonstrated states, generalised over repeats.
+    With --prior the domain keeps the prior's types, predicates and actions.
+    """
     why = pddl_name_defect(name.lower())
     if why:
         raise OptionError(f"--name {name!r}: expected {why}")

@@ -18,7 +18,7 @@ from typing import Annotated, Any
 import typer
 from typer.core import TyperCommand, TyperGroup
 
-from cli.coercion import QuickCoercionMixin
+from cli.coercion import QuickCoercionMixin, quicken
 from cli.startup import pause_gc
 from guided_lfd.errors import EXIT_BAD_OPTION
 from guided_lfd import __version__
@@ -32,61 +32,72 @@ class Subcommand:
     function: str
     #: The first paragraph of the function's docstring, so that the command list of
     #: ``guided-lfd --help`` is the one typer would make, without importing the module
-    #: (tests/test_startup.py checks the two agree).
+    #: (tests/test_startup.py checks the two agree).  One short line, so that the list
+    #: does not cut it off (tests/test_cli_help.py).
     help: str
 
 
 #: Every subcommand, in the order ``guided-lfd --help`` lists them.
 SUBCOMMANDS: dict[str, Subcommand] = {
-    "excuse": Subcommand(
-        "cli.excuse", "excuse",
-        "Find a minimal excuse: the smallest change to the initial state after which the robot's\n"
-        "own skills reach the goal. The human then only demonstrates how to reach it.",
-    ),
-    "plan": Subcommand(
-        "cli.plan", "plan", "Plan optimally (A* with LM-cut); print the plan in IPC format (exit 10 if unsolvable).",
-    ),
-    "segment": Subcommand(
-        "cli.segment", "segment",
-        "Segment a demonstration into hand activities (Reach, Take, Put, Release, Open, Close, ...).",
-    ),
-    "learn-domain": Subcommand(
-        "cli.learn_domain", "learn_domain",
-        "Turn demonstrated hand activities into lifted PDDL actions (nodes of interest, generalised).",
-    ),
-    "merge": Subcommand(
-        "cli.merge", "merge",
-        "Unite domains: equal actions kept once, name clashes renamed, every action's origin as a comment.",
-    ),
-    "evaluate": Subcommand(
-        "cli.evaluate", "evaluate",
-        "F1 savings, predicted sizes, useful fraction, misdirected guidance, solvability after demonstration.",
-    ),
-    "validate": Subcommand(
-        "cli.validate", "validate",
-        "Execute PLAN from the problem's initial state; say which precondition of which step fails.",
-    ),
-    "bench": Subcommand(
-        "cli.bench", "bench",
-        "Run the excuse benchmark: every strategy and semantics on every task, as whole command-line runs.",
-    ),
-    "quality": Subcommand(
-        "cli.quality", "quality",
-        "Segmentation frame F1 and segment counts per demonstration, learned-domain precision and recall per kitchen.",
-    ),
-    "demos": Subcommand(
-        "cli.demos", "demos",
-        "Render the study's demonstrations (Kitchen I/II x P1-P5, excuse and complete) as hand traces.",
-    ),
-    "study": Subcommand(
-        "cli.study", "study",
-        "Reproduce the paper's user study: study.md, CSVs, plots and per-demonstration artefacts in --out.",
-    ),
+    "excuse": Subcommand("cli.excuse", "excuse", "Find a minimal excuse: what the human must demonstrate."),
+    "plan": Subcommand("cli.plan", "plan", "Plan optimally (A* with LM-cut), or prove unsolvability."),
+    "segment": Subcommand("cli.segment", "segment", "Segment a VR hand trace into hand activities."),
+    "learn-domain": Subcommand("cli.learn_domain", "learn_domain", "Turn demonstrated hand activities into PDDL actions."),
+    "merge": Subcommand("cli.merge", "merge", "Merge learned domains into the robot's prior domain."),
+    "evaluate": Subcommand("cli.evaluate", "evaluate", "Compute the paper's measures of a guided demonstration."),
+    "validate": Subcommand("cli.validate", "validate", "Check a plan step by step from the initial state."),
+    "bench": Subcommand("cli.bench", "bench", "Run the excuse benchmark (generate, run, report)."),
+    "quality": Subcommand("cli.quality", "quality", "Score segmentation and learning on labelled demos."),
+    "demos": Subcommand("cli.demos", "demos", "Render the study's demonstrations as hand traces."),
+    "study": Subcommand("cli.study", "study", "Reproduce the paper's user study from the shipped data."),
 }
 
 
+#: ``-h`` as well as ``--help``, on the group and (inherited through the context) every subcommand.
+CONTEXT_SETTINGS = {"help_option_names": ["-h", "--help"]}
+
+
+def argument_name(param: Any, usage: bool = True) -> str:
+    """An argument as usage lines write it (``DOMAIN``, ``[OUT]``, ``SEGMENTS...``); the list drops ``[]``."""
+    name = param.metavar or param.name.upper()
+    if usage and not param.required:
+        name = f"[{name}]"
+    return f"{name}..." if param.nargs != 1 else name
+
+
 class QuickCommand(QuickCoercionMixin, TyperCommand):
-    """A subcommand whose trivial parameter values skip typer's pydantic coercion (see cli.coercion)."""
+    """A subcommand whose trivial parameter values skip typer's pydantic coercion (see cli.coercion).
+
+    Its help writes arguments by their metavars, as a planner's documentation
+    does (``Usage: guided-lfd plan [OPTIONS] DOMAIN PROBLEM``; typer would write
+    ``{domain}`` and ``domain <str>``), and a required option joins the usage line.
+    """
+
+    def collect_usage_pieces(self, ctx: typer.Context) -> list[str]:
+        """``[OPTIONS]``, the arguments by name, then any required option with its value."""
+        params = self.get_params(ctx)
+        pieces = [self.options_metavar] if self.options_metavar else []
+        pieces += [argument_name(p) for p in params if p.param_type_name == "argument"]
+        for p in params:
+            if p.param_type_name == "option" and p.required:
+                pieces.append(f"{max(p.opts, key=len)} {p.metavar or p.name.upper()}")
+        return pieces
+
+    def format_options(self, ctx: typer.Context, formatter: Any) -> None:
+        """typer's Arguments and Options sections, arguments named as in the usage line."""
+        args, opts = [], []
+        for param in self.get_params(ctx):
+            record = param.get_help_record(ctx)
+            if record is None:
+                continue
+            if param.param_type_name == "argument":
+                args.append((argument_name(param, usage=False), record[1]))
+            elif param.param_type_name == "option":
+                opts.append(record)
+        for title, rows in (("Arguments", args), ("Options", opts)):
+            if rows:
+                with formatter.section(title):
+                    formatter.write_dl(rows)
 
 
 def load_subcommand(name: str) -> TyperCommand:
@@ -97,7 +108,9 @@ def load_subcommand(name: str) -> TyperCommand:
     # the command exactly as it builds each command of a group (get_command_from_info).
     single = typer.Typer(add_completion=False, pretty_exceptions_enable=app.pretty_exceptions_enable,
                          pretty_exceptions_short=app.pretty_exceptions_short, rich_markup_mode=app.rich_markup_mode)
-    single.command(name, cls=QuickCommand)(function)
+    # The help ends with the command's example and exit codes (cli.common.help_footer).
+    single.command(name, cls=QuickCommand, context_settings=CONTEXT_SETTINGS,
+                   epilog=getattr(function, "help_epilog", None))(function)
     return typer.main.get_command(single)  # type: ignore[return-value]
 
 
@@ -148,6 +161,13 @@ class LazyGroup(QuickCoercionMixin, TyperGroup):
             lazy[name] = command
         self.commands = lazy
         self._listing = False
+
+    def get_params(self, ctx: typer.Context) -> list[Any]:
+        """The group's parameters; those typer adds after building it (completion's) coerce quickly too."""
+        params = super().get_params(ctx)
+        for param in params:
+            quicken(param)
+        return params
 
     def list_commands(self, ctx: typer.Context) -> list[str]:
         """Subcommand names in registry order, without loading any."""
@@ -200,9 +220,14 @@ app = typer.Typer(
     cls=LazyGroup,
     help="Excuse-guided learning from demonstration: find what a robot needs demonstrated, "
     "learn it from a hand trace, and measure what guidance saved.",
+    epilog="Run 'guided-lfd COMMAND -h' for a command's arguments, an example and its exit codes.",
+    context_settings=CONTEXT_SETTINGS,
     no_args_is_help=True,
-    add_completion=False,
+    # typer's --install-completion / --show-completion: costs no start-up (measured, see README).
+    add_completion=True,
     pretty_exceptions_enable=False,
+    # click's plain formatter: help is the same plain text on a terminal, a pipe or CliRunner
+    # (no markup to render, no colour codes), and --help never imports rich.
     rich_markup_mode=None,
 )
 

@@ -7,7 +7,8 @@ from typing import Annotated
 
 import typer
 
-from cli.common import JsonOption, OutputOption, QuietOption, check_files, output_format, command, ui
+from cli.common import JsonOption, OutputOption, QuietOption, check_files, output_format, command, help_footer, ui
+from guided_lfd import errors
 from guided_lfd.errors import OptionError
 from guided_lfd.io import json_document, write_text
 from guided_lfd.merge import merge_domains
@@ -17,11 +18,18 @@ from guided_lfd.pddl.reader import parse_domain, parse_problem_for
 from guided_lfd.pddl.writer import domain_to_pddl, problem_to_pddl
 
 
+@help_footer(
+    example="guided-lfd merge data/domains/kitchen-1/robot.pddl p1.learned.pddl \\\n    -o merged.pddl",
+    exit_codes=(errors.EXIT_INPUT_FILE, errors.EXIT_PDDL_SYNTAX, errors.EXIT_PDDL_SEMANTIC, errors.EXIT_UNSUPPORTED,
+                errors.EXIT_MISMATCH, errors.EXIT_OUTPUT),
+    success="merged domain written",
+)
 @command
 def merge(
-    prior: Annotated[str, typer.Argument(help="The robot's prior domain ('-' = stdin).")],
-    learned: Annotated[list[str], typer.Argument(help="Learned domains to merge into it ('-' = stdin).")],
-    name: Annotated[str | None, typer.Option("--name", help="Name of the merged domain (default: the prior's).")] = None,
+    prior: Annotated[str, typer.Argument(metavar="PRIOR", help="The robot's prior domain ('-' = stdin).")],
+    learned: Annotated[list[str], typer.Argument(metavar="LEARNED",
+                                                 help="Learned domains to merge into it ('-' = stdin).")],
+    name: Annotated[str | None, typer.Option("--name", metavar="NAME", help="Name of the merged domain (default: the prior's).")] = None,
     positive_for: Annotated[str | None, typer.Option(
         "--positive-for", metavar="PROBLEM",
         help="Compile negative preconditions away (complement predicates not_p) for STRIPS-only tools such as "
@@ -32,7 +40,13 @@ def merge(
     json_out: JsonOption = False,
     quiet: QuietOption = False,
 ) -> None:
-    """Unite domains: equal actions kept once, name clashes renamed, every action's origin as a comment."""
+    """Merge learned domains into the robot's prior domain.
+
+    Types, constants, predicates and actions are united: actions equal up to
+    parameter renaming are kept once, name clashes are renamed and reported,
+    and every action's origin is written as a comment. Writes PDDL (or, with
+    --json, a document holding it).
+    """
     if (positive_for is None) != (problem_output is None):
         raise OptionError("--positive-for and --problem-output go together")
     if problem_output is not None and problem_output == output:

@@ -8,10 +8,11 @@ import typer
 
 from cli.common import (
     JsonOption, MemoryLimitOption, OutputOption, QuietOption, TimeLimitOption, apply_memory_limit, check_files,
-    check_time_limit, command, emit, output_format,
+    check_time_limit, command, emit, help_footer, output_format,
     started_at, ui,
 )
 from guided_lfd.deadline import deadline_after, remaining, watchdog
+from guided_lfd import errors
 from guided_lfd.errors import EXIT_UNSOLVABLE, OptionError
 from guided_lfd.api import plan as plan_and_validate
 from guided_lfd.io import write_text
@@ -20,12 +21,19 @@ from guided_lfd.planning import DEFAULT_SEARCH, SEARCHES
 from guided_lfd.validation import cost_kind, format_plan
 
 
+@help_footer(
+    example="guided-lfd plan data/domains/kitchen-1/human.pddl \\\n    data/domains/kitchen-1/problem.pddl -o k1.plan",
+    exit_codes=(errors.EXIT_UNSOLVABLE, errors.EXIT_TIME_LIMIT, errors.EXIT_TOO_LARGE, errors.EXIT_MEMORY,
+                errors.EXIT_INPUT_FILE, errors.EXIT_PDDL_SYNTAX, errors.EXIT_PDDL_SEMANTIC, errors.EXIT_UNSUPPORTED,
+                errors.EXIT_MISMATCH, errors.EXIT_OUTPUT),
+    success="plan found (and validated)",
+)
 @command
 def plan(
-    domain: Annotated[str, typer.Argument(help="Domain PDDL file ('-' = stdin).")],
-    problem: Annotated[str, typer.Argument(help="Problem PDDL file ('-' = stdin).")],
+    domain: Annotated[str, typer.Argument(metavar="DOMAIN", help="Domain PDDL file ('-' = stdin).")],
+    problem: Annotated[str, typer.Argument(metavar="PROBLEM", help="Problem PDDL file ('-' = stdin).")],
     search: Annotated[
-        str, typer.Option("--search", help=f"Search: {', '.join(SEARCHES)} (astar-lmcut is guided-lfd's own; the rest are pyperplan's).")
+        str, typer.Option("--search", metavar="NAME", help=f"Search: {', '.join(SEARCHES)} (astar-lmcut is guided-lfd's own; the rest are pyperplan's).")
     ] = DEFAULT_SEARCH,
     output: OutputOption = "-",
     json_out: JsonOption = False,
@@ -33,7 +41,12 @@ def plan(
     memory_limit: MemoryLimitOption = None,
     quiet: QuietOption = False,
 ) -> None:
-    """Plan optimally (A* with LM-cut); print the plan in IPC format (exit 10 if unsolvable)."""
+    """Plan optimally (A* with LM-cut), or prove unsolvability.
+
+    The plan is printed in IPC format (one action a line, then its cost as a
+    comment) once it has been validated against the lifted domain. When an
+    exhaustive search finds no plan, the task is unsolvable (exit 10).
+    """
     if search not in SEARCHES:
         raise OptionError(f"--search {search}: unknown search (expected one of: {', '.join(SEARCHES)})")
     time_limit = check_time_limit(time_limit)

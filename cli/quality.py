@@ -8,9 +8,16 @@ from typing import Annotated
 
 import typer
 
-from cli.common import QuietOption, command
+from cli.common import QuietOption, command, help_footer
+from guided_lfd import errors
 
 
+@help_footer(
+    example="guided-lfd quality --demos data/demos --domains data/domains",
+    exit_codes=(errors.EXIT_INPUT_FILE, errors.EXIT_PDDL_SYNTAX, errors.EXIT_PDDL_SEMANTIC, errors.EXIT_UNSUPPORTED,
+                errors.EXIT_TRACE),
+    success="report printed",
+)
 @command
 def quality(
     demos: Annotated[Path, typer.Option("--demos", metavar="DIR",
@@ -20,7 +27,13 @@ def quality(
     = Path("data/domains"),
     quiet: QuietOption = False,
 ) -> None:
-    """Segmentation frame F1 and segment counts per demonstration, learned-domain precision and recall per kitchen."""
+    """Score segmentation and learning on labelled demos.
+
+    Segmentation: frame-level activity F1 and segment counts per
+    demonstration. Learning: precision and recall of the learned domain's
+    preconditions and effects against each kitchen's human.pddl. Markdown on
+    stdout.
+    """
     from guided_lfd.demonstration.quality import quality_markdown, quality_report
 
     sys.stdout.write(quality_markdown(quality_report(demos, domains)))

@@ -8,16 +8,29 @@ from typing import Annotated
 
 import typer
 
-from cli.common import QuietOption, command, ui
+from cli.common import QuietOption, command, help_footer, ui
+from guided_lfd import errors
 
 
+@help_footer(
+    example="guided-lfd study --root . --out results",
+    exit_codes=(errors.EXIT_INPUT_FILE, errors.EXIT_PDDL_SYNTAX, errors.EXIT_PDDL_SEMANTIC, errors.EXIT_UNSUPPORTED,
+                errors.EXIT_MISMATCH, errors.EXIT_TRACE, errors.EXIT_OUTPUT),
+    success="study reproduced",
+)
 @command
 def study(
     root: Annotated[Path, typer.Option("--root", metavar="DIR", help="Repository root (with data/).")] = Path("."),
     out: Annotated[Path, typer.Option("--out", metavar="DIR", help="Where the results go.")] = Path("results"),
     quiet: QuietOption = False,
 ) -> None:
-    """Reproduce the paper's user study: study.md, CSVs, plots and per-demonstration artefacts in --out."""
+    """Reproduce the paper's user study from the shipped data.
+
+    Runs segment, learn-domain, merge, excuse and evaluate on every rendered
+    demonstration and writes study.md, CSVs, plots, study.json and each
+    demonstration's artefacts into --out; prints the headline figures beside
+    the paper's.
+    """
     from guided_lfd.reporting import PLOTS_HINT
     from guided_lfd.study import run_study, side_by_side, write_artefacts, write_report
 

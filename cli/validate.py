@@ -6,23 +6,37 @@ from typing import Annotated
 
 import typer
 
-from cli.common import JsonOption, OutputOption, QuietOption, check_files, output_format, command, emit, ui
+from cli.common import JsonOption, OutputOption, QuietOption, check_files, output_format, command, emit, help_footer, ui
+from guided_lfd import errors
 from guided_lfd.errors import EXIT_PLAN_INVALID
 from guided_lfd.io import json_document
 from guided_lfd.pddl.reader import parse_task
 from guided_lfd.validation import cost_kind, parse_plan, validate_plan
 
 
+@help_footer(
+    example="guided-lfd validate data/domains/kitchen-1/human.pddl \\\n"
+            "    data/domains/kitchen-1/problem.pddl k1.plan",
+    exit_codes=(errors.EXIT_PLAN_INVALID, errors.EXIT_INPUT_FILE, errors.EXIT_PDDL_SYNTAX, errors.EXIT_PDDL_SEMANTIC,
+                errors.EXIT_UNSUPPORTED, errors.EXIT_MISMATCH, errors.EXIT_PLAN_FILE, errors.EXIT_OUTPUT),
+    success="plan valid: every step applies and the goal is reached",
+)
 @command
 def validate(
-    domain: Annotated[str, typer.Argument(help="Domain PDDL file.")],
-    problem: Annotated[str, typer.Argument(help="Problem PDDL file.")],
+    domain: Annotated[str, typer.Argument(metavar="DOMAIN", help="Domain PDDL file ('-' = stdin).")],
+    problem: Annotated[str, typer.Argument(metavar="PROBLEM", help="Problem PDDL file ('-' = stdin).")],
     plan_file: Annotated[str, typer.Argument(metavar="PLAN", help="Plan in IPC format ('-' = stdin).")],
     output: OutputOption = "-",
     json_out: JsonOption = False,
     quiet: QuietOption = False,
 ) -> None:
-    """Execute PLAN from the problem's initial state; say which precondition of which step fails."""
+    """Check a plan step by step from the initial state.
+
+    Executes PLAN from the problem's initial state on the lifted domain; an
+    invalid plan is reported with its first failing step and the precondition
+    that does not hold, or the goal atoms it leaves unmet (exit 12). A valid
+    plan's cost is reported too.
+    """
     check_files([domain, problem, plan_file], {"--output": output})
     json_out = output_format(output, json_out) == "json"
     dom, prob = parse_task(domain, problem)
