@@ -103,124 +103,182 @@ class LandmarkSearch:
     def search(self, space: ChangeSpace, limits: SearchLimits, progress: Progress | None = None,
                oracle: ReachabilityOracle | None = None, relaxed: RelaxedExcuseTask | None = None) -> SearchOutcome:
         """A* over change sets; ``oracle`` and ``relaxed`` are reused when given."""
-        relaxed = relaxed or RelaxedExcuseTask(space)
         # Reusing the caller's oracle keeps the dead states its "already
         # solvable?" search found: most candidates' searches run into them.
-        oracle = oracle or ReachabilityOracle(space, limits.deadline)
-        task = space.task
-        weights = space.weights
-        cheapest = min(weights.values(), default=0)
-        relevant_changes = space.relevant_atoms & space.changeable
-        goal_atoms = (task.goal_pos | task.goal_neg) & space.changeable
-        # Heap entries: (f, -g, tie, changes); per node its inherited landmarks
-        # as (mask of changes, cost share) pairs, or None = compute afresh.
-        counter = 0
-        heap: list[tuple[float, int, int, int]] = [(0, 0, 0, 0)]
-        inherited: dict[int, list[tuple[int, int]] | None] = {0: None}
-        seen = {0}
-        linger(heap, inherited, seen)  # never freed after a deadline (see guided_lfd.deadline)
-        best: float | None = None
-        solutions: list[int] = []
-        plans: dict[int, list[GroundAction]] = {}
-        candidates = expanded = evaluations = 0
-        size_pruned = False
+        run = _LandmarkRun(space, limits, relaxed or RelaxedExcuseTask(space),
+                           oracle or ReachabilityOracle(space, limits.deadline))
         try:
-            while heap:
-                f, neg_g, _, changes = heapq.heappop(heap)
-                if best is not None and f > best:
-                    break
-                if _timed_out(limits):
-                    raise SearchTimeout("excuse search exceeded its time limit")
-                g = -neg_g
-                state = task.init ^ changes
-                landmarks = inherited.pop(changes)
-                if not landmarks:
-                    evaluations += 1
-                    # A node whose inherited landmarks are all hit is usually
-                    # relaxed-solvable: a closure proves h = 0 without LM-cut.
-                    if landmarks is not None:
-                        if relaxed.reaches_goal_unchanged(state):
-                            bound = Bound(0, [], [])
-                        else:
-                            # h >= the cheapest change: requeue with that bound
-                            # and pay for LM-cut only if the node comes up again.
-                            counter += 1
-                            inherited[changes] = None
-                            heapq.heappush(heap, (max(f, g + cheapest), neg_g, counter, changes))
-                            continue
-                    else:
-                        bound = relaxed.bound(state, changes)
-                    if bound.h == INF:
-                        continue
-                    landmarks = [(_mask(l), m) for l, m in zip(bound.landmarks, bound.costs)]
-                    h = max(bound.h, space.consistency_bound(state))
-                    if g + h > f:
-                        counter += 1
-                        inherited[changes] = landmarks
-                        heapq.heappush(heap, (g + h, neg_g, counter, changes))
-                        continue
-                expanded += 1
-                if progress and not expanded % 50:
-                    progress("searching", candidates, f)
-                branch = 0
-                violated = space.violated(state)
-                if violated:
-                    group = min(violated, key=lambda gr: gr.mask.bit_count())
-                    if (state & group.mask).bit_count() > 1:
-                        branch = group.mask & state & ~changes & space.changeable
-                    else:
-                        branch = group.mask & ~state & ~changes & space.changeable
-                    if not branch:
-                        continue  # the group cannot be repaired any more
-                if landmarks:
-                    smallest = min((lm for lm, _ in landmarks), key=int.bit_count)
-                    if not branch or smallest.bit_count() < branch.bit_count():
-                        branch = smallest
-                elif not violated:
-                    if task.satisfies_goal(state):
-                        branch = goal_atoms & ~changes
-                    else:
-                        candidates += 1
-                        plan = oracle.solve(state)
-                        if plan is not None:
-                            best = g
-                            solutions.append(changes)
-                            plans[changes] = plan
-                            if not limits.all_minimal or len(solutions) >= limits.max_solutions:
-                                break
-                            continue
-                        branch = relevant_changes & ~changes
-                size = changes.bit_count()
-                if limits.max_size is not None and size + 1 > limits.max_size:
-                    size_pruned = size_pruned or bool(branch)
-                    continue
-                for i in bits(branch):
-                    child = changes | (1 << i)
-                    if child in seen:
-                        continue
-                    seen.add(child)
-                    if (state >> i) & 1 and i in space.groups_of:
-                        # Removing a group atom: the parent's shares may include a
-                        # charge for exactly this removal; recompute instead.
-                        kept = []
-                    else:
-                        kept = [(lm, m) for lm, m in landmarks if not (lm >> i) & 1] if landmarks else []
-                    cg = g + weights[i]
-                    h_child = max(relaxed.unscale(sum(m for _, m in kept)), space.consistency_bound(task.init ^ child))
-                    counter += 1
-                    inherited[child] = kept
-                    heapq.heappush(heap, (max(f, cg + h_child), -cg, counter, child))
+            run.loop(progress)
         except SearchTimeout:
-            return SearchOutcome(solutions, plans, ExcuseStatus.TIMEOUT, candidates, oracle.stats.calls, expanded,
-                                 {"evaluations": evaluations, "oracle_expanded": oracle.stats.expanded})
-        status = (ExcuseStatus.FOUND if solutions
-                  else ExcuseStatus.NONE_WITHIN_SIZE if size_pruned else ExcuseStatus.NONE)
-        return SearchOutcome(sorted(solutions), plans, status, candidates, oracle.stats.calls, expanded,
-                             {"evaluations": evaluations, "oracle_expanded": oracle.stats.expanded,
-                              "oracle_memo_hits": oracle.stats.memo_hits,
-                              "oracle_hill_climbs": oracle.stats.hill_climbs,
-                              "oracle_pair_proofs": oracle.stats.pair_proofs,
-                              "oracle_ff_searches": oracle.stats.ff_searches})
+            return run.outcome(timed_out=True)
+        return run.outcome()
+
+
+class _LandmarkRun:
+    """One landmark search: the open list, each node's inherited landmarks, and what was found.
+
+    Heap entries are ``(f, -g, tie, changes)``; ``inherited`` holds per queued
+    node its landmarks as (mask of changes, cost share) pairs, or None:
+    compute afresh.
+    """
+
+    def __init__(self, space: ChangeSpace, limits: SearchLimits, relaxed: RelaxedExcuseTask,
+                 oracle: ReachabilityOracle) -> None:
+        self.space, self.limits, self.relaxed, self.oracle = space, limits, relaxed, oracle
+        self.task = space.task
+        self.cheapest = min(space.weights.values(), default=0)
+        self.relevant_changes = space.relevant_atoms & space.changeable
+        self.goal_atoms = (self.task.goal_pos | self.task.goal_neg) & space.changeable
+        self.counter = 0
+        self.heap: list[tuple[float, int, int, int]] = [(0, 0, 0, 0)]
+        self.inherited: dict[int, list[tuple[int, int]] | None] = {0: None}
+        self.seen = {0}
+        linger(self.heap, self.inherited, self.seen)  # never freed after a deadline (see guided_lfd.deadline)
+        self.best: float | None = None
+        self.solutions: list[int] = []
+        self.plans: dict[int, list[GroundAction]] = {}
+        self.candidates = self.expanded = self.evaluations = 0
+        self.size_pruned = False
+
+    def push(self, f: float, g: int, changes: int, landmarks: list[tuple[int, int]] | None) -> None:
+        """Queue ``changes`` (cost ``g``) at priority ``f`` with the landmarks it inherits."""
+        self.counter += 1
+        self.inherited[changes] = landmarks
+        heapq.heappush(self.heap, (f, -g, self.counter, changes))
+
+    def loop(self, progress: Progress | None) -> None:
+        """Expand nodes in order of f until the minimal excuses are found or the open list is empty."""
+        heap, task = self.heap, self.task
+        # Hot loop: one pass per node; the steps it calls do the work.
+        while heap:
+            f, neg_g, _, changes = heapq.heappop(heap)
+            if self.best is not None and f > self.best:
+                return
+            if _timed_out(self.limits):
+                raise SearchTimeout("excuse search exceeded its time limit")
+            g = -neg_g
+            state = task.init ^ changes
+            landmarks = self.inherited.pop(changes)
+            if not landmarks:
+                landmarks = self.evaluate(f, g, state, changes, landmarks)
+                if landmarks is None:
+                    continue  # requeued with a better bound, or a dead end
+            self.expanded += 1
+            if progress and not self.expanded % 50:
+                progress("searching", self.candidates, f)
+            branch = self.branch(g, state, changes, landmarks)
+            if branch is None:
+                continue
+            if branch == _DONE:
+                return
+            self.expand(f, g, state, changes, landmarks, branch)
+
+    def evaluate(self, f: float, g: int, state: int, changes: int,
+                 landmarks: list[tuple[int, int]] | None) -> list[tuple[int, int]] | None:
+        """A node without landmarks left: its fresh landmarks, or None when it was requeued or is dead."""
+        self.evaluations += 1
+        relaxed = self.relaxed
+        # A node whose inherited landmarks are all hit is usually
+        # relaxed-solvable: a closure proves h = 0 without LM-cut.
+        if landmarks is not None:
+            if not relaxed.reaches_goal_unchanged(state):
+                # h >= the cheapest change: requeue with that bound
+                # and pay for LM-cut only if the node comes up again.
+                self.push(max(f, g + self.cheapest), g, changes, None)
+                return None
+            bound = Bound(0, [], [])
+        else:
+            bound = relaxed.bound(state, changes)
+        if bound.h == INF:
+            return None
+        fresh = [(_mask(l), m) for l, m in zip(bound.landmarks, bound.costs)]
+        h = max(bound.h, self.space.consistency_bound(state))
+        if g + h > f:
+            self.push(g + h, g, changes, fresh)
+            return None
+        return fresh
+
+    def branch(self, g: int, state: int, changes: int, landmarks: list[tuple[int, int]]) -> int | None:
+        """The atoms to branch on: a violated group's repairs, the smallest landmark, or, at a
+        relaxed-solvable consistent node, the oracle's verdict (an excuse, or all relevant changes).
+
+        None: nothing to expand here; ``_DONE``: the search is over.
+        """
+        space = self.space
+        branch = 0
+        violated = space.violated(state)
+        if violated:
+            group = min(violated, key=lambda gr: gr.mask.bit_count())
+            if (state & group.mask).bit_count() > 1:
+                branch = group.mask & state & ~changes & space.changeable
+            else:
+                branch = group.mask & ~state & ~changes & space.changeable
+            if not branch:
+                return None  # the group cannot be repaired any more
+        if landmarks:
+            smallest = min((lm for lm, _ in landmarks), key=int.bit_count)
+            if not branch or smallest.bit_count() < branch.bit_count():
+                branch = smallest
+        elif not violated:
+            if self.task.satisfies_goal(state):
+                branch = self.goal_atoms & ~changes
+            else:
+                return self.check_candidate(g, state, changes)
+        return branch
+
+    def check_candidate(self, g: int, state: int, changes: int) -> int | None:
+        """Ask the oracle about a candidate excuse; the relevant changes to branch on if it is none."""
+        self.candidates += 1
+        plan = self.oracle.solve(state)
+        if plan is None:
+            return self.relevant_changes & ~changes
+        self.best = g
+        self.solutions.append(changes)
+        self.plans[changes] = plan
+        if not self.limits.all_minimal or len(self.solutions) >= self.limits.max_solutions:
+            return _DONE
+        return None
+
+    def expand(self, f: float, g: int, state: int, changes: int, landmarks: list[tuple[int, int]],
+               branch: int) -> None:
+        """Queue each child that adds one atom of ``branch``, with the landmarks it inherits."""
+        space, limits = self.space, self.limits
+        size = changes.bit_count()
+        if limits.max_size is not None and size + 1 > limits.max_size:
+            self.size_pruned = self.size_pruned or bool(branch)
+            return
+        init, weights, seen = self.task.init, space.weights, self.seen
+        for i in bits(branch):
+            child = changes | (1 << i)
+            if child in seen:
+                continue
+            seen.add(child)
+            if (state >> i) & 1 and i in space.groups_of:
+                # Removing a group atom: the parent's shares may include a
+                # charge for exactly this removal; recompute instead.
+                kept = []
+            else:
+                kept = [(lm, m) for lm, m in landmarks if not (lm >> i) & 1] if landmarks else []
+            cg = g + weights[i]
+            h_child = max(self.relaxed.unscale(sum(m for _, m in kept)), space.consistency_bound(init ^ child))
+            self.push(max(f, cg + h_child), cg, child, kept)
+
+    def outcome(self, timed_out: bool = False) -> SearchOutcome:
+        """What the search found, with its effort."""
+        stats = self.oracle.stats
+        if timed_out:
+            return SearchOutcome(self.solutions, self.plans, ExcuseStatus.TIMEOUT, self.candidates, stats.calls,
+                                 self.expanded, {"evaluations": self.evaluations, "oracle_expanded": stats.expanded})
+        status = (ExcuseStatus.FOUND if self.solutions
+                  else ExcuseStatus.NONE_WITHIN_SIZE if self.size_pruned else ExcuseStatus.NONE)
+        return SearchOutcome(sorted(self.solutions), self.plans, status, self.candidates, stats.calls, self.expanded,
+                             {"evaluations": self.evaluations, "oracle_expanded": stats.expanded,
+                              "oracle_memo_hits": stats.memo_hits, "oracle_hill_climbs": stats.hill_climbs,
+                              "oracle_pair_proofs": stats.pair_proofs, "oracle_ff_searches": stats.ff_searches})
+
+
+#: ``_LandmarkRun.branch``'s answer when the search is over (enough minimal excuses found).
+_DONE = -1
 
 
 def colex_subsets(atoms: list[int], size: int, end: int | None = None) -> Iterator[int]:
