@@ -209,10 +209,7 @@ def merge_domains(domains: list[Domain], name: str | None = None) -> MergeResult
     result = MergeResult(domains[0])
     requirements: dict[str, None] = {}
     types: dict[str, str | None] = {}
-    constants: dict[str, str] = {}
-    predicates: dict[str, Predicate] = {}
     spellings: dict[str, str] = {}
-    actions: list[ActionSchema] = []
     prior_types = {t for t in domains[0].types if t != "object"}
     for domain in domains:
         requirements.update(dict.fromkeys(domain.requirements))
@@ -220,17 +217,46 @@ def merge_domains(domains: list[Domain], name: str | None = None) -> MergeResult
         for spelled_lower, spelled in domain.spellings.items():
             spellings.setdefault(spelled_lower, spelled)
     _check_namespace(domains)
+    constants: dict[str, str] = {}
+    predicates: dict[str, Predicate] = {}
     for domain in domains:
-        for const, t in domain.constants.items():
-            if const not in constants:
-                constants[const] = t
-            elif constants[const] != t:
-                if constants[const] in type_ancestors(types, t):
-                    constants[const] = t
-                elif t not in type_ancestors(types, constants[const]):
-                    raise MergeError(f"constant {const} is of type {constants[const]} and of type {t} "
-                                     f"({domain.path}); expected one type", domain.locate(const, ":constants"))
+        _merge_constants(constants, types, domain)
         _merge_predicates(predicates, types, domain, result)
+    actions = _merge_actions(domains, result)
+    functions = _merge_functions(domains, types, predicates, result)
+    result.domain = Domain(
+        name=name or domains[0].name,
+        requirements=tuple(requirements),
+        types=types,
+        constants=constants,
+        predicates=predicates,
+        actions=actions,
+        path="<merged>",
+        spellings=spellings,
+        functions=functions,
+        # An object one domain's actions use undeclared stays so, unless another declares it.
+        implicit_constants=tuple(dict.fromkeys(
+            c for d in domains for c in d.implicit_constants if c not in constants)),
+    )
+    return result
+
+
+def _merge_constants(merged: dict[str, str], types: dict[str, str | None], domain: Domain) -> None:
+    """Add ``domain``'s constants; one declared twice keeps the more specific of two related types."""
+    for const, t in domain.constants.items():
+        if const not in merged:
+            merged[const] = t
+        elif merged[const] != t:
+            if merged[const] in type_ancestors(types, t):
+                merged[const] = t
+            elif t not in type_ancestors(types, merged[const]):
+                raise MergeError(f"constant {const} is of type {merged[const]} and of type {t} "
+                                 f"({domain.path}); expected one type", domain.locate(const, ":constants"))
+
+
+def _merge_actions(domains: list[Domain], result: MergeResult) -> list[ActionSchema]:
+    """Every domain's actions: equal ones (up to renaming) once, name clashes renamed, origins kept."""
+    actions: list[ActionSchema] = []
     taken: set[str] = set()
     costed = any(domain.functions for domain in domains)
     for domain in domains:
@@ -259,21 +285,5 @@ def merge_domains(domains: list[Domain], name: str | None = None) -> MergeResult
                 cost = 1
                 result.costed.append(f"{new_name} ({domain.path}) has no action cost: it costs 1")
             actions.append(replace(action, name=new_name, origin=_origin(action, domain), cost=cost))
-    functions = _merge_functions(domains, types, predicates, result)
-    merged = Domain(
-        name=name or domains[0].name,
-        requirements=tuple(requirements),
-        types=types,
-        constants=constants,
-        predicates=predicates,
-        actions=actions,
-        path="<merged>",
-        spellings=spellings,
-        functions=functions,
-        # An object one domain's actions use undeclared stays so, unless another declares it.
-        implicit_constants=tuple(dict.fromkeys(
-            c for d in domains for c in d.implicit_constants if c not in constants)),
-    )
-    result.domain = merged
-    return result
+    return actions
 

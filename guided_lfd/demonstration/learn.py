@@ -215,6 +215,22 @@ def learn_domain(documents: list[tuple[str, dict]], prior: Domain | None = None,
     the prior merged with the learned skills by :func:`guided_lfd.merge.merge_domains`
     (skills the prior already has are kept once, name clashes renamed).
     """
+    types, lifted = _lifted_demonstrations(documents)
+    learned = generalise(lifted, prior.types if prior is not None else None)
+    predicates = _predicates_of(learned)
+    type_decl: dict[str, str | None] = {"object": None}
+    for t in sorted(set(types.values())):
+        type_decl[t] = "object"
+    if prior is None:
+        domain = Domain(name=name, requirements=(":strips", ":typing", ":negative-preconditions"), types=type_decl,
+                        constants={}, predicates=predicates, actions=learned, path="<learned>")
+        invariants = proven_invariants(domain, types, observed_states(documents))
+        return drop_implied_negative_preconditions(domain, {a.name for a in learned}, invariants)
+    return _learned_into_prior(documents, prior, name, types, type_decl, predicates, learned)
+
+
+def _lifted_demonstrations(documents: list[tuple[str, dict]]) -> tuple[dict[str, str], list[ActionSchema]]:
+    """Every object's type and every demonstrated action lifted; a predicate used with two arities is an error."""
     types: dict[str, str] = {}
     lifted: list[ActionSchema] = []
     arity: dict[str, tuple[int, str]] = {}
@@ -227,9 +243,13 @@ def learn_domain(documents: list[tuple[str, dict]], prior: Domain | None = None,
                                      "expected the same number", Location(source))
         types.update(doc.get("objects", {}))
         lifted += [lift(a, doc.get("objects", {})) for a in ground_actions(doc, source)]
-    learned = generalise(lifted, prior.types if prior is not None else None)
+    return types, lifted
+
+
+def _predicates_of(actions: list[ActionSchema]) -> dict[str, Predicate]:
+    """The predicates the actions use, each argument typed by its parameters (``object`` where they differ)."""
     predicates: dict[str, Predicate] = {}
-    for act in learned:
+    for act in actions:
         ptypes = dict(act.params)
         for atom in [l.atom for l in act.precondition] + list(act.add) + list(act.delete):
             if atom.predicate not in predicates:
@@ -240,14 +260,13 @@ def learn_domain(documents: list[tuple[str, dict]], prior: Domain | None = None,
                 merged = tuple((v, t if t == ptypes.get(a, "object") else "object")
                                for (v, t), a in zip(old.params, atom.args))
                 predicates[atom.predicate] = Predicate(atom.predicate, merged)
-    type_decl: dict[str, str | None] = {"object": None}
-    for t in sorted(set(types.values())):
-        type_decl[t] = "object"
-    if prior is None:
-        domain = Domain(name=name, requirements=(":strips", ":typing", ":negative-preconditions"), types=type_decl,
-                        constants={}, predicates=predicates, actions=learned, path="<learned>")
-        invariants = proven_invariants(domain, types, observed_states(documents))
-        return drop_implied_negative_preconditions(domain, {a.name for a in learned}, invariants)
+    return predicates
+
+
+def _learned_into_prior(documents: list[tuple[str, dict]], prior: Domain, name: str, types: dict[str, str],
+                        type_decl: dict[str, str | None], predicates: dict[str, Predicate],
+                        learned: list[ActionSchema]) -> Domain:
+    """The learned skills simplified with invariants proven on the prior and them, then merged into the prior."""
     sources = ", ".join(dict.fromkeys(source for source, _ in documents))
     clash = sorted((set(types.values()) - {"object"}) & set(prior.predicates) | set(predicates) & set(prior.types))
     if clash:

@@ -103,6 +103,23 @@ class RelaxedExcuseTask:
         self.space = space
         task = space.task
         self.n_atoms = len(task.atoms)
+        pre, add = self._facts_and_actions(space)
+        self._relevant = space.relevant_atoms
+        self._goal_pos, self._goal_neg = task.goal_pos, task.goal_neg
+        self._index_tables(pre, add)
+        pos_id, neg_id = self._pos_id, self._neg_id
+        self.goal_list = [pos_id[i] for i in bits(task.goal_pos)] + [neg_id[i] for i in bits(task.goal_neg)]
+        self.neg_mask = space.negation_needed
+        self._group_charges_tables(space)
+        if not self.small:  # the numpy versions of the tables above
+            self.goal = np.array(self.goal_list, dtype=np.int64)
+            self.changeable = bitmask_to_array(space.changeable, self.n_atoms)
+            self.group_facts = [np.array(f, dtype=np.int64) for f in self.group_fact_lists]
+            self.fact_weight = np.array(self.fact_weight_list, dtype=np.float64)
+
+    def _facts_and_actions(self, space: ChangeSpace) -> tuple[list[list[int]], list[list[int]]]:
+        """Number the relevant facts (atoms, then negations needed) and list each relevant action's
+        precondition and add facts over them."""
         pos = list(bits(space.relevant_atoms))
         neg = list(bits(space.negation_needed))
         pos_id = {a: f for f, a in enumerate(pos)}
@@ -119,10 +136,12 @@ class RelaxedExcuseTask:
             adds = act.add_ids
             e += [neg_id[i] for i in act.delete_ids if i in neg_id and i not in adds]
             add.append(e)
+        return pre, add
+
+    def _index_tables(self, pre: list[list[int]], add: list[list[int]]) -> None:
+        """Each fact's consumers and achievers, as lists, and as numpy arrays on large tasks."""
         n_actions = len(pre)
         self.n_actions = n_actions
-        self._relevant = space.relevant_atoms
-        self._goal_pos, self._goal_neg = task.goal_pos, task.goal_neg
         prec_of: list[list[int]] = [[] for _ in range(self.n_facts)]
         achievers: list[list[int]] = [[] for _ in range(self.n_facts)]
         for ai, p in enumerate(pre):
@@ -139,7 +158,7 @@ class RelaxedExcuseTask:
         self.prec_of_lists, self.achiever_lists = prec_of, achievers
         if not self.small:
             load_numpy()
-            self.fact_atom = np.array(pos + neg, dtype=np.int64)
+            self.fact_atom = np.array(self.fact_atom_list, dtype=np.int64)
             self.pre_ptr, self.pre_flat = _csr(pre)
             self.add_ptr, self.add_flat = _csr(add)
             self.n_pre = np.diff(self.pre_ptr)
@@ -148,14 +167,16 @@ class RelaxedExcuseTask:
             self.ach_ptr, self.ach_flat = _csr(achievers)
             self.free_actions = np.flatnonzero(self.n_pre == 0)
             self.nonempty = np.flatnonzero(self.n_pre > 0)
-        self.goal_list = [pos_id[i] for i in bits(task.goal_pos)] + [neg_id[i] for i in bits(task.goal_neg)]
-        self.neg_mask = space.negation_needed
+
+    def _group_charges_tables(self, space: ChangeSpace) -> None:
+        """The mutex groups' facts and the scaled fact weights the forced-removal charges need."""
         # Consistent semantics: making an atom of a mutex group true forces the
         # removal of the group's true atom q.  That removal is charged to the
         # change, split over the k groups q belongs to (so it is never charged
         # more than once in total): costs are scaled by lcm(k) to stay integral.
         # Landmark cost shares then include these charges, so a child whose
         # change removes such a q must not inherit them (see strategies.py).
+        pos_id = self._pos_id
         self.groups = [g.mask for g in space.groups]
         membership: dict[int, int] = {}
         for mask in self.groups:
@@ -166,11 +187,6 @@ class RelaxedExcuseTask:
         self.group_fact_lists = [[pos_id[i] for i in bits(mask) if i in pos_id] for mask in self.groups]
         # Only the facts' weights matter (the task may have many irrelevant atoms).
         self.fact_weight_list = [float(space.weights.get(a, 0) * self.scale) for a in self.fact_atom_list]
-        if not self.small:  # the numpy versions of the tables above
-            self.goal = np.array(self.goal_list, dtype=np.int64)
-            self.changeable = bitmask_to_array(space.changeable, self.n_atoms)
-            self.group_facts = [np.array(f, dtype=np.int64) for f in self.group_fact_lists]
-            self.fact_weight = np.array(self.fact_weight_list, dtype=np.float64)
 
     def _initial_lists(self, state: int, changes: int) -> tuple[list[bool], list[float]]:
         """:meth:`_initial` on plain lists, for small tasks (no numpy call overhead).

@@ -515,10 +515,9 @@ def read_problem(src: SourceMap, path: str, domain: Domain) -> Problem | None:
 
 def _problem(src: SourceMap, path: str, domain: Domain) -> Problem:
     from fast_downward.translate import pddl
-    from fast_downward.translate.pddl_parser.parsing_functions import Context
 
     lists = _nested(src.define())
-    # (define (problem N) (:domain D) [(:requirements ..)] [(:objects ..)] (:init ..) (:goal G))
+    # (define (problem N) (:domain D) [(:requirements ..)] [(:objects ..)] (:init ..) (:goal G) [(:metric ..)])
     if (len(lists) < 5 or lists[0] != "define" or not isinstance(lists[1], list) or lists[1][:1] != ["problem"]
             or len(lists[1]) != 2 or not isinstance(lists[2], list) or lists[2][:1] != [":domain"]):
         raise _NotPlain("header")
@@ -526,36 +525,8 @@ def _problem(src: SourceMap, path: str, domain: Domain) -> Problem:
     metric = lists[-1] == [":metric", "minimize", [TOTAL_COST]]
     if metric:
         lists = lists[:-1]
-    init_section, goal_section = lists[-2], lists[-1]
-    if (not isinstance(init_section, list) or init_section[:1] != [":init"] or not isinstance(goal_section, list)
-            or goal_section[:1] != [":goal"] or len(goal_section) != 2):
-        raise _NotPlain("init and goal")
-    middle = lists[3:-2]
-    _sections_in_order(middle, _PROBLEM_SECTIONS)
-    objects_section = next((e for e in middle if e[0] == ":objects"), None)
-    if objects_section is not None:
-        _typed_list(objects_section[1:])
-    for fact in init_section[1:]:
-        if isinstance(fact, list) and fact[:1] == ["="]:
-            _assignment_shape(fact, domain)
-            continue
-        if not isinstance(fact, list) or not fact or fact[0] == "not":
-            raise _NotPlain("negative initial facts")
-        _atom_shape(fact)
-    if not goal_section[1]:
-        raise _NotPlain("empty goal")
-    _condition_shape(goal_section[1])
-    type_dict = {tname: pddl.Type(tname, parent) for tname, parent in domain.types.items()}
-    predicate_dict = {pname: pddl.Predicate(pname, [pddl.TypedObject(p, t) for p, t in pred.params])
-                      for pname, pred in domain.predicates.items()}
-    predicate_dict[EQUALITY] = pddl.Predicate(EQUALITY, [pddl.TypedObject("?x", "object"),
-                                                         pddl.TypedObject("?y", "object")])
-    pf = _translator()
-    full = lists + [[":metric", "minimize", [TOTAL_COST]]] if metric else lists
-    (_, domain_name, _, fd_objects, fd_init, fd_goal, use_metric) = pf.parse_problem_pddl(
-        Context(), full, type_dict, predicate_dict, set(domain.constants))
-    if use_metric != metric or (metric and TOTAL_COST not in domain.functions):
-        raise _NotPlain("metric")
+    init_section = _problem_shape(lists, domain)
+    domain_name, fd_objects, fd_init, fd_goal = _translate_problem(lists, domain, metric)
     _unique([o.name for o in fd_objects])
     objects = {o.name: o.type_name for o in fd_objects}
     if set(objects) & (set(domain.constants) | set(domain.predicates) | set(domain.functions)):
@@ -576,6 +547,48 @@ def _problem(src: SourceMap, path: str, domain: Domain) -> Problem:
     _check_literals(init + goal, terms, domain.predicates, checker)
     return Problem(name=name, domain_name=domain_name, objects=objects, init=frozenset(l.atom for l in init),
                    goal=tuple(goal), path=path, spellings=src.spellings(), function_values=values, metric=metric)
+
+
+def _problem_shape(lists: list[Any], domain: Domain) -> list[Any]:
+    """The problem's sections in the shape tarski's grammar has them (the metric taken off); its ``:init``."""
+    init_section, goal_section = lists[-2], lists[-1]
+    if (not isinstance(init_section, list) or init_section[:1] != [":init"] or not isinstance(goal_section, list)
+            or goal_section[:1] != [":goal"] or len(goal_section) != 2):
+        raise _NotPlain("init and goal")
+    middle = lists[3:-2]
+    _sections_in_order(middle, _PROBLEM_SECTIONS)
+    objects_section = next((e for e in middle if e[0] == ":objects"), None)
+    if objects_section is not None:
+        _typed_list(objects_section[1:])
+    for fact in init_section[1:]:
+        if isinstance(fact, list) and fact[:1] == ["="]:
+            _assignment_shape(fact, domain)
+            continue
+        if not isinstance(fact, list) or not fact or fact[0] == "not":
+            raise _NotPlain("negative initial facts")
+        _atom_shape(fact)
+    if not goal_section[1]:
+        raise _NotPlain("empty goal")
+    _condition_shape(goal_section[1])
+    return init_section
+
+
+def _translate_problem(lists: list[Any], domain: Domain, metric: bool) -> tuple[str, list[Any], list[Any], Any]:
+    """The translator's reading of the problem against ``domain``: (domain name, objects, init, goal)."""
+    from fast_downward.translate import pddl
+    from fast_downward.translate.pddl_parser.parsing_functions import Context
+
+    type_dict = {tname: pddl.Type(tname, parent) for tname, parent in domain.types.items()}
+    predicate_dict = {pname: pddl.Predicate(pname, [pddl.TypedObject(p, t) for p, t in pred.params])
+                      for pname, pred in domain.predicates.items()}
+    predicate_dict[EQUALITY] = pddl.Predicate(EQUALITY, [pddl.TypedObject("?x", "object"),
+                                                         pddl.TypedObject("?y", "object")])
+    full = lists + [[":metric", "minimize", [TOTAL_COST]]] if metric else lists
+    (_, domain_name, _, fd_objects, fd_init, fd_goal, use_metric) = _translator().parse_problem_pddl(
+        Context(), full, type_dict, predicate_dict, set(domain.constants))
+    if use_metric != metric or (metric and TOTAL_COST not in domain.functions):
+        raise _NotPlain("metric")
+    return domain_name, fd_objects, fd_init, fd_goal
 
 
 def _assignment_shape(fact: list[Any], domain: Domain) -> None:

@@ -407,10 +407,7 @@ def _tarski_parse(reader, kind: str, src: SourceMap, rewrite: _Rewrite) -> None:
 
 
 def _tarski_parse_text(reader, kind: str, src: SourceMap, rewrite: _Rewrite) -> None:
-    from tarski import errors as terr
-
     text, inserts = _tarski_text(src, kind, rewrite)
-    orig = rewrite.in_message
     if _FINAL_COMMENT.search(text):
         # A line comment may end the file (PDDL comments run to the end of the
         # line); tarski's lexer wants a line break after it.  Adding one moves no token.
@@ -422,67 +419,66 @@ def _tarski_parse_text(reader, kind: str, src: SourceMap, rewrite: _Rewrite) -> 
                 reader.parse_domain_string(without_comments(text))
             else:
                 reader.parse_instance_string(without_comments(text))
-    except GuidedLfdError:
-        raise
-    except terr.UndefinedSort as exc:
-        name = orig(_element_name(exc))
-        raise PddlSemanticError(
-            f"unknown type '{name}' (expected a type declared in :types)", src.locate(name, ":types", ":objects", ":constants")
-        ) from None
-    except terr.UndefinedPredicate as exc:
-        name = orig(_element_name(exc))
-        raise PddlSemanticError(
-            f"unknown predicate '{name}' (expected a predicate declared in the domain's :predicates)",
-            src.locate_head(name, ":init", ":goal", ":action"),
-        ) from None
-    except terr.UndefinedConstant as exc:
-        name = orig(_element_name(exc))
-        raise PddlSemanticError(
-            f"unknown object '{name}' (expected an object declared in :objects or a domain constant)",
-            src.locate_argument(name, ":init", ":goal", ":action"),
-        ) from None
-    except terr.UndefinedElement as exc:
-        name = orig(_element_name(exc))
-        raise PddlSemanticError(f"unknown name '{name}'", src.locate_argument(name, ":init", ":goal", ":action")) from None
-    except terr.ArityMismatch as exc:
-        text = str(exc)
-        match = re.search(r"element (\S+)/(\d+)", text)
-        pred = match.group(1) if match else "?"
-        arity = match.group(2) if match else "?"
-        raise PddlSemanticError(
-            f"wrong number of arguments for '{pred}' (expected {arity})",
-            _locate_application(src, pred, int(arity) if arity.isdigit() else None),
-        ) from None
-    except terr.SortMismatch as exc:
-        match = re.search(r'element (\S+?)\.? Expected sort was "([^"]*)", element has sort "([^"]*)"', str(exc))
-        if match:
-            # Sorts of variables come as 'Sort(name)'.
-            expected, actual = (re.sub(r"^Sort\((.*)\)$", r"\1", match.group(k)) for k in (2, 3))
-            element, expected, actual = orig(match.group(1)), orig(expected), orig(actual)
-            element = element.split("(")[0]
-            raise PddlSemanticError(
-                f"'{element}' is a {actual}, expected a {expected}", src.locate_argument(element, ":init", ":goal")
-            ) from None
-        raise PddlSemanticError(f"type mismatch: {exc}", src.location(src.define().line, src.define().col)) from None
-    except terr.DuplicateDefinition as exc:
-        name = orig(str(getattr(exc, "name", _element_name(exc))))
-        raise PddlSemanticError(
-            f"'{name}' is declared twice (expected each type, constant, object, predicate and action name once)",
-            src.locate_second(name),
-        ) from None
+    except (GuidedLfdError, MemoryError):
+        raise  # ours (a time limit too), or a resource limit: not a syntax error
     except RecursionError:
         raise PddlSyntaxError("nested too deeply to parse", src.location(src.define().line, src.define().col)) from None
-    except (MemoryError, SearchTimeout):
-        raise  # a resource or time limit, not a syntax error
-    except Exception as exc:  # tarski's ParsingError and anything else it raises
-        exc = _as_written(exc, text, kind)
-        text = str(exc).split("\n")[0] if str(exc) else type(exc).__name__
-        match = _TARSKI_POS.search(text)
-        if match:
-            line, col = _as_in_source(int(match.group(1)), int(match.group(2)) + 1, inserts)
-            rest = match.group(3)
-            raise PddlSyntaxError(f"{rest} (expected a well-formed PDDL {kind})", src.location(line, col)) from None
-        raise PddlSyntaxError(f"cannot parse {kind}: {text}", src.location(src.define().line, src.define().col)) from None
+    except Exception as exc:  # tarski's errors, ParsingError and anything else it raises
+        raise _semantic_error(exc, src, rewrite.in_message) or _syntax_error(exc, src, text, kind, inserts) from None
+
+
+def _semantic_error(exc: Exception, src: SourceMap, orig) -> PddlSemanticError | None:
+    """Tarski's semantic error ``exc`` as a one-line error at its place (names as written); None for others."""
+    from tarski import errors as terr
+
+    if isinstance(exc, terr.UndefinedSort):
+        name = orig(_element_name(exc))
+        return PddlSemanticError(f"unknown type '{name}' (expected a type declared in :types)",
+                                 src.locate(name, ":types", ":objects", ":constants"))
+    if isinstance(exc, terr.UndefinedPredicate):
+        name = orig(_element_name(exc))
+        return PddlSemanticError(f"unknown predicate '{name}' (expected a predicate declared in the domain's "
+                                 ":predicates)", src.locate_head(name, ":init", ":goal", ":action"))
+    if isinstance(exc, terr.UndefinedConstant):
+        name = orig(_element_name(exc))
+        return PddlSemanticError(f"unknown object '{name}' (expected an object declared in :objects or a domain "
+                                 "constant)", src.locate_argument(name, ":init", ":goal", ":action"))
+    if isinstance(exc, terr.UndefinedElement):
+        name = orig(_element_name(exc))
+        return PddlSemanticError(f"unknown name '{name}'", src.locate_argument(name, ":init", ":goal", ":action"))
+    if isinstance(exc, terr.ArityMismatch):
+        match = re.search(r"element (\S+)/(\d+)", str(exc))
+        pred = match.group(1) if match else "?"
+        arity = match.group(2) if match else "?"
+        return PddlSemanticError(f"wrong number of arguments for '{pred}' (expected {arity})",
+                                 _locate_application(src, pred, int(arity) if arity.isdigit() else None))
+    if isinstance(exc, terr.SortMismatch):
+        match = re.search(r'element (\S+?)\.? Expected sort was "([^"]*)", element has sort "([^"]*)"', str(exc))
+        if not match:
+            return PddlSemanticError(f"type mismatch: {exc}", src.location(src.define().line, src.define().col))
+        # Sorts of variables come as 'Sort(name)'.
+        expected, actual = (re.sub(r"^Sort\((.*)\)$", r"\1", match.group(k)) for k in (2, 3))
+        element, expected, actual = orig(match.group(1)), orig(expected), orig(actual)
+        element = element.split("(")[0]
+        return PddlSemanticError(f"'{element}' is a {actual}, expected a {expected}",
+                                 src.locate_argument(element, ":init", ":goal"))
+    if isinstance(exc, terr.DuplicateDefinition):
+        name = orig(str(getattr(exc, "name", _element_name(exc))))
+        return PddlSemanticError(f"'{name}' is declared twice (expected each type, constant, object, predicate and "
+                                 "action name once)", src.locate_second(name))
+    return None
+
+
+def _syntax_error(exc: Exception, src: SourceMap, text: str, kind: str,
+                  inserts: list[tuple[int, int, int]]) -> PddlSyntaxError:
+    """Tarski's syntax error (or anything else it raised) as a one-line error at its place in the file."""
+    exc = _as_written(exc, text, kind)
+    first = str(exc).split("\n")[0] if str(exc) else type(exc).__name__
+    match = _TARSKI_POS.search(first)
+    if match:
+        line, col = _as_in_source(int(match.group(1)), int(match.group(2)) + 1, inserts)
+        return PddlSyntaxError(f"{match.group(3)} (expected a well-formed PDDL {kind})", src.location(line, col))
+    return PddlSyntaxError(f"cannot parse {kind}: {first}", src.location(src.define().line, src.define().col))
 
 
 def _as_written(exc: Exception, text: str, kind: str) -> Exception:
