@@ -31,9 +31,20 @@ def test_write_through_symlink_keeps_the_link(tmp_path):
     assert link.is_symlink() and target.read_text() == "new"
 
 
-def test_write_to_device_writes_in_place():
+def test_write_to_device_writes_in_place(tmp_path):
+    """A device or FIFO is written in place, never replaced by a regular file (and gets the whole text)."""
+    import threading
+
     write_text("/dev/null", "data")
     assert stat.S_ISCHR(os.stat("/dev/null").st_mode)
+    fifo = tmp_path / "pipe"
+    os.mkfifo(fifo)
+    received: list[str] = []
+    reader = threading.Thread(target=lambda: received.append(fifo.read_text()))
+    reader.start()
+    write_text(fifo, "data through a pipe\n")
+    reader.join(timeout=10)
+    assert received == ["data through a pipe\n"] and stat.S_ISFIFO(os.stat(fifo).st_mode)
 
 
 def test_write_keeps_permissions(tmp_path):
