@@ -7,7 +7,8 @@ from pathlib import Path
 from typing import Any, Callable
 
 from guided_lfd.benchmark.results import SOLVED
-from guided_lfd.benchmark.analysis import NONTRIVIAL_S, SIZE_BUCKETS, compare, speedups_by_size, suite_part, whole_run_s
+from guided_lfd.benchmark.analysis import (NONTRIVIAL_S, SIZE_BUCKETS, Comparison, compare, speedups_by_size,
+                                           suite_part, whole_run_s)
 from guided_lfd.reporting import markdown_table, plots_markdown, pyplot, save_figure
 
 #: Resolution of the benchmark's PNG plots.
@@ -110,7 +111,21 @@ def summary_markdown(rows: list[dict[str, Any]], time_limit: float, command: str
     """The markdown summary: coverage table, speed-ups, agreement, plots (None: skipped, the section says so)."""
     comps = compare(rows, time_limit=time_limit)
     domains = sorted({r["domain"] for r in rows})
-    lines = [
+    lines = _overview_section(rows, comps, domains, time_limit, command)
+    lines += _parts_table(rows) + _limit_section(rows, time_limit)
+    lines += _domain_coverage_section(rows, domains)
+    lines += _size_speedup_section(rows)
+    lines += _sizes_found_section(rows)
+    lines += _agreement_section(comps)
+    lines += _validation_section(rows)
+    lines += [""] + plots_markdown(plots, base)
+    return "\n".join(lines) + "\n"
+
+
+def _overview_section(rows: list[dict[str, Any]], comps: list[Comparison], domains: list[str], time_limit: float,
+                      command: str) -> list[str]:
+    """Title, how to regenerate, what the numbers mean, and the landmark-vs-baseline table per semantics."""
+    return [
         "# Excuse benchmark",
         "",
         f"Regenerate with: `{command}`",
@@ -143,7 +158,10 @@ def summary_markdown(rows: list[dict[str, Any]], time_limit: float, command: str
               f"{c.median_nontrivial_speedup:.1f}x", c.large_default, c.large_baseline, len(c.size_mismatches)]
              for c in comps]),
     ]
-    lines += _parts_table(rows) + _limit_section(rows, time_limit)
+
+
+def _domain_coverage_section(rows: list[dict[str, Any]], domains: list[str]) -> list[str]:
+    """Solved tasks per domain, for each semantics and strategy."""
     columns = [(se, st) for se in ("literal", "consistent") for st in ("landmark", "baseline")]
     coverage = []
     for dom in domains:
@@ -151,35 +169,51 @@ def summary_markdown(rows: list[dict[str, Any]], time_limit: float, command: str
         coverage.append([dom, len(ids)] + [
             sum(1 for r in rows if r["domain"] == dom and r["semantics"] == se and r["strategy"] == st
                 and r["status"] in SOLVED) for se, st in columns])
-    lines += ["", "## Coverage per domain", "",
-              markdown_table(["domain", "tasks"] + [f"{st} {se}" for se, st in columns], coverage)]
+    return ["", "## Coverage per domain", "",
+            markdown_table(["domain", "tasks"] + [f"{st} {se}" for se, st in columns], coverage)]
+
+
+def _size_speedup_section(rows: list[dict[str, Any]]) -> list[str]:
+    """Median search speed-up per minimal excuse size bucket and semantics."""
     by_size = speedups_by_size(rows)
-    lines += ["", "## Median search speed-up by minimal excuse size", "",
-              "On the tasks both strategies solve; each cell is the median and, in brackets, the number of tasks.",
-              "", markdown_table(
-                  ["semantics"] + [f"size {b}" if b != "none" else "no excuse" for b in SIZE_BUCKETS],
-                  [[se] + [f"{statistics.median(v):.0f}x ({len(v)})" if (v := by_size[se].get(b)) else "-"
-                           for b in SIZE_BUCKETS] for se in sorted(by_size)])]
+    return ["", "## Median search speed-up by minimal excuse size", "",
+            "On the tasks both strategies solve; each cell is the median and, in brackets, the number of tasks.",
+            "", markdown_table(
+                ["semantics"] + [f"size {b}" if b != "none" else "no excuse" for b in SIZE_BUCKETS],
+                [[se] + [f"{statistics.median(v):.0f}x ({len(v)})" if (v := by_size[se].get(b)) else "-"
+                         for b in SIZE_BUCKETS] for se in sorted(by_size)])]
+
+
+def _sizes_found_section(rows: list[dict[str, Any]]) -> list[str]:
+    """How many minimal excuses of each size (1 to 6+) the landmark strategy found, per semantics."""
     sizes: dict[str, int] = {}
     for r in rows:
         if r["strategy"] == "landmark" and r["status"] == "excuse-found":
             key = str(min(int(r["size"]), 6)) if int(r["size"]) < 6 else "6+"
             sizes[f"{r['semantics']} {key}"] = sizes.get(f"{r['semantics']} {key}", 0) + 1
     keys = ["1", "2", "3", "4", "5", "6+"]
-    lines += ["", "## Minimal excuse sizes found (landmark)", "",
-              markdown_table(["semantics"] + keys,
-                             [[se] + [sizes.get(f"{se} {k}", 0) for k in keys] for se in ("literal", "consistent")])]
+    return ["", "## Minimal excuse sizes found (landmark)", "",
+            markdown_table(["semantics"] + keys,
+                           [[se] + [sizes.get(f"{se} {k}", 0) for k in keys] for se in ("literal", "consistent")])]
+
+
+def _agreement_section(comps: list[Comparison]) -> list[str]:
+    """Whether both strategies agree on status and minimal size, or the list of disagreements."""
     mism = [m for c in comps if c.semantics != "both" for m in c.size_mismatches]
-    lines += ["", "## Size agreement", "",
-              "Every task both strategies solved has the same status and minimal size."
-              if not mism else "Disagreements:\n\n" + "\n".join(f"- {m}" for m in mism)]
+    return ["", "## Size agreement", "",
+            "Every task both strategies solved has the same status and minimal size."
+            if not mism else "Disagreements:\n\n" + "\n".join(f"- {m}" for m in mism)]
+
+
+def _validation_section(rows: list[dict[str, Any]]) -> list[str]:
+    """The independent check of every excuse, the runs that ended in an error or crash, and the memouts."""
     errors = [r for r in rows if r["status"] in ("error", "crashed")]
     found = sum(r["status"] == "excuse-found" for r in rows)
-    lines += ["", "## Validation", "",
-              f"Every run re-checks each excuse it returns with the independent checker "
-              f"(`guided_lfd.excuse.check`: the excuse state does not already satisfy the goal, keeps the invariants under the "
-              f"consistent semantics, and the robot's plan from it validates); a failed check ends the run "
-              f"as an error. Runs that returned an excuse: {found}; runs that ended in an error or crash: {len(errors)}."]
+    lines = ["", "## Validation", "",
+             f"Every run re-checks each excuse it returns with the independent checker "
+             f"(`guided_lfd.excuse.check`: the excuse state does not already satisfy the goal, keeps the invariants under the "
+             f"consistent semantics, and the robot's plan from it validates); a failed check ends the run "
+             f"as an error. Runs that returned an excuse: {found}; runs that ended in an error or crash: {len(errors)}."]
     if errors:
         lines += [""] + [f"- {r['id']} {r['strategy']} {r['semantics']}: {r['status']}"
                          + (f" ({r['excuse']})" if r["excuse"] else "") for r in errors]
@@ -187,5 +221,4 @@ def summary_markdown(rows: list[dict[str, Any]], time_limit: float, command: str
     if memouts:
         lines += ["", f"Runs that exceeded the memory cap (memout, counted as unsolved): {len(memouts)}.", ""]
         lines += [f"- {r['id']} {r['strategy']} {r['semantics']}" for r in memouts]
-    lines += [""] + plots_markdown(plots, base)
-    return "\n".join(lines) + "\n"
+    return lines

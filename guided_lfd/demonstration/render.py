@@ -128,42 +128,7 @@ def render(steps: list[Step], scene: Scene, initial: set[Atom], rate_hz: float =
         frames[hand] = first + n
         times = dt * np.arange(first, first + n)
         s = np.linspace(0.0, 1.0, n)
-        start = hand_pos[hand].copy()
-        grip, in_hand, act_on = False, "", step.obj
-        label = step.activity
-        if step.activity == "Reach":
-            path = minimum_jerk(start, np.array(scene.positions[step.obj]), s)
-        elif step.activity == "Take":
-            path = np.repeat(start[None, :], n, axis=0)
-            grip, in_hand, act_on = True, step.obj, step.obj
-            held[hand] = step.obj
-        elif step.activity == "Put":
-            goal = np.array(scene.positions[step.target]) + np.array([0.0, 0.0, 0.05])
-            path = minimum_jerk(start, goal, s)
-            grip, in_hand, act_on = True, step.obj, step.target
-        elif step.activity == "Release":
-            path = minimum_jerk(start, np.array(scene.rest[hand]), s)
-            in_hand, act_on = "", ""
-            held[hand] = ""
-        elif step.activity in ("Open", "Close"):
-            direction = np.array(scene.pull) * (1 if step.activity == "Open" else -1)
-            path = minimum_jerk(start, start + direction, s)
-            grip, act_on = True, step.obj
-        elif step.activity == "Push":
-            goal = np.array(scene.positions[step.target]) + np.array([0.0, -0.4, 0.0])
-            path = minimum_jerk(start, goal, s)
-            grip, act_on = True, step.obj
-        elif step.activity == "Idle":
-            act_on = ""
-            if held[hand]:
-                # Holding still keeps the object (the activity model calls it Take).
-                path = np.repeat(start[None, :], n, axis=0)
-                grip, in_hand, label = True, held[hand], "Take"
-            else:
-                path = minimum_jerk(start, np.array(scene.rest[hand]), np.clip(s * 3, 0, 1))
-                label = "Idle"
-        else:
-            raise ValueError(f"cannot render activity {step.activity!r}")
+        path, grip, in_hand, act_on, label = _motion(step, hand, hand_pos[hand].copy(), s, n, scene, held)
         if step.activity == "Release":
             # The object is registered where it was put as the hand lets go.
             events += [(float(times[0]) + 1e-3, atom, value) for atom, value in step.changes]
@@ -180,6 +145,48 @@ def render(steps: list[Step], scene: Scene, initial: set[Atom], rate_hz: float =
         rows += [(float(dt * k), hand, *track[k]) for k in range(end)]
     return Rendering(_trace_csv(rows, scene, noise, rng), _state_csv(scene, initial, events),
                      _labels_csv(rows), steps)
+
+
+def _motion(step: Step, hand: str, start: np.ndarray, s: np.ndarray, n: int, scene: Scene,
+            held: dict[str, str]) -> tuple[np.ndarray, bool, str, str, str]:
+    """The ``n`` positions of ``hand`` during ``step`` from ``start`` (phases ``s``), its grip, held object, target
+    and ground-truth label; updates ``held`` when the step takes or releases an object."""
+    grip, in_hand, act_on = False, "", step.obj
+    label = step.activity
+    if step.activity == "Reach":
+        path = minimum_jerk(start, np.array(scene.positions[step.obj]), s)
+    elif step.activity == "Take":
+        path = np.repeat(start[None, :], n, axis=0)
+        grip, in_hand, act_on = True, step.obj, step.obj
+        held[hand] = step.obj
+    elif step.activity == "Put":
+        goal = np.array(scene.positions[step.target]) + np.array([0.0, 0.0, 0.05])
+        path = minimum_jerk(start, goal, s)
+        grip, in_hand, act_on = True, step.obj, step.target
+    elif step.activity == "Release":
+        path = minimum_jerk(start, np.array(scene.rest[hand]), s)
+        in_hand, act_on = "", ""
+        held[hand] = ""
+    elif step.activity in ("Open", "Close"):
+        direction = np.array(scene.pull) * (1 if step.activity == "Open" else -1)
+        path = minimum_jerk(start, start + direction, s)
+        grip, act_on = True, step.obj
+    elif step.activity == "Push":
+        goal = np.array(scene.positions[step.target]) + np.array([0.0, -0.4, 0.0])
+        path = minimum_jerk(start, goal, s)
+        grip, act_on = True, step.obj
+    elif step.activity == "Idle":
+        act_on = ""
+        if held[hand]:
+            # Holding still keeps the object (the activity model calls it Take).
+            path = np.repeat(start[None, :], n, axis=0)
+            grip, in_hand, label = True, held[hand], "Take"
+        else:
+            path = minimum_jerk(start, np.array(scene.rest[hand]), np.clip(s * 3, 0, 1))
+            label = "Idle"
+    else:
+        raise ValueError(f"cannot render activity {step.activity!r}")
+    return path, grip, in_hand, act_on, label
 
 
 def _wait(track: dict[int, tuple], first: int, last: int, pos: np.ndarray, held: str) -> None:

@@ -37,72 +37,91 @@ _OBJECT = re.compile(r"[^\s()?][^\s()]*")
 
 def document_defect(doc: dict) -> tuple[tuple, str] | None:
     """The first thing that keeps ``doc`` from being a usable segments document: (JSON path, what was expected)."""
-    def show(value) -> str:
-        import json
-
-        text = json.dumps(value, ensure_ascii=False)
-        return text if len(text) <= 60 else text[:57] + "..."
-
-    arity: dict[str, int] = {}
-
-    def atoms(keys: tuple, value) -> tuple[tuple, str] | None:
-        if not isinstance(value, list):
-            return keys, f"expected a list of fluents like \"(open pinkdrawer)\", got {show(value)}"
-        for k, text in enumerate(value):
-            match = _ATOM_TEXT.fullmatch(text.strip()) if isinstance(text, str) else None
-            if match is None or any(a.startswith("?") for a in match.group(2).split()):
-                return keys + (k,), f"expected a fluent like \"(open pinkdrawer)\", got {show(text)}"
-            why = pddl_name_defect(match.group(1))
-            if why:
-                return keys + (k,), f"predicate {show(match.group(1))}: expected {why}"
-            n = len(match.group(2).split())
-            if arity.setdefault(match.group(1), n) != n:
-                return keys + (k,), (f"{match.group(1)} has {n} argument(s) here and {arity[match.group(1)]} "
-                                     "elsewhere; expected the same number")
-        return None
-
+    arity: dict[str, int] = {}  # predicate -> number of arguments, from the first fluent naming it
     objects = doc.get("objects", {})
-    if not isinstance(objects, dict):
-        return ("objects",), f"expected an object mapping object names to types, got {show(objects)}"
-    for obj, kind in objects.items():
-        if not _OBJECT.fullmatch(obj):
-            return ("objects",), f"object name {show(obj)}: expected no blanks or parentheses"
-        why = "a string" if not isinstance(kind, str) else pddl_name_defect(kind) if kind != "object" else None
-        if why:
-            return ("objects", obj), f"type of {obj}: expected {why}, got {show(kind)}"
+    found = _objects_defect(objects)
+    if found:
+        return found
     if "initial" in doc:
-        found = atoms(("initial",), doc["initial"])
+        found = _fluents_defect(("initial",), doc["initial"], arity)
         if found:
             return found
     segments = doc.get("segments", [])
     if not isinstance(segments, list):
-        return ("segments",), f"expected a list of segments, got {show(segments)}"
+        return ("segments",), f"expected a list of segments, got {_show(segments)}"
     for i, seg in enumerate(segments):
-        here = ("segments", i)
-        if not isinstance(seg, dict):
-            return here, f"expected a segment (an object with index, hand, activity, before, after), got {show(seg)}"
-        for key in ("index", "hand", "activity", "before", "after"):
-            if key not in seg:
-                return here, f"missing key '{key}' (expected index, hand, activity, before, after)"
-        if not isinstance(seg["index"], int) or isinstance(seg["index"], bool):
-            return here + ("index",), f"expected a whole number, got {show(seg['index'])}"
-        if not isinstance(seg["hand"], str):
-            return here + ("hand",), f"expected left or right, got {show(seg['hand'])}"
-        activity = seg["activity"]
-        why = "a string" if not isinstance(activity, str) else pddl_name_defect(activity.lower())
-        if why:
-            return here + ("activity",), f"expected an activity name, {why}, got {show(activity)}"
-        for key in ("object", "target", "held_before", "held_after"):
-            value = seg.get(key)
-            if value is not None and not (isinstance(value, str) and (value == "" or _OBJECT.fullmatch(value))):
-                return here + (key,), f"expected an object name or \"\", got {show(value)}"
-        for key in ("before", "after"):
-            found = atoms(here + (key,), seg[key])
-            if found:
-                return found
+        found = _segment_defect(("segments", i), seg, arity)
+        if found:
+            return found
     clash = sorted(set(objects.values()) & (set(arity) | set(HAND_PREDICATES)))
     if clash:
         return ("objects",), f"type '{clash[0]}' is also a predicate; expected distinct names"
+    return None
+
+
+def _show(value) -> str:
+    """``value`` as JSON for a message, cut to 60 characters."""
+    import json
+
+    text = json.dumps(value, ensure_ascii=False)
+    return text if len(text) <= 60 else text[:57] + "..."
+
+
+def _objects_defect(objects) -> tuple[tuple, str] | None:
+    """The first defect of the ``objects`` mapping (object names to PDDL type names), or None."""
+    if not isinstance(objects, dict):
+        return ("objects",), f"expected an object mapping object names to types, got {_show(objects)}"
+    for obj, kind in objects.items():
+        if not _OBJECT.fullmatch(obj):
+            return ("objects",), f"object name {_show(obj)}: expected no blanks or parentheses"
+        why = "a string" if not isinstance(kind, str) else pddl_name_defect(kind) if kind != "object" else None
+        if why:
+            return ("objects", obj), f"type of {obj}: expected {why}, got {_show(kind)}"
+    return None
+
+
+def _fluents_defect(keys: tuple, value, arity: dict[str, int]) -> tuple[tuple, str] | None:
+    """The first defect of the fluent list ``value`` at ``keys``, or None; records predicate arities in ``arity``
+    (a predicate must keep the arity it was first seen with)."""
+    if not isinstance(value, list):
+        return keys, f"expected a list of fluents like \"(open pinkdrawer)\", got {_show(value)}"
+    for k, text in enumerate(value):
+        match = _ATOM_TEXT.fullmatch(text.strip()) if isinstance(text, str) else None
+        if match is None or any(a.startswith("?") for a in match.group(2).split()):
+            return keys + (k,), f"expected a fluent like \"(open pinkdrawer)\", got {_show(text)}"
+        why = pddl_name_defect(match.group(1))
+        if why:
+            return keys + (k,), f"predicate {_show(match.group(1))}: expected {why}"
+        n = len(match.group(2).split())
+        if arity.setdefault(match.group(1), n) != n:
+            return keys + (k,), (f"{match.group(1)} has {n} argument(s) here and {arity[match.group(1)]} "
+                                 "elsewhere; expected the same number")
+    return None
+
+
+def _segment_defect(here: tuple, seg, arity: dict[str, int]) -> tuple[tuple, str] | None:
+    """The first defect of the segment ``seg`` at ``here`` (keys, their types, object names, its fluents), or None."""
+    if not isinstance(seg, dict):
+        return here, f"expected a segment (an object with index, hand, activity, before, after), got {_show(seg)}"
+    for key in ("index", "hand", "activity", "before", "after"):
+        if key not in seg:
+            return here, f"missing key '{key}' (expected index, hand, activity, before, after)"
+    if not isinstance(seg["index"], int) or isinstance(seg["index"], bool):
+        return here + ("index",), f"expected a whole number, got {_show(seg['index'])}"
+    if not isinstance(seg["hand"], str):
+        return here + ("hand",), f"expected left or right, got {_show(seg['hand'])}"
+    activity = seg["activity"]
+    why = "a string" if not isinstance(activity, str) else pddl_name_defect(activity.lower())
+    if why:
+        return here + ("activity",), f"expected an activity name, {why}, got {_show(activity)}"
+    for key in ("object", "target", "held_before", "held_after"):
+        value = seg.get(key)
+        if value is not None and not (isinstance(value, str) and (value == "" or _OBJECT.fullmatch(value))):
+            return here + (key,), f"expected an object name or \"\", got {_show(value)}"
+    for key in ("before", "after"):
+        found = _fluents_defect(here + (key,), seg[key], arity)
+        if found:
+            return found
     return None
 
 

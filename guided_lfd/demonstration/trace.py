@@ -168,6 +168,26 @@ def load_state(path: str, span: tuple[float, float] | None = None,
     """
     frame = _csv(read_text(path, "an environment state CSV (time,fluent,value)"), path, STATE_COLUMNS)
     times = _times(frame, path)
+    objects, spellings, type_row, rows = _state_rows(frame, times, path)
+    if not objects:
+        raise TraceError("no object(Name,type) rows: the scene's objects must be declared", Location(path, 1))
+    arity = _check_fluents(frame, path, objects, rows)
+    clash = sorted(set(objects.values()) & (set(arity) | set(HAND_PREDICATES)))
+    if clash:
+        raise TraceError(f"column 'fluent': type '{clash[0]}' is also a predicate; expected distinct names",
+                         _where(path, frame, type_row[clash[0]], "fluent"))
+    start = min((t for _, t, _, _ in rows), default=0.0)
+    if span is not None:
+        _check_span(frame, path, rows, start, span)
+    initial = frozenset(a for _, t, a, v in rows if t == start and v)
+    events = sorted(((t, a, v) for _, t, a, v in rows if t > start), key=lambda e: e[0])
+    return objects, initial, events, spellings
+
+
+def _state_rows(frame: pd.DataFrame, times: np.ndarray, path: str,
+                ) -> tuple[dict[str, str], dict[str, str], dict[str, int], list[tuple[int, float, Atom, bool]]]:
+    """Read every row of a state CSV: the declared objects, their spellings, the first row declaring each type,
+    and the fluent rows as (row, time, atom, value); TraceError on a row that is not one of those."""
     objects: dict[str, str] = {}
     spellings: dict[str, str] = {}
     type_row: dict[str, int] = {}  # the first row declaring an object of each type
@@ -183,21 +203,7 @@ def load_state(path: str, span: tuple[float, float] | None = None,
         if flag not in _TRUE | _FALSE:
             raise TraceError(f"column 'value': expected true or false, got '{value}'", _where(path, frame, i, "value"))
         if atom.predicate == "object":
-            if len(atom.args) != 2:
-                raise TraceError(f"column 'fluent': expected object(Name,type), got '{raw}'",
-                                 _where(path, frame, i, "fluent"))
-            name, kind = atom.args
-            why = pddl_name_defect(kind) if kind != "object" else None  # the root type
-            if why:
-                raise TraceError(f"column 'fluent': type '{kind}' of {name}: expected {why}",
-                                 _where(path, frame, i, "fluent"))
-            if objects.get(name, kind) != kind:
-                raise TraceError(f"column 'fluent': object '{name}' is declared as {objects[name]} and as {kind} "
-                                 "(names are case-insensitive); expected one type", _where(path, frame, i, "fluent"))
-            objects[name] = kind
-            type_row.setdefault(kind, i)
-            original = _FLUENT.match(raw).group(2).split(",")[0].strip()  # type: ignore[union-attr]
-            spellings[atom.args[0]] = original
+            _declare_object(frame, path, i, raw, atom, objects, spellings, type_row)
             continue
         why = pddl_name_defect(atom.predicate)
         if why:
@@ -207,8 +213,33 @@ def load_state(path: str, span: tuple[float, float] | None = None,
             raise TraceError(f"column 'fluent': {atom.predicate} is the hand's state, read from the trace's "
                              "in_hand column; expected an environment fluent", _where(path, frame, i, "fluent"))
         rows.append((i, float(t), atom, flag in _TRUE))
-    if not objects:
-        raise TraceError("no object(Name,type) rows: the scene's objects must be declared", Location(path, 1))
+    return objects, spellings, type_row, rows
+
+
+def _declare_object(frame: pd.DataFrame, path: str, i: int, raw: str, atom: Atom, objects: dict[str, str],
+                    spellings: dict[str, str], type_row: dict[str, int]) -> None:
+    """Record the ``object(Name,type)`` row ``i`` in ``objects``, ``spellings`` and ``type_row``; TraceError if
+    it has no two arguments, its type is no PDDL name, or it gives a declared object another type."""
+    if len(atom.args) != 2:
+        raise TraceError(f"column 'fluent': expected object(Name,type), got '{raw}'",
+                         _where(path, frame, i, "fluent"))
+    name, kind = atom.args
+    why = pddl_name_defect(kind) if kind != "object" else None  # the root type
+    if why:
+        raise TraceError(f"column 'fluent': type '{kind}' of {name}: expected {why}",
+                         _where(path, frame, i, "fluent"))
+    if objects.get(name, kind) != kind:
+        raise TraceError(f"column 'fluent': object '{name}' is declared as {objects[name]} and as {kind} "
+                         "(names are case-insensitive); expected one type", _where(path, frame, i, "fluent"))
+    objects[name] = kind
+    type_row.setdefault(kind, i)
+    original = _FLUENT.match(raw).group(2).split(",")[0].strip()  # type: ignore[union-attr]
+    spellings[atom.args[0]] = original
+
+
+def _check_fluents(frame: pd.DataFrame, path: str, objects: dict[str, str],
+                   rows: list[tuple[int, float, Atom, bool]]) -> dict[str, int]:
+    """Check that fluents name declared objects, keep one arity per predicate and one value per time; the arities."""
     for i, _, atom, _ in rows:
         for arg in atom.args:
             if arg not in objects:
@@ -224,20 +255,17 @@ def load_state(path: str, span: tuple[float, float] | None = None,
         if value_at.setdefault((t, atom), value) != value:
             raise TraceError(f"column 'value': {frame['fluent'].iloc[i].strip()} is set both true and false "
                              f"at {t:g} s; expected one value", _where(path, frame, i, "value"))
-    clash = sorted(set(objects.values()) & (set(arity) | set(HAND_PREDICATES)))
-    if clash:
-        raise TraceError(f"column 'fluent': type '{clash[0]}' is also a predicate; expected distinct names",
-                         _where(path, frame, type_row[clash[0]], "fluent"))
-    start = min((t for _, t, _, _ in rows), default=0.0)
-    if span is not None:
-        for i, t, _, _ in rows:
-            if t > start and not span[0] <= t <= span[1] + EFFECT_DELAY_S:
-                raise TraceError(f"column 'time': a change at {t:g} s, outside the trace ({span[0]:g} s to "
-                                 f"{span[1]:g} s), that no hand can have caused; expected a time within the trace",
-                                 _where(path, frame, i, "time"))
-    initial = frozenset(a for _, t, a, v in rows if t == start and v)
-    events = sorted(((t, a, v) for _, t, a, v in rows if t > start), key=lambda e: e[0])
-    return objects, initial, events, spellings
+    return arity
+
+
+def _check_span(frame: pd.DataFrame, path: str, rows: list[tuple[int, float, Atom, bool]], start: float,
+                span: tuple[float, float]) -> None:
+    """Check that every change after ``start`` falls within the trace's ``span`` (up to :data:`EFFECT_DELAY_S`)."""
+    for i, t, _, _ in rows:
+        if t > start and not span[0] <= t <= span[1] + EFFECT_DELAY_S:
+            raise TraceError(f"column 'time': a change at {t:g} s, outside the trace ({span[0]:g} s to "
+                             f"{span[1]:g} s), that no hand can have caused; expected a time within the trace",
+                             _where(path, frame, i, "time"))
 
 
 def load_demonstration(trace_path: str, state_path: str | None = None) -> Demonstration:
