@@ -9,7 +9,7 @@ it does.  Two exceptions:
 
 * a measured hot loop may stay long and must say so: a comment line starting
   with ``# Hot loop`` in the function's own body (not in a nested function);
-* :data:`LONG_FUNCTIONS_ALLOWED`, functions still being split elsewhere.
+* :data:`LONG_FUNCTIONS_ALLOWED`, functions not split yet (none today).
 """
 
 from __future__ import annotations
@@ -26,19 +26,10 @@ PACKAGES = ("guided_lfd", "cli")
 #: The marker that keeps a measured hot loop long on purpose.
 HOT_LOOP = "# Hot loop"
 
-#: Functions allowed to stay long for now, as ``path::qualified name``.  They are
-#: being split into named steps on another branch; each entry goes once its
-#: function is split, and the list is then empty.  An entry whose function is
-#: no longer long (or gone) fails test_allowlist_is_current, so the list only
-#: shrinks.
-LONG_FUNCTIONS_ALLOWED: frozenset[str] = frozenset({
-    "guided_lfd/excuse/strategies.py::LandmarkSearch.search",
-    "guided_lfd/excuse/lmcut.py::RelaxedExcuseTask.__init__",
-    "guided_lfd/demonstration/learn.py::learn_domain",
-    "guided_lfd/merge.py::merge_domains",
-    "guided_lfd/pddl/fast_reader.py::_problem",
-    "guided_lfd/pddl/reader.py::_tarski_parse_text",
-})
+#: Functions allowed to stay long for now, as ``path::qualified name`` (none: every long
+#: function has been split).  An entry whose function is no longer long (or gone) fails
+#: test_allowlist_is_current, so the list only shrinks.
+LONG_FUNCTIONS_ALLOWED: frozenset[str] = frozenset()
 
 _FUNCTIONS = (ast.FunctionDef, ast.AsyncFunctionDef)
 

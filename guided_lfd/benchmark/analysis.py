@@ -132,6 +132,15 @@ def size_bucket(row: dict[str, Any]) -> str:
     return str(size) if size <= 2 else ("3-5" if size <= 5 else "6+")
 
 
+#: Excuse sizes one by one, the last open-ended: the sizes-found table's columns.
+SIZE_COUNTS = ("1", "2", "3", "4", "5", "6+")
+
+
+def size_count_key(size: int) -> str:
+    """The :data:`SIZE_COUNTS` column of an excuse of ``size`` changes."""
+    return str(size) if size < 6 else "6+"
+
+
 def speedups_by_size(rows: list[dict[str, Any]], default: str = "landmark",
                      baseline: str = "baseline") -> dict[str, dict[str, list[float]]]:
     """Search speed-ups on the tasks both strategies solve, per semantics and excuse-size bucket."""

@@ -7,8 +7,8 @@ from pathlib import Path
 from typing import Any, Callable
 
 from guided_lfd.benchmark.results import SOLVED
-from guided_lfd.benchmark.analysis import (NONTRIVIAL_S, SIZE_BUCKETS, Comparison, compare, speedups_by_size,
-                                           suite_part, whole_run_s)
+from guided_lfd.benchmark.analysis import (NONTRIVIAL_S, SIZE_BUCKETS, SIZE_COUNTS, Comparison, compare, speedups_by_size,
+                                           size_count_key, suite_part, whole_run_s)
 from guided_lfd.reporting import markdown_table, plots_markdown, pyplot, save_figure
 
 #: Resolution of the benchmark's PNG plots.
@@ -189,9 +189,9 @@ def _sizes_found_section(rows: list[dict[str, Any]]) -> list[str]:
     sizes: dict[str, int] = {}
     for r in rows:
         if r["strategy"] == "landmark" and r["status"] == "excuse-found":
-            key = str(min(int(r["size"]), 6)) if int(r["size"]) < 6 else "6+"
+            key = size_count_key(int(r["size"]))
             sizes[f"{r['semantics']} {key}"] = sizes.get(f"{r['semantics']} {key}", 0) + 1
-    keys = ["1", "2", "3", "4", "5", "6+"]
+    keys = list(SIZE_COUNTS)
     return ["", "## Minimal excuse sizes found (landmark)", "",
             markdown_table(["semantics"] + keys,
                            [[se] + [sizes.get(f"{se} {k}", 0) for k in keys] for se in ("literal", "consistent")])]
