@@ -64,8 +64,6 @@ def bench(
     ipc = ipc or root / "data" / "benchmarks" / "ipc"
     suite = suite or root / "benchmarks" / "suite.csv"
     results = results or root / "benchmarks" / "results"
-    if memory_limit and executor == "dask":
-        ui.info("note: --memory-limit applies to local runs; Dask workers keep their own limits")
     if step == "generate":
         tasks_found = benchmark.generate_suite(ipc, root / "data" / "domains", tasks.split(","), log=ui.info_plain)
         benchmark.write_suite(tasks_found, suite, root)

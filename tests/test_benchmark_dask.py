@@ -67,3 +67,22 @@ def test_a_dead_workers_chain_keeps_its_resumed_rows(client, monkeypatch):
     monkeypatch.setattr(benchmark.runner, "run_chain", dies)
     rows = run_suite(suite, ["landmark"], ["consistent"], 30.0, executor="dask", scheduler=client, previous=earlier)
     assert rows == earlier  # resumed, not turned into 'crashed'
+
+
+def test_per_run_time_and_memory_limits_hold_under_dask(client, monkeypatch):
+    """The runs a Dask worker starts are capped and killed as local ones are (the cap is set on each run)."""
+    import sys
+
+    suite = _slice()[:2]
+    scripts = {
+        suite[0].id: "try:\n    bytearray(4 * 1024 ** 3)\nexcept MemoryError:\n    raise SystemExit(22)\n",
+        suite[1].id: "import time\ntime.sleep(30)\n",
+    }
+    monkeypatch.setattr(benchmark.runner, "command_line",
+                        lambda task, *args: [sys.executable, "-c", scripts[task.id]])
+    monkeypatch.setattr(benchmark.runner, "KILL_GRACE_S", 0.5)
+    rows = run_suite(suite, ["landmark"], ["consistent"], 1.0, executor="dask", scheduler=client,
+                     memory_limit_mb=1024)
+    by_id = {r["id"]: r for r in rows}
+    assert by_id[suite[0].id]["status"] == "memout"  # 4 GB under a 1 GiB cap
+    assert by_id[suite[1].id]["status"] == "timeout" and float(by_id[suite[1].id]["wall_s"]) < 10
