@@ -108,8 +108,9 @@ def _run(benchmark, root: Path, suite_file: Path, results: Path, results_csv: Pa
     def progress(row):
         done[0] += 1
         log.append(row)
-        ui.info_plain(f"[{done[0]}/{total}] {row['id']} {row['strategy']} {row['semantics']}: "
-                      f"{row['status']} size={row['size']} {row['wall_s']}s")
+        cells = row.to_csv()
+        ui.info_plain(f"[{done[0]}/{total}] {row.id} {row.strategy} {row.semantics}: "
+                      f"{row.status} size={cells['size']} {cells['wall_s']}s")
 
     benchmark.run_suite(suite, strategies.split(","), semantics.split(","), time_limit, jobs, executor, scheduler,
                         progress, previous=log.rows, memory_limit_mb=memory_limit or None,
@@ -120,6 +121,6 @@ def _run(benchmark, root: Path, suite_file: Path, results: Path, results_csv: Pa
         subset = len(rows)
         rows = benchmark.merge_rows(benchmark.read_results(results_csv), rows)
         ui.info(f"{results_csv}: {subset} row(s) replaced or added, {len(rows)} in all")
-    rows = sorted(rows, key=lambda r: (r["id"], r["semantics"], r["strategy"]))
+    rows = sorted(rows, key=lambda r: (r.id, r.semantics, r.strategy))
     benchmark.write_results(rows, results_csv)
     log.path.unlink()

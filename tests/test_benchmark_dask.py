@@ -28,14 +28,14 @@ def client():
 
 
 def _without_timings(rows):
-    return [{k: v for k, v in row.items() if k not in TIMINGS} for row in rows]
+    return [{k: v for k, v in row.to_csv().items() if k not in TIMINGS} for row in rows]
 
 
 def test_dask_gives_the_local_executors_rows(client):
     suite = _slice()
     local = run_suite(suite, ["landmark"], ["consistent"], 30.0, jobs=2)
     dask = run_suite(suite, ["landmark"], ["consistent"], 30.0, executor="dask", scheduler=client)
-    assert len(local) == 2 and all(r["status"] == "excuse-found" for r in local)
+    assert len(local) == 2 and all(r.status == "excuse-found" for r in local)
     assert _without_timings(dask) == _without_timings(local)
 
 
@@ -51,9 +51,9 @@ def test_a_chain_whose_worker_dies_is_crashed_rows_and_the_run_goes_on(client, m
 
     monkeypatch.setattr(benchmark.runner, "run_chain", dies_on_the_first)
     rows = run_suite(suite, ["landmark"], ["consistent"], 30.0, executor="dask", scheduler=client)
-    by_id = {r["id"]: r for r in rows}
-    assert by_id[suite[0].id]["status"] == "crashed" and "worker died: KilledWorker" in by_id[suite[0].id]["excuse"]
-    assert by_id[suite[1].id]["status"] == "excuse-found"
+    by_id = {r.id: r for r in rows}
+    assert by_id[suite[0].id].status == "crashed" and "worker died: KilledWorker" in by_id[suite[0].id].excuse
+    assert by_id[suite[1].id].status == "excuse-found"
 
 
 def test_a_dead_workers_chain_keeps_its_resumed_rows(client, monkeypatch):
@@ -83,6 +83,6 @@ def test_per_run_time_and_memory_limits_hold_under_dask(client, monkeypatch):
     monkeypatch.setattr(benchmark.runner, "KILL_GRACE_S", 0.5)
     rows = run_suite(suite, ["landmark"], ["consistent"], 1.0, executor="dask", scheduler=client,
                      memory_limit_mb=1024)
-    by_id = {r["id"]: r for r in rows}
-    assert by_id[suite[0].id]["status"] == "memout"  # 4 GB under a 1 GiB cap
-    assert by_id[suite[1].id]["status"] == "timeout" and float(by_id[suite[1].id]["wall_s"]) < 10
+    by_id = {r.id: r for r in rows}
+    assert by_id[suite[0].id].status == "memout"  # 4 GB under a 1 GiB cap
+    assert by_id[suite[1].id].status == "timeout" and by_id[suite[1].id].wall_s < 10

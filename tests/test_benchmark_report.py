@@ -7,14 +7,12 @@ from pathlib import Path
 
 import pytest
 
-from guided_lfd.benchmark import RESULT_FIELDS, compare, size_bucket, speedups_by_size, summary_markdown
+from guided_lfd.benchmark import ResultRow, compare, size_bucket, speedups_by_size, summary_markdown
 
 
-def row(tid, semantics, strategy, status, size="", search=0.01, total=0.1, domain="d"):
-    out = {k: "" for k in RESULT_FIELDS}
-    out.update(id=tid, domain=domain, task="t", removed_action="a", semantics=semantics, strategy=strategy,
-               status=status, size=size, time_s=total, search_time_s=search)
-    return out
+def row(tid, semantics, strategy, status, size=None, search=0.01, total=0.1, domain="d"):
+    return ResultRow(tid, domain, "t", "a", semantics, strategy, status, size=size,
+                     time_s=None if total == "" else total, search_time_s=None if search == "" else search)
 
 
 ROWS = [
@@ -83,7 +81,7 @@ def test_summary_shows_tables_disagreements_and_errors(tmp_path: Path):
 
 
 def test_summary_of_a_clean_run_says_sizes_agree(tmp_path: Path):
-    clean = [r for r in ROWS if r["semantics"] == "literal"]
+    clean = [r for r in ROWS if r.semantics == "literal"]
     text = summary_markdown(clean, 60, "cmd", [], tmp_path)
     assert "Every task both strategies solved has the same status and minimal size." in text
     assert "runs that ended in an error or crash: 0." in text
@@ -112,7 +110,7 @@ def test_nontrivial_whole_run_speedup_counts_unfinished_runs_at_the_limit():
         row("t6", "literal", "baseline", "crashed", total=3.0),
     ]
     for r in rows:
-        r["wall_s"] = r["time_s"]
+        r.wall_s = r.time_s
     lit = by_label(rows)["literal"]
     assert lit.nontrivial == 3
     assert lit.median_nontrivial_speedup == pytest.approx(30)
@@ -124,8 +122,8 @@ def test_summary_reports_overruns_of_the_time_limit_and_runs_not_made(tmp_path: 
             row("a-task06-x", "literal", "landmark", "timeout", total=60.3),
             row("a-task06-x", "literal", "baseline", "not-run", total="")]
     for r in rows:
-        r["wall_s"] = r["time_s"]
-        r["task"] = r["id"].split("-")[1]
+        r.wall_s = r.time_s
+        r.task = r.id.split("-")[1]
     text = summary_markdown(rows, 60, "cmd", [], tmp_path)
     assert ("longest whole run 61.70 s (a-task05-x baseline literal: timeout), +1.70 s against the 60 s limit; "
             "runs more than 1 s past it: 1.") in text

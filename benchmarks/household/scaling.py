@@ -172,7 +172,8 @@ def report(rows: list[dict], time_limit: float, out_dir: Path) -> str:
                 bl_cell += " **size differs**"
             lines.append(f"| {task} | {actions.get(task, '-')} | {sem} | {lm_cell} | {bl_cell} |")
     lines += ["", f"Size disagreements between the strategies where both finish: {disagreements}."]
-    lines += limit_section(rows, time_limit, lambda r: f"{r['task']} {r['strategy']} {r['semantics']}") + [""]
+    lines += limit_section([(float(r["wall_s"]), f"{r['task']} {r['strategy']} {r['semantics']}", r["status"])
+                            for r in rows if r.get("wall_s") not in ("", None)], time_limit) + [""]
     series: dict[str, list[tuple[float, float]]] = {}
     for r in rows:
         if _solved(r) and r["task"] in actions:

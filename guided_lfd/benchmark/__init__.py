@@ -22,7 +22,7 @@ from guided_lfd.benchmark.analysis import (
 )
 from guided_lfd.benchmark.report import limit_section, plot, summary_markdown
 from guided_lfd.benchmark.results import (
-    GAVE_UP, RESULT_FIELDS, SOLVED, RowLog, _complete, merge_rows, read_results, write_results,
+    GAVE_UP, RESULT_FIELDS, SOLVED, ResultRow, RowLog, merge_rows, read_results, write_results,
 )
 from guided_lfd.benchmark.runner import (
     KILL_GRACE_S, STOP_AFTER_UNFINISHED, Run, chains, cli_command, command_line, crashed, not_run, run_chain,
@@ -36,5 +36,5 @@ __all__ = [
     "GAVE_UP", "RESULT_FIELDS", "SOLVED", "RowLog", "merge_rows", "read_results", "write_results", "KILL_GRACE_S",
     "STOP_AFTER_UNFINISHED", "Run", "chains", "cli_command", "command_line", "crashed", "not_run", "run_chain",
     "run_one", "run_suite", "SUITE_FIELDS", "BenchTask", "generate_suite", "read_suite", "robot_domain_file",
-    "write_suite", "_complete",
+    "write_suite", "ResultRow",
 ]

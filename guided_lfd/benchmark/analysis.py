@@ -5,9 +5,8 @@ from __future__ import annotations
 import math
 import statistics
 from dataclasses import dataclass
-from typing import Any
 
-from guided_lfd.benchmark.results import GAVE_UP, SOLVED
+from guided_lfd.benchmark.results import GAVE_UP, SOLVED, ResultRow
 
 
 @dataclass
@@ -41,47 +40,44 @@ NONTRIVIAL_S = 1.0
 FIRST_TASKS = ("task01", "task02", "task03", "task04", "problem")
 
 
-def suite_part(row: dict[str, Any]) -> str:
+def suite_part(row: ResultRow) -> str:
     """``first`` (IPC task01-04 and the kitchens, the 168 tasks of the first suite) or ``grown``."""
-    return "first" if row["task"] in FIRST_TASKS else "grown"
+    return "first" if row.task in FIRST_TASKS else "grown"
 
 
-def whole_run_s(row: dict[str, Any]) -> float | None:
+def whole_run_s(row: ResultRow) -> float | None:
     """The run's whole wall time: ``wall_s`` (from outside the process), else ``time_s`` (older rows)."""
-    for key in ("wall_s", "time_s"):
-        if row.get(key) not in ("", None):
-            return float(row[key])
-    return None
+    return row.wall_s if row.wall_s is not None else row.time_s
 
 
-def compare(rows: list[dict[str, Any]], default: str = "landmark", baseline: str = "baseline",
+def compare(rows: list[ResultRow], default: str = "landmark", baseline: str = "baseline",
             time_limit: float = 60.0) -> list[Comparison]:
     """Coverage, speed-up and size agreement per semantics, and over both (a task in each semantics)."""
-    semantics = sorted({r["semantics"] for r in rows})
-    out = [_compare([r for r in rows if r["semantics"] == sem], sem, default, baseline, time_limit)
+    semantics = sorted({r.semantics for r in rows})
+    out = [_compare([r for r in rows if r.semantics == sem], sem, default, baseline, time_limit)
            for sem in semantics]
     if len(semantics) > 1:
         out.append(_compare(rows, "both", default, baseline, time_limit))
     return out
 
 
-def search_speedup(default_row: dict[str, Any], baseline_row: dict[str, Any]) -> float | None:
+def search_speedup(default_row: ResultRow, baseline_row: ResultRow) -> float | None:
     """Baseline search time / default search time (None when a run has no search time)."""
-    d, b = default_row.get("search_time_s"), baseline_row.get("search_time_s")
-    if d in ("", None) or b in ("", None):
+    d, b = default_row.search_time_s, baseline_row.search_time_s
+    if d is None or b is None:
         return None
     # Search times are recorded to the microsecond; below SEARCH_TIME_FLOOR
     # scheduling noise dominates, so shorter phases count as the floor.
-    return max(float(b), SEARCH_TIME_FLOOR) / max(float(d), SEARCH_TIME_FLOOR)
+    return max(b, SEARCH_TIME_FLOOR) / max(d, SEARCH_TIME_FLOOR)
 
 
-def _compare(rows: list[dict[str, Any]], label: str, default: str, baseline: str,
+def _compare(rows: list[ResultRow], label: str, default: str, baseline: str,
              time_limit: float = 60.0) -> Comparison:
     """Coverage, speed-up and size agreement over ``rows`` (``label``: a semantics, or "both")."""
     by_task: dict[str, dict[str, dict]] = {}
     for r in rows:
-        key = r["id"] if label != "both" else f"{r['id']} ({r['semantics']})"
-        by_task.setdefault(key, {})[r["strategy"]] = r
+        key = r.id if label != "both" else f"{r.id} ({r.semantics})"
+        by_task.setdefault(key, {})[r.strategy] = r
     solved_d = solved_b = large_d = large_b = 0
     ratios: list[float] = []
     total_ratios: list[float] = []
@@ -89,23 +85,23 @@ def _compare(rows: list[dict[str, Any]], label: str, default: str, baseline: str
     mismatches: list[str] = []
     for tid, runs in sorted(by_task.items()):
         d, b = runs.get(default), runs.get(baseline)
-        ok_d = d is not None and d["status"] in SOLVED
-        ok_b = b is not None and b["status"] in SOLVED
+        ok_d = d is not None and d.status in SOLVED
+        ok_b = b is not None and b.status in SOLVED
         solved_d += ok_d
         solved_b += ok_b
-        size = next((int(r["size"]) for r in (d, b) if r is not None and r["status"] == "excuse-found"), None)
+        size = next((r.size for r in (d, b) if r is not None and r.status == "excuse-found"), None)
         if size is not None and size >= 3:
             large_d += ok_d
             large_b += ok_b
         if (ok_d or ok_b) and d is not None and b is not None:
             # A run that gave up counts at the limit; a crashed or failed one says nothing.
-            d_wall = whole_run_s(d) if ok_d else time_limit if d["status"] in GAVE_UP else None
-            b_wall = whole_run_s(b) if ok_b else time_limit if b["status"] in GAVE_UP else None
+            d_wall = whole_run_s(d) if ok_d else time_limit if d.status in GAVE_UP else None
+            b_wall = whole_run_s(b) if ok_b else time_limit if b.status in GAVE_UP else None
             if d_wall is not None and b_wall is not None and (not ok_b or b_wall >= NONTRIVIAL_S):
                 nontrivial.append(b_wall / max(d_wall, 1e-4))
         if ok_d and ok_b:
-            if (d["status"], str(d["size"])) != (b["status"], str(b["size"])):
-                mismatches.append(f"{tid}: {default} {d['status']} {d['size']} vs {baseline} {b['status']} {b['size']}")
+            if (d.status, d.size) != (b.status, b.size):
+                mismatches.append(f"{tid}: {default} {d.status} {d.size} vs {baseline} {b.status} {b.size}")
             total_ratios.append(whole_run_s(b) / max(whole_run_s(d), 1e-4))
             ratio = search_speedup(d, b)
             if ratio is not None:
@@ -124,11 +120,11 @@ def _compare(rows: list[dict[str, Any]], label: str, default: str, baseline: str
 SIZE_BUCKETS = ("1", "2", "3-5", "6+", "none")
 
 
-def size_bucket(row: dict[str, Any]) -> str:
+def size_bucket(row: ResultRow) -> str:
     """The :data:`SIZE_BUCKETS` entry of a solved result row."""
-    if row["status"] != "excuse-found":
+    if row.status != "excuse-found":
         return "none"
-    size = int(row["size"])
+    size = row.size or 0
     return str(size) if size <= 2 else ("3-5" if size <= 5 else "6+")
 
 
@@ -141,16 +137,16 @@ def size_count_key(size: int) -> str:
     return str(size) if size < 6 else "6+"
 
 
-def speedups_by_size(rows: list[dict[str, Any]], default: str = "landmark",
+def speedups_by_size(rows: list[ResultRow], default: str = "landmark",
                      baseline: str = "baseline") -> dict[str, dict[str, list[float]]]:
     """Search speed-ups on the tasks both strategies solve, per semantics and excuse-size bucket."""
     runs: dict[tuple[str, str], dict[str, dict]] = {}
     for r in rows:
-        runs.setdefault((r["id"], r["semantics"]), {})[r["strategy"]] = r
+        runs.setdefault((r.id, r.semantics), {})[r.strategy] = r
     out: dict[str, dict[str, list[float]]] = {}
     for (_, sem), pair in sorted(runs.items()):
         d, b = pair.get(default), pair.get(baseline)
-        if d is None or b is None or d["status"] not in SOLVED or b["status"] not in SOLVED:
+        if d is None or b is None or d.status not in SOLVED or b.status not in SOLVED:
             continue
         ratio = search_speedup(d, b)
         if ratio is not None:

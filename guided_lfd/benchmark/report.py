@@ -4,9 +4,8 @@ from __future__ import annotations
 
 import statistics
 from pathlib import Path
-from typing import Any, Callable
 
-from guided_lfd.benchmark.results import SOLVED
+from guided_lfd.benchmark.results import SOLVED, ResultRow
 from guided_lfd.benchmark.analysis import (NONTRIVIAL_S, SIZE_BUCKETS, SIZE_COUNTS, Comparison, compare, speedups_by_size,
                                            size_count_key, suite_part, whole_run_s)
 from guided_lfd.reporting import markdown_table, plots_markdown, pyplot, save_figure
@@ -15,18 +14,18 @@ from guided_lfd.reporting import markdown_table, plots_markdown, pyplot, save_fi
 DPI = 120
 
 
-def plot(rows: list[dict[str, Any]], folder: Path, time_limit: float) -> list[Path]:
+def plot(rows: list[ResultRow], folder: Path, time_limit: float) -> list[Path]:
     """Cactus plot and time-vs-size plot as PNG files (:class:`~guided_lfd.reporting.PlotsUnavailable` without
     matplotlib: the caller skips them and passes ``plots=None`` to :func:`summary_markdown`)."""
     plt = pyplot()
     from matplotlib.ticker import MaxNLocator
 
     folder.mkdir(parents=True, exist_ok=True)
-    configs = sorted({(r["strategy"], r["semantics"]) for r in rows})
+    configs = sorted({(r.strategy, r.semantics) for r in rows})
     fig, ax = plt.subplots(figsize=(6.4, 4.2))
     for st, se in configs:
         times = sorted(whole_run_s(r) for r in rows
-                       if r["strategy"] == st and r["semantics"] == se and r["status"] in SOLVED)
+                       if r.strategy == st and r.semantics == se and r.status in SOLVED)
         ax.step(range(1, len(times) + 1), times, where="post", label=f"{st} ({se})")
     ax.set_yscale("log")
     ax.set_xlabel("tasks solved")
@@ -37,10 +36,10 @@ def plot(rows: list[dict[str, Any]], folder: Path, time_limit: float) -> list[Pa
     ax.legend(fontsize=8)
     cactus = save_figure(fig, folder / "cactus.png", DPI)
     fig, axes = plt.subplots(1, 2, figsize=(9, 4.0), sharey=True)
-    for ax, se in zip(axes, sorted({r["semantics"] for r in rows})):
+    for ax, se in zip(axes, sorted({r.semantics for r in rows})):
         for st, marker in (("baseline", "x"), ("landmark", "o")):
-            pts = [(int(r["size"]), whole_run_s(r)) for r in rows
-                   if r["strategy"] == st and r["semantics"] == se and r["status"] == "excuse-found"]
+            pts = [(r.size, whole_run_s(r)) for r in rows
+                   if r.strategy == st and r.semantics == se and r.status == "excuse-found"]
             if pts:
                 xs, ys = zip(*pts)
                 ax.scatter(xs, ys, marker=marker, alpha=0.6, label=st)
@@ -55,7 +54,7 @@ def plot(rows: list[dict[str, Any]], folder: Path, time_limit: float) -> list[Pa
     return [cactus, scatter]
 
 
-def _parts_table(rows: list[dict[str, Any]]) -> list[str]:
+def _parts_table(rows: list[ResultRow]) -> list[str]:
     """Default coverage per suite part (the first 168 tasks, the grown ones) and semantics."""
     parts = sorted({suite_part(r) for r in rows})
     if parts == ["first"]:
@@ -64,12 +63,12 @@ def _parts_table(rows: list[dict[str, Any]]) -> list[str]:
            "*first*: IPC task01-04 and the kitchens (the first suite); *grown*: IPC task05-10.", ""]
     table = []
     for part in parts:
-        for se in sorted({r["semantics"] for r in rows}):
-            sub = [r for r in rows if suite_part(r) == part and r["semantics"] == se]
-            n = len({r["id"] for r in sub})
-            lm = sum(r["status"] in SOLVED for r in sub if r["strategy"] == "landmark")
-            bl = sum(r["status"] in SOLVED for r in sub if r["strategy"] == "baseline")
-            skipped = sum(r["status"] == "not-run" for r in sub if r["strategy"] == "baseline")
+        for se in sorted({r.semantics for r in rows}):
+            sub = [r for r in rows if suite_part(r) == part and r.semantics == se]
+            n = len({r.id for r in sub})
+            lm = sum(r.status in SOLVED for r in sub if r.strategy == "landmark")
+            bl = sum(r.status in SOLVED for r in sub if r.strategy == "baseline")
+            skipped = sum(r.status == "not-run" for r in sub if r.strategy == "baseline")
             table.append([part, se, n, f"{lm} ({100 * lm / max(n, 1):.1f}%)", f"{bl} ({100 * bl / max(n, 1):.1f}%)",
                           skipped])
     out.append(markdown_table(["part", "semantics", "tasks", "solved: landmark", "solved: baseline",
@@ -77,28 +76,26 @@ def _parts_table(rows: list[dict[str, Any]]) -> list[str]:
     return out
 
 
-def limit_section(rows: list[dict[str, Any]], time_limit: float,
-                  label: Callable[[dict[str, Any]], str] | None = None) -> list[str]:
+def limit_section(runs: list[tuple[float, str, str]], time_limit: float) -> list[str]:
     """Markdown lines: how far whole runs went past the time limit (``--time-limit`` bounds the whole run).
 
-    ``label`` names a row (default: its id, strategy and semantics).
+    ``runs``: each run's (whole wall time, name, status); the household series has its own rows.
     """
-    label = label or (lambda r: f"{r['id']} {r['strategy']} {r['semantics']}")
-    walls = [(float(r["wall_s"]), r) for r in rows if r.get("wall_s") not in ("", None)]
-    if not walls:
+    if not runs:
         return []
-    worst, worst_row = max(walls, key=lambda item: item[0])
-    over = [(w, r) for w, r in walls if w > time_limit + 1.0]
+    worst, worst_name, worst_status = max(runs, key=lambda run: run[0])
+    over = [run for run in runs if run[0] > time_limit + 1.0]
     out = ["", "## Time limit", "",
-           f"Runs: {len(walls)}; longest whole run {worst:.2f} s ({label(worst_row)}: {worst_row['status']}), "
+           f"Runs: {len(runs)}; longest whole run {worst:.2f} s ({worst_name}: {worst_status}), "
            f"{worst - time_limit:+.2f} s against the {time_limit:g} s limit; runs more than 1 s past it: {len(over)}."]
-    out += [f"- {label(r)}: {w:.2f} s ({r['status']})" for w, r in over]
+    out += [f"- {name}: {wall:.2f} s ({status})" for wall, name, status in over]
     return out
 
 
-def _limit_section(rows: list[dict[str, Any]], time_limit: float) -> list[str]:
-    out = limit_section(rows, time_limit)
-    skipped = sum(r["status"] == "not-run" for r in rows)
+def _limit_section(rows: list[ResultRow], time_limit: float) -> list[str]:
+    out = limit_section([(r.wall_s, f"{r.id} {r.strategy} {r.semantics}", r.status) for r in rows
+                         if r.wall_s is not None], time_limit)
+    skipped = sum(r.status == "not-run" for r in rows)
     if skipped:
         out += ["", f"Runs not made: {skipped}. A baseline run is not made on the later tasks of a family "
                 "(domain, removed action, semantics) after the first task of that family it does not finish "
@@ -106,11 +103,11 @@ def _limit_section(rows: list[dict[str, Any]], time_limit: float) -> list[str]:
     return out
 
 
-def summary_markdown(rows: list[dict[str, Any]], time_limit: float, command: str, plots: list[Path] | None,
+def summary_markdown(rows: list[ResultRow], time_limit: float, command: str, plots: list[Path] | None,
                      base: Path) -> str:
     """The markdown summary: coverage table, speed-ups, agreement, plots (None: skipped, the section says so)."""
     comps = compare(rows, time_limit=time_limit)
-    domains = sorted({r["domain"] for r in rows})
+    domains = sorted({r.domain for r in rows})
     lines = _overview_section(rows, comps, domains, time_limit, command)
     lines += _parts_table(rows) + _limit_section(rows, time_limit)
     lines += _domain_coverage_section(rows, domains)
@@ -122,7 +119,7 @@ def summary_markdown(rows: list[dict[str, Any]], time_limit: float, command: str
     return "\n".join(lines) + "\n"
 
 
-def _overview_section(rows: list[dict[str, Any]], comps: list[Comparison], domains: list[str], time_limit: float,
+def _overview_section(rows: list[ResultRow], comps: list[Comparison], domains: list[str], time_limit: float,
                       command: str) -> list[str]:
     """Title, how to regenerate, what the numbers mean, and the landmark-vs-baseline table per semantics."""
     return [
@@ -130,7 +127,7 @@ def _overview_section(rows: list[dict[str, Any]], comps: list[Comparison], domai
         "",
         f"Regenerate with: `{command}`",
         "",
-        f"{len({r['id'] for r in rows})} tasks over {len(domains)} domains; time limit {time_limit:g} s per task "
+        f"{len({r.id for r in rows})} tasks over {len(domains)} domains; time limit {time_limit:g} s per task "
         "and run; each run is one `guided-lfd excuse ... --json` process, as a user would start it. *Solved* = "
         "a minimal excuse found, or proved that none exists.",
         "",
@@ -160,20 +157,20 @@ def _overview_section(rows: list[dict[str, Any]], comps: list[Comparison], domai
     ]
 
 
-def _domain_coverage_section(rows: list[dict[str, Any]], domains: list[str]) -> list[str]:
+def _domain_coverage_section(rows: list[ResultRow], domains: list[str]) -> list[str]:
     """Solved tasks per domain, for each semantics and strategy."""
     columns = [(se, st) for se in ("literal", "consistent") for st in ("landmark", "baseline")]
     coverage = []
     for dom in domains:
-        ids = {r["id"] for r in rows if r["domain"] == dom}
+        ids = {r.id for r in rows if r.domain == dom}
         coverage.append([dom, len(ids)] + [
-            sum(1 for r in rows if r["domain"] == dom and r["semantics"] == se and r["strategy"] == st
-                and r["status"] in SOLVED) for se, st in columns])
+            sum(1 for r in rows if r.domain == dom and r.semantics == se and r.strategy == st
+                and r.status in SOLVED) for se, st in columns])
     return ["", "## Coverage per domain", "",
             markdown_table(["domain", "tasks"] + [f"{st} {se}" for se, st in columns], coverage)]
 
 
-def _size_speedup_section(rows: list[dict[str, Any]]) -> list[str]:
+def _size_speedup_section(rows: list[ResultRow]) -> list[str]:
     """Median search speed-up per minimal excuse size bucket and semantics."""
     by_size = speedups_by_size(rows)
     return ["", "## Median search speed-up by minimal excuse size", "",
@@ -184,13 +181,13 @@ def _size_speedup_section(rows: list[dict[str, Any]]) -> list[str]:
                          for b in SIZE_BUCKETS] for se in sorted(by_size)])]
 
 
-def _sizes_found_section(rows: list[dict[str, Any]]) -> list[str]:
+def _sizes_found_section(rows: list[ResultRow]) -> list[str]:
     """How many minimal excuses of each size (1 to 6+) the landmark strategy found, per semantics."""
     sizes: dict[str, int] = {}
     for r in rows:
-        if r["strategy"] == "landmark" and r["status"] == "excuse-found":
-            key = size_count_key(int(r["size"]))
-            sizes[f"{r['semantics']} {key}"] = sizes.get(f"{r['semantics']} {key}", 0) + 1
+        if r.strategy == "landmark" and r.status == "excuse-found":
+            key = size_count_key(r.size or 0)
+            sizes[f"{r.semantics} {key}"] = sizes.get(f"{r.semantics} {key}", 0) + 1
     keys = list(SIZE_COUNTS)
     return ["", "## Minimal excuse sizes found (landmark)", "",
             markdown_table(["semantics"] + keys,
@@ -205,20 +202,20 @@ def _agreement_section(comps: list[Comparison]) -> list[str]:
             if not mism else "Disagreements:\n\n" + "\n".join(f"- {m}" for m in mism)]
 
 
-def _validation_section(rows: list[dict[str, Any]]) -> list[str]:
+def _validation_section(rows: list[ResultRow]) -> list[str]:
     """The independent check of every excuse, the runs that ended in an error or crash, and the memouts."""
-    errors = [r for r in rows if r["status"] in ("error", "crashed")]
-    found = sum(r["status"] == "excuse-found" for r in rows)
+    errors = [r for r in rows if r.status in ("error", "crashed")]
+    found = sum(r.status == "excuse-found" for r in rows)
     lines = ["", "## Validation", "",
              f"Every run re-checks each excuse it returns with the independent checker "
              f"(`guided_lfd.excuse.check`: the excuse state does not already satisfy the goal, keeps the invariants under the "
              f"consistent semantics, and the robot's plan from it validates); a failed check ends the run "
              f"as an error. Runs that returned an excuse: {found}; runs that ended in an error or crash: {len(errors)}."]
     if errors:
-        lines += [""] + [f"- {r['id']} {r['strategy']} {r['semantics']}: {r['status']}"
-                         + (f" ({r['excuse']})" if r["excuse"] else "") for r in errors]
-    memouts = [r for r in rows if r["status"] == "memout"]
+        lines += [""] + [f"- {r.id} {r.strategy} {r.semantics}: {r.status}"
+                         + (f" ({r.excuse})" if r.excuse else "") for r in errors]
+    memouts = [r for r in rows if r.status == "memout"]
     if memouts:
         lines += ["", f"Runs that exceeded the memory cap (memout, counted as unsolved): {len(memouts)}.", ""]
-        lines += [f"- {r['id']} {r['strategy']} {r['semantics']}" for r in memouts]
+        lines += [f"- {r.id} {r.strategy} {r.semantics}" for r in memouts]
     return lines

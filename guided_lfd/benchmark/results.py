@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import csv
 from pathlib import Path
+from dataclasses import dataclass, fields
 from typing import Any
 
 
@@ -21,10 +22,56 @@ SOLVED = ("excuse-found", "no-excuse")
 GAVE_UP = ("timeout", "memout", "not-run")
 
 
-def _complete(row: dict[str, Any]) -> dict[str, Any]:
-    for key in RESULT_FIELDS:
-        row.setdefault(key, "")
-    return {k: row[k] for k in RESULT_FIELDS}
+@dataclass
+class ResultRow:
+    """One run of the benchmark (task, strategy, semantics): how it ended, what it found, its times and effort.
+
+    Numbers are numbers (None where the run has none: a crashed run has no
+    size); :meth:`from_csv` and :meth:`to_csv` are the CSV's text, an empty
+    cell for None.
+    """
+
+    id: str
+    domain: str
+    task: str
+    removed_action: str
+    semantics: str
+    strategy: str
+    status: str = ""
+    size: int | None = None
+    cost: int | None = None
+    wall_s: float | None = None  # the process as the shell sees it
+    exit_code: int | None = None
+    time_s: float | None = None  # the run's own clock
+    search_time_s: float | None = None
+    candidates: int | None = None
+    planner_calls: int | None = None
+    expanded: int | None = None
+    excuse: str = ""  # the excuse's changes, or why there is none
+
+    @property
+    def key(self) -> tuple[str, str, str]:
+        """(id, strategy, semantics): what a run is, in a resumed or merged run."""
+        return self.id, self.strategy, self.semantics
+
+    @classmethod
+    def from_csv(cls, record: dict[str, str]) -> "ResultRow":
+        """A row from a results CSV record (cells as text)."""
+        values: dict[str, Any] = {}
+        for f in fields(cls):
+            text = record.get(f.name, "") or ""
+            kind = _KINDS.get(f.name, str)
+            values[f.name] = text if kind is str else (kind(text) if text != "" else None)
+        return cls(**values)
+
+    def to_csv(self) -> dict[str, str]:
+        """The row as CSV cells, in :data:`RESULT_FIELDS` order."""
+        return {name: "" if (value := getattr(self, name)) is None else str(value) for name in RESULT_FIELDS}
+
+
+#: The numeric fields and their types (the rest are text).
+_KINDS: dict[str, type] = {"size": int, "cost": int, "exit_code": int, "candidates": int, "planner_calls": int,
+                           "expanded": int, "wall_s": float, "time_s": float, "search_time_s": float}
 
 
 class RowLog:
@@ -36,41 +83,41 @@ class RowLog:
     def __init__(self, path: Path) -> None:
         self.path = path
         path.parent.mkdir(parents=True, exist_ok=True)
-        self.rows: list[dict[str, Any]] = []
+        self.rows: list[ResultRow] = []
         if path.exists():
             self.rows = read_results(path)
         else:
             with open(path, "w", newline="", encoding="utf-8") as fh:
                 csv.DictWriter(fh, fieldnames=RESULT_FIELDS, lineterminator="\n").writeheader()
-        self.done: set[tuple[str, str, str]] = {(r["id"], r["strategy"], r["semantics"]) for r in self.rows}
+        self.done: set[tuple[str, str, str]] = {r.key for r in self.rows}
 
-    def append(self, row: dict[str, Any]) -> None:
+    def append(self, row: ResultRow) -> None:
+        """Add ``row`` to the file (flushed: it survives the run)."""
         with open(self.path, "a", newline="", encoding="utf-8") as fh:
-            csv.DictWriter(fh, fieldnames=RESULT_FIELDS, lineterminator="\n", extrasaction="ignore").writerow(row)
+            csv.DictWriter(fh, fieldnames=RESULT_FIELDS, lineterminator="\n").writerow(row.to_csv())
             fh.flush()
 
 
-def merge_rows(kept: list[dict[str, Any]], new: list[dict[str, Any]]) -> list[dict[str, Any]]:
+def merge_rows(kept: list[ResultRow], new: list[ResultRow]) -> list[ResultRow]:
     """``kept`` with each run of ``new`` (same id, strategy, semantics) replaced or added: a subset run's update."""
-    key = lambda r: (r["id"], r["strategy"], r["semantics"])  # noqa: E731
-    fresh = {key(r): r for r in new}
-    return [r for r in kept if key(r) not in fresh] + list(fresh.values())
+    fresh = {r.key: r for r in new}
+    return [r for r in kept if r.key not in fresh] + list(fresh.values())
 
 
-def write_results(rows: list[dict[str, Any]], path: Path) -> None:
+def write_results(rows: list[ResultRow], path: Path) -> None:
     """Results as CSV (one row per task, strategy and semantics)."""
     import io
 
     from guided_lfd.io import write_text
 
     buf = io.StringIO()
-    writer = csv.DictWriter(buf, fieldnames=RESULT_FIELDS, lineterminator="\n", extrasaction="ignore")
+    writer = csv.DictWriter(buf, fieldnames=RESULT_FIELDS, lineterminator="\n")
     writer.writeheader()
-    writer.writerows(rows)
+    writer.writerows(row.to_csv() for row in rows)
     write_text(path, buf.getvalue())
 
 
-def read_results(path: Path) -> list[dict[str, Any]]:
+def read_results(path: Path) -> list[ResultRow]:
     """Read a results CSV back."""
     with open(path, newline="", encoding="utf-8") as fh:
-        return list(csv.DictReader(fh))
+        return [ResultRow.from_csv(record) for record in csv.DictReader(fh)]

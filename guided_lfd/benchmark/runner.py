@@ -5,11 +5,11 @@ from __future__ import annotations
 import sys
 import time
 from pathlib import Path
-from typing import Any, Callable, Iterable
+from typing import Callable, Iterable
 
 from guided_lfd.memory import cap_memory
 from guided_lfd.benchmark.suite import BenchTask, robot_domain_file
-from guided_lfd.benchmark.results import SOLVED, _complete
+from guided_lfd.benchmark.results import SOLVED, ResultRow
 
 
 #: Runs whose strategy stops on a family (domain, removed action, semantics) after its first
@@ -43,7 +43,7 @@ def command_line(task: BenchTask, strategy: str, semantics: str, time_limit: flo
 
 
 def run_one(task: BenchTask, strategy: str, semantics: str, time_limit: float,
-            memory_limit_mb: int | None = None, workdir: Path | None = None) -> dict[str, Any]:
+            memory_limit_mb: int | None = None, workdir: Path | None = None) -> ResultRow:
     """One whole run of ``guided-lfd excuse`` in its own process; its result row (never raises).
 
     ``wall_s`` is the process's wall time as the shell sees it (start-up,
@@ -55,15 +55,14 @@ def run_one(task: BenchTask, strategy: str, semantics: str, time_limit: float,
     import subprocess
     import tempfile
 
-    row: dict[str, Any] = {"id": task.id, "domain": task.domain, "task": task.task,
-                           "removed_action": task.removed_action, "semantics": semantics, "strategy": strategy}
+    row = _row(task, strategy, semantics)
     folder = workdir or Path(tempfile.gettempdir()) / "guided-lfd-bench"
     folder.mkdir(parents=True, exist_ok=True)
     try:
         cmd = command_line(task, strategy, semantics, time_limit, robot_domain_file(task, folder))
     except Exception as exc:  # a benchmark row records failures instead of stopping the run
-        row.update(status="error", excuse=f"{type(exc).__name__}: {exc}"[:300])
-        return _complete(row)
+        row.status, row.excuse = "error", f"{type(exc).__name__}: {exc}"[:300]
+        return row
     start = time.perf_counter()
     # The memory cap is set on the started process (prlimit), not in a pre-exec hook:
     # those are unsafe while other threads run, and the local executor is threads.
@@ -77,7 +76,7 @@ def run_one(task: BenchTask, strategy: str, semantics: str, time_limit: float,
         proc.kill()
         proc.communicate()
         code, stdout, stderr = None, "", ""
-    row.update(wall_s=round(time.perf_counter() - start, 4), exit_code="" if code is None else code)
+    row.wall_s, row.exit_code = round(time.perf_counter() - start, 4), code
     try:
         doc = json.loads(stdout)
     except json.JSONDecodeError:
@@ -90,18 +89,25 @@ def run_one(task: BenchTask, strategy: str, semantics: str, time_limit: float,
         else:
             status = "crashed"
             note = (stderr.strip().splitlines() or [f"process ended with exit code {code}"])[-1]
-        row.update(status=status, excuse=note[:300])
-        return _complete(row)
+        row.status, row.excuse = status, note[:300]
+        return row
     stats = doc.get("statistics") or {}
-    row.update(status=doc["status"], time_s=stats.get("time_s", ""), search_time_s=stats.get("search_time_s", ""),
-               candidates=stats.get("candidates", 0), planner_calls=stats.get("planner_calls", 0),
-               expanded=stats.get("nodes_expanded", 0))
+    row.status = doc["status"]
+    row.time_s, row.search_time_s = stats.get("time_s"), stats.get("search_time_s")
+    row.candidates, row.planner_calls = stats.get("candidates", 0), stats.get("planner_calls", 0)
+    row.expanded = stats.get("nodes_expanded", 0)
     excuse = doc.get("excuse")
     if excuse:
-        row.update(size=excuse["size"], cost=excuse["cost"], excuse=" ".join(c["change"] for c in excuse["changes"]))
+        row.size, row.cost = excuse["size"], excuse["cost"]
+        row.excuse = " ".join(c["change"] for c in excuse["changes"])
     elif doc["status"] not in SOLVED and doc.get("message"):
-        row.update(excuse=str(doc["message"])[:300])
-    return _complete(row)
+        row.excuse = str(doc["message"])[:300]
+    return row
+
+
+def _row(task: BenchTask, strategy: str, semantics: str) -> ResultRow:
+    """The row of a run of ``task`` before it has run."""
+    return ResultRow(task.id, task.domain, task.task, task.removed_action, semantics, strategy)
 
 
 Run = tuple[BenchTask, str, str]  # (task, strategy, semantics)
@@ -130,27 +136,28 @@ def chains(suite: list[BenchTask], strategies: list[str], semantics: list[str],
     return ordered + singles
 
 
-def not_run(task: BenchTask, strategy: str, semantics: str, reason: str) -> dict[str, Any]:
+def not_run(task: BenchTask, strategy: str, semantics: str, reason: str) -> ResultRow:
     """The row of a run left out after its family's first unfinished task."""
-    return _complete({"id": task.id, "domain": task.domain, "task": task.task, "removed_action": task.removed_action,
-                      "semantics": semantics, "strategy": strategy, "status": "not-run", "excuse": reason})
+    row = _row(task, strategy, semantics)
+    row.status, row.excuse = "not-run", reason
+    return row
 
 
-def crashed(task: BenchTask, strategy: str, semantics: str, exc: BaseException) -> dict[str, Any]:
+def crashed(task: BenchTask, strategy: str, semantics: str, exc: BaseException) -> ResultRow:
     """The row of a run whose worker died under it (Dask's KilledWorker, a crash): counted as crashed."""
-    reason = f"worker died: {type(exc).__name__}: {exc}"
-    return _complete({"id": task.id, "domain": task.domain, "task": task.task, "removed_action": task.removed_action,
-                      "semantics": semantics, "strategy": strategy, "status": "crashed", "excuse": reason[:300]})
+    row = _row(task, strategy, semantics)
+    row.status, row.excuse = "crashed", f"worker died: {type(exc).__name__}: {exc}"[:300]
+    return row
 
 
 def run_chain(chain: list[Run], time_limit: float, memory_limit_mb: int | None = None,
-              previous: dict[tuple[str, str, str], dict[str, Any]] | None = None,
-              on_row: Callable[[dict[str, Any]], None] | None = None, stop: bool = False) -> list[dict[str, Any]]:
+              previous: dict[tuple[str, str, str], ResultRow] | None = None,
+              on_row: Callable[[ResultRow], None] | None = None, stop: bool = False) -> list[ResultRow]:
     """Run a chain in order; with ``stop``, after the first unfinished run the rest are ``not-run``.
 
     ``previous`` holds rows of an interrupted run (resume): they are not run again.
     """
-    rows: list[dict[str, Any]] = []
+    rows: list[ResultRow] = []
     stopped_at: str | None = None
     for task, strategy, sem in chain:
         key = (task.id, strategy, sem)
@@ -160,7 +167,7 @@ def run_chain(chain: list[Run], time_limit: float, memory_limit_mb: int | None =
             row, fresh = not_run(task, strategy, sem, f"not run: {stopped_at} was not finished"), True
         else:
             row, fresh = run_one(task, strategy, sem, time_limit, memory_limit_mb), True
-        if stop and stopped_at is None and row["status"] not in SOLVED:
+        if stop and stopped_at is None and row.status not in SOLVED:
             stopped_at = task.task
         rows.append(row)
         if fresh and on_row:
@@ -176,11 +183,11 @@ def run_suite(
     jobs: int = 2,
     executor: str = "local",
     scheduler: str | None = None,
-    on_row: Callable[[dict[str, Any]], None] | None = None,
-    previous: list[dict[str, Any]] | None = None,
+    on_row: Callable[[ResultRow], None] | None = None,
+    previous: list[ResultRow] | None = None,
     memory_limit_mb: int | None = None,
     stop_after_unfinished: Iterable[str] = STOP_AFTER_UNFINISHED,
-) -> list[dict[str, Any]]:
+) -> list[ResultRow]:
     """Run every (task, strategy, semantics), ``jobs`` command-line processes at a time.
 
     ``executor`` is ``local`` (a thread per job, each starting ``guided-lfd``
@@ -193,7 +200,7 @@ def run_suite(
     """
     stopping = set(stop_after_unfinished)
     work = chains(suite, strategies, semantics, stopping)
-    done = {(r["id"], r["strategy"], r["semantics"]): r for r in previous or []}
+    done = {r.key: r for r in previous or []}
     if executor == "dask":
         return _run_dask(work, time_limit, scheduler, on_row, memory_limit_mb, done, stopping)
     import threading
@@ -201,18 +208,18 @@ def run_suite(
 
     lock = threading.Lock()
 
-    def report(row: dict[str, Any]) -> None:
+    def report(row: ResultRow) -> None:
         if on_row:
             with lock:
                 on_row(row)
 
-    rows: list[dict[str, Any]] = []
+    rows: list[ResultRow] = []
     with ThreadPoolExecutor(max_workers=max(1, jobs)) as pool:
         futures = [pool.submit(run_chain, chain, time_limit, memory_limit_mb, done, report,
                                chain[0][1] in stopping) for chain in work]
         for fut in futures:
             rows.extend(fut.result())
-    return sorted(rows, key=lambda r: (r["id"], r["semantics"], r["strategy"]))
+    return sorted(rows, key=lambda r: (r.id, r.semantics, r.strategy))
 
 
 def _run_dask(work, time_limit, scheduler, on_row, memory_limit_mb, done, stopping):
@@ -239,9 +246,9 @@ def _run_dask(work, time_limit, scheduler, on_row, memory_limit_mb, done, stoppi
                               for task, strategy, sem in chain_of[fut.key]]
             for row in chain_rows:
                 rows.append(row)
-                if on_row and (row["id"], row["strategy"], row["semantics"]) not in done:
+                if on_row and row.key not in done:
                     on_row(row)
     finally:
         if not isinstance(scheduler, Client):
             client.close()
-    return sorted(rows, key=lambda r: (r["id"], r["semantics"], r["strategy"]))
+    return sorted(rows, key=lambda r: (r.id, r.semantics, r.strategy))
