@@ -65,3 +65,37 @@ def test_excuse_json_matches_golden_and_is_deterministic(runner, app, name, args
 def test_domain_writer_matches_golden():
     domain, _ = parse_task(*kitchen(2, "human"))
     check_golden("kitchen-2-human.pddl", domain_to_pddl(domain))
+
+
+def _run_in_root(runner, app, args: list[str]) -> dict:
+    root = Path(__file__).resolve().parent.parent
+    cwd = os.getcwd()
+    os.chdir(root)
+    try:
+        result = runner.invoke(app, args)
+    finally:
+        os.chdir(cwd)
+    assert result.exit_code == 0, result.stderr
+    return json.loads(result.stdout)
+
+
+def test_plan_json_matches_golden(runner, app):
+    doc = _run_in_root(runner, app, ["plan", "tests/data/costs/domain.pddl", "tests/data/costs/problem.pddl", "--json"])
+    doc.pop("time_s")
+    check_golden("plan-costs.json", json.dumps(doc, indent=2) + "\n")
+
+
+def test_evaluate_json_matches_golden(runner, app, tmp_path):
+    root = Path(__file__).resolve().parent.parent
+    segments = tmp_path / "p1.json"
+    learned, merged = tmp_path / "p1.pddl", tmp_path / "merged.pddl"
+    k2 = "data/domains/kitchen-2"
+    for args in (["segment", f"{root}/data/demos/kitchen-2/P1-excuse.csv", "-o", str(segments)],
+                 ["learn-domain", str(segments), "-o", str(learned)],
+                 ["merge", f"{root}/{k2}/robot.pddl", str(learned), "-o", str(merged)]):
+        assert runner.invoke(app, [*args, "--quiet"]).exit_code == 0
+    doc = _run_in_root(runner, app, ["evaluate", f"{k2}/robot.pddl", f"{k2}/problem.pddl", "--human",
+                                     f"{k2}/human.pddl", "-d", str(segments), "--merged", str(merged), "--json"])
+    # The temporary folder is the test's, not the result's.
+    text = json.dumps(doc, indent=2).replace(f"{tmp_path}/", "")
+    check_golden("evaluate-kitchen-2.json", text + "\n")
