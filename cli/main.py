@@ -49,6 +49,8 @@ SUBCOMMANDS: dict[str, Subcommand] = {
     "bench": Subcommand("cli.bench", "bench", "Run the excuse benchmark (generate, run, report)."),
     "quality": Subcommand("cli.quality", "quality", "Score segmentation and learning on labelled demos."),
     "demos": Subcommand("cli.demos", "demos", "Render the study's demonstrations as hand traces."),
+    "teach": Subcommand("cli.teach", "teach",
+                        "Teach the robot its task, one demonstration per round."),
     "study": Subcommand("cli.study", "study", "Reproduce the paper's user study from the shipped data."),
 }
 

@@ -44,6 +44,7 @@ EXIT_UNSOLVABLE = 10
 EXIT_NO_EXCUSE = 11
 EXIT_PLAN_INVALID = 12
 EXIT_NO_EXCUSE_WITHIN_LIMIT = 13
+EXIT_NOT_TAUGHT = 14
 EXIT_TIME_LIMIT = 20
 EXIT_TOO_LARGE = 21
 EXIT_MEMORY = 22
@@ -67,6 +68,7 @@ EXIT_CODES: dict[int, str] = {
     EXIT_NO_EXCUSE: "no excuse exists: a new skill must be demonstrated",
     EXIT_PLAN_INVALID: "plan invalid",
     EXIT_NO_EXCUSE_WITHIN_LIMIT: "no excuse within --max-size",
+    EXIT_NOT_TAUGHT: "teaching ended, the task still unsolved (rounds used up, no demo)",
     EXIT_TIME_LIMIT: "time limit reached",
     EXIT_TOO_LARGE: "task too large to ground",
     EXIT_MEMORY: "out of memory",

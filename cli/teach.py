@@ -1,0 +1,110 @@
+"""``guided-lfd teach``: the whole guided-teaching loop, round by round, until the robot can plan its task."""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+from typing import Annotated
+
+import typer
+
+from cli.common import JsonOption, QuietOption, TimeLimitOption, check_time_limit, command, help_footer, ui
+from guided_lfd import errors
+
+
+class _Prompted:
+    """On a terminal: ask the demonstrator for each round's trace, after showing the request."""
+
+    def demonstrate(self, folder, state, request, problem):
+        from guided_lfd.demonstration.trace import default_state_path
+
+        answer = typer.prompt("Path of the demonstration's trace CSV (empty: stop)", default="", show_default=False,
+                              err=True)
+        if not answer.strip():
+            return None
+        return Path(answer.strip()), Path(default_state_path(answer.strip()))
+
+
+class _Chain:
+    """The given traces first, then (on a terminal) prompts; the simulated human instead when one is given."""
+
+    def __init__(self, simulate, traces: list[Path], prompt: bool) -> None:
+        self.simulate, self.traces, self.prompt = simulate, traces, prompt
+
+    def demonstrate(self, folder, state, request, problem):
+        from guided_lfd.teach import GivenTraces
+
+        ui.info(f"[bold]request[/]: {'; '.join(str(c) for c in request)}")
+        if self.traces:
+            return GivenTraces(self.traces).demonstrate(folder, state, request, problem)
+        if self.simulate is not None:
+            return self.simulate.demonstrate(folder, state, request, problem)
+        return _Prompted().demonstrate(folder, state, request, problem) if self.prompt else None
+
+
+@help_footer(
+    example="guided-lfd teach data/domains/kitchen-2/robot.pddl \\\n"
+            "    data/domains/kitchen-2/problem.pddl \\\n"
+            "    --simulate data/domains/kitchen-2/human.pddl -o session",
+    exit_codes=(errors.EXIT_NO_EXCUSE, errors.EXIT_NOT_TAUGHT, errors.EXIT_TIME_LIMIT, errors.EXIT_INPUT_FILE,
+                errors.EXIT_PDDL_SYNTAX, errors.EXIT_PDDL_SEMANTIC, errors.EXIT_UNSUPPORTED, errors.EXIT_MISMATCH,
+                errors.EXIT_TRACE, errors.EXIT_BAD_OPTION, errors.EXIT_OUTPUT),
+    success="the robot can plan its task (taught, or already able)",
+)
+@command
+def teach(
+    robot: Annotated[str, typer.Argument(metavar="ROBOT", help="The robot's domain (its skills).")],
+    problem: Annotated[str, typer.Argument(metavar="PROBLEM", help="The task to teach.")],
+    session: Annotated[Path, typer.Option("-o", "--output", metavar="SESSION_DIR",
+                                          help="Folder for every round's files, robot.pddl, session.json and "
+                                               "session.md.")] = Path("session"),
+    demo: Annotated[list[Path] | None, typer.Option("--demo", metavar="TRACE",
+                                                    help="A demonstration's trace CSV (its state file beside it, "
+                                                         "TRACE.state.csv); repeatable, one per round, in order.")] = None,
+    simulate: Annotated[str | None, typer.Option("--simulate", metavar="HUMAN",
+                                                 help="Simulate the demonstrator with this human domain: its "
+                                                      "shortest plan to each request, rendered as a hand trace.")] = None,
+    max_rounds: Annotated[int, typer.Option("--max-rounds", metavar="N", help="Stop after N rounds.")] = 5,
+    json_out: JsonOption = False,
+    time_limit: TimeLimitOption = None,
+    quiet: QuietOption = False,
+) -> None:
+    """Teach the robot its task, one demonstration per round.
+
+    Each round asks for the minimal excuse (in the paper's words: Open
+    PinkDrawer), says why the robot needs it and what to leave as it is, takes
+    the next --demo trace (or a simulated one with --simulate, or asks for a
+    path on a terminal), segments it, learns and merges its skills and
+    re-plans.  SESSION_DIR/session.json (format guided-lfd/teach) records
+    every round.
+    """
+    from guided_lfd.excuse.engine import ExcuseOptions
+    from guided_lfd.io import write_text
+    from guided_lfd.pddl.reader import parse_domain, parse_task
+    from guided_lfd.teach import SimulatedHuman, teach as run_teach
+
+    if max_rounds < 1:
+        raise errors.OptionError(f"--max-rounds {max_rounds}: expected a number of rounds >= 1")
+    time_limit = check_time_limit(time_limit)
+    robot_domain, task = parse_task(robot, problem)
+    ui.reading_warnings(robot_domain)
+    human = SimulatedHuman(parse_domain(simulate)) if simulate else None
+    demonstrator = _Chain(human, list(demo or []), prompt=sys.stdin.isatty() and not json_out)
+    session_obj = run_teach(robot_domain, task, demonstrator, session, max_rounds,
+                            ExcuseOptions(time_limit=time_limit))
+    write_text(session / "session.json", session_obj.to_json())
+    write_text(session / "session.md", session_obj.to_markdown())
+    if json_out:
+        write_text("-", session_obj.to_json())
+    for r in session_obj.rounds:
+        ui.info(f"round {r.index}: {'; '.join(r.request_text)}; demonstrated {r.demonstration_length} action(s), "
+                f"learned {', '.join(r.learned_actions) or 'nothing new'}"
+                + ("" if r.request_met is not False else f"; not done: {', '.join(str(c) for c in r.unmet)}"))
+    codes = {"solved": 0, "already-solvable": 0, "no-excuse": errors.EXIT_NO_EXCUSE,
+             "timeout": errors.EXIT_TIME_LIMIT}
+    code = codes.get(session_obj.status, errors.EXIT_NOT_TAUGHT)
+    if code:
+        ui.error(f"teaching ended: {session_obj.status} after {len(session_obj.rounds)} round(s) "
+                 f"(see {session / 'session.md'})")
+        raise typer.Exit(code)
+    ui.info(f"taught in {len(session_obj.rounds)} round(s); the robot's domain is {session / 'robot.pddl'}")

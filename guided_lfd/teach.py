@@ -1,0 +1,326 @@
+"""Guided teaching, the paper's whole loop: excuse -> request -> demonstration -> learn -> merge -> re-plan.
+
+Each round asks for the demonstration the robot needs (its minimal excuse,
+in the paper's words: ``Open PinkDrawer``), says why it needs it and what to
+leave as it is, takes the demonstration (a hand trace; or, simulated, the
+human model's shortest plan to the request rendered as one), segments it,
+learns its skills, merges them into the robot's domain and re-plans from
+the state the demonstration left.  Rounds go on until the robot can plan
+the task, no excuse exists, or the rounds run out.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field, replace
+from pathlib import Path
+from typing import Any, Protocol
+
+from guided_lfd.demonstration.trace import HAND_PREDICATES
+from guided_lfd.excuse.change import Change, excuse_state
+from guided_lfd.excuse.engine import ExcuseOptions, describe_change, find_excuses
+from guided_lfd.excuse.status import ExcuseStatus
+from guided_lfd.io import json_document, write_text
+from guided_lfd.pddl.model import Atom, Domain, Problem
+from guided_lfd.pddl.writer import domain_to_pddl
+from guided_lfd.validation import PlanStep
+
+__all__ = ["Round", "TeachSession", "SimulatedHuman", "GivenTraces", "teach", "keep_facts"]
+
+
+class Demonstrator(Protocol):
+    """Whoever demonstrates: given the round's folder, the world's state and the request, a hand trace."""
+
+    def demonstrate(self, folder: Path, state: frozenset[Atom], request: list[Change],
+                    problem: Problem) -> tuple[Path, Path] | None:
+        """(trace CSV, state CSV) of the demonstration, or None when there is none to give."""
+        ...
+
+
+@dataclass
+class Round:
+    """One round of teaching: what was asked, why, what came of it."""
+
+    index: int
+    excuse: list[Change]
+    request: list[Change]
+    request_text: list[str]
+    why: list[str]
+    keep: list[Atom]
+    keep_text: list[str]
+    demonstration_length: int | None = None  # demonstrated actions (segments that act)
+    learned_actions: list[str] = field(default_factory=list)
+    request_met: bool | None = None
+    unmet: list[Change] = field(default_factory=list)  # the request's changes the demonstration did not make
+    solvable_after: bool | None = None
+    files: dict[str, str] = field(default_factory=dict)
+
+    def to_dict(self) -> dict[str, Any]:
+        """The round as ``session.json`` has it."""
+        return {
+            "round": self.index, "excuse": [str(c) for c in self.excuse], "request": [str(c) for c in self.request],
+            "request_text": self.request_text, "why": self.why, "keep": [str(a) for a in self.keep],
+            "keep_text": self.keep_text, "demonstration_length": self.demonstration_length,
+            "learned_actions": self.learned_actions, "request_met": self.request_met,
+            "unmet": [str(c) for c in self.unmet], "solvable_after": self.solvable_after, "files": self.files,
+        }
+
+
+@dataclass
+class TeachSession:
+    """A whole teaching session: its rounds, how it ended, and the robot's plan at the end."""
+
+    robot: str
+    problem: str
+    status: str  # solved | already-solvable | no-excuse | no-demonstration | max-rounds
+    rounds: list[Round]
+    plan: list[PlanStep] | None  # the robot's plan from the state the session ended in
+    plans_original_task: bool | None  # whether the taught robot plans the task from its original state
+    robot_domain: str  # the taught domain's file
+
+    @property
+    def solved(self) -> bool:
+        """Whether the robot can plan the task at the end."""
+        return self.status in ("solved", "already-solvable")
+
+    def to_dict(self) -> dict[str, Any]:
+        """The body of ``session.json`` (format ``guided-lfd/teach``, version 1)."""
+        return {"robot": self.robot, "problem": self.problem, "solved": self.solved, "status": self.status,
+                "rounds": [r.to_dict() for r in self.rounds],
+                "plan": None if self.plan is None else [str(s) for s in self.plan],
+                "plans_original_task": self.plans_original_task, "robot_domain": self.robot_domain}
+
+    def to_json(self) -> str:
+        """The ``session.json`` document."""
+        return json_document("teach", self.to_dict())
+
+    def to_markdown(self) -> str:
+        """``session.md``: the rounds as a person reads them."""
+        lines = [f"# Teaching session: {self.problem}", "", f"Robot: `{self.robot}`; status: **{self.status}**.", ""]
+        for r in self.rounds:
+            lines += [f"## Round {r.index}", "", "Request: " + "; ".join(r.request_text) + ".", ""]
+            lines += [f"- why: {w}" for w in r.why]
+            if r.keep_text:
+                lines.append("- leave as it is: " + "; ".join(r.keep_text))
+            lines.append(f"- demonstrated actions: {r.demonstration_length if r.demonstration_length is not None else '-'}"
+                         f"; learned: {', '.join(r.learned_actions) or '-'}")
+            if r.request_met is False:
+                lines.append("- the demonstration did not make: " + ", ".join(str(c) for c in r.unmet))
+            lines.append("")
+        if self.plan is not None:
+            lines += ["## The robot's plan", ""] + [f"{i}. `{s}`" for i, s in enumerate(self.plan, 1)] + [""]
+        return "\n".join(lines)
+
+
+def keep_facts(robot: Domain, problem: Problem, state: frozenset[Atom], changes: list[Change],
+               plan: list[PlanStep]) -> list[Atom]:
+    """The facts true now that the robot's plan from the excuse state relies on, no step of it making them true.
+
+    Asking the demonstrator to leave them as they are prevents misdirected
+    guidance (a chair put back in front of the drawer the robot needs).
+    """
+    schemas = {a.name: a for a in robot.actions}
+    current = set(excuse_state(state, changes))
+    made: set[Atom] = set()
+    keep: list[Atom] = []
+    for step in plan:
+        schema = schemas[step.action]
+        binding = {v: a for (v, _), a in zip(schema.params, step.args)}
+        for lit in schema.precondition:
+            atom = lit.atom.substitute(binding)
+            if (lit.positive and atom in state and atom not in made and atom not in keep
+                    and atom.predicate not in HAND_PREDICATES and atom.predicate != "="):
+                keep.append(atom)
+        adds = {a.substitute(binding) for a in schema.add}
+        dels = {a.substitute(binding) for a in schema.delete}
+        made |= adds - current
+        current = (current - dels) | adds
+    # Facts no skill of the robot changes (graspable) are the world's structure: nothing to ask about.
+    static = set(robot.predicates) - robot.fluent_predicates()
+    changed = {c.atom for c in changes}
+    return [a for a in keep if a not in changed and a.predicate not in static]
+
+
+def _why(report, robot: Domain, problem: Problem) -> list[str]:
+    """Why the robot needs the demonstration: each requested change it has no skill for, or that it cannot
+    make from here, on the way to the goal it cannot reach."""
+    spellings = report.spellings
+    goal = ", ".join(describe_change(Change(l.atom, l.positive), spellings) for l in problem.goal)
+    out = [f"no skill of the robot makes {g} true" for g in report.unachievable_goals]
+    for change in report.excuse.changes:
+        effects = (a.add if change.added else a.delete for a in robot.actions)
+        can = any(atom.predicate == change.atom.predicate for effect in effects for atom in effect)
+        what = describe_change(change, spellings)
+        out.append(f"{what}: no skill of the robot does this, and its plan to {goal} needs it" if not can else
+                   f"{what}: the robot cannot do this from here, and its plan to {goal} needs it")
+    return out
+
+
+# -- demonstrators -----------------------------------------------------------------------
+
+#: Where the kitchens' objects stand (the study's scene); other objects get places on a grid.
+_KNOWN_POSITIONS = {
+    "redplate": (0.5, 0.2, 0.8), "table": (0.5, 0.2, 0.75), "counter": (0.9, 0.2, 0.9),
+    "pinkdrawer": (-0.1, 0.45, 0.6), "bluedrawer": (-0.4, 0.45, 0.6), "corner": (-1.0, -0.5, 0.5),
+    "chair": (-0.1, 0.1, 0.5),
+}
+
+
+def _scene(problem: Problem, domain: Domain):
+    """A scene for ``problem``'s objects: the study's positions where known, a grid of places otherwise."""
+    from guided_lfd.demonstration.render import Scene
+
+    objects = {**domain.constants, **problem.objects}
+    positions = {}
+    for k, obj in enumerate(sorted(objects)):
+        positions[obj] = _KNOWN_POSITIONS.get(obj, (-0.9 + 0.35 * (k % 6), 0.3 + 0.3 * (k // 6), 0.8))
+    return Scene(positions=positions, types=dict(objects), spellings={**domain.spellings, **problem.spellings})
+
+
+@dataclass
+class SimulatedHuman:
+    """A demonstrator simulated by a human model: its shortest plan to the request, rendered as a hand trace."""
+
+    human: Domain
+    rate_hz: float = 90.0
+    seed: int = 0
+
+    def demonstrate(self, folder: Path, state: frozenset[Atom], request: list[Change],
+                    problem: Problem) -> tuple[Path, Path] | None:
+        """Render the human's optimal plan from ``state`` to a state where ``request`` holds (None: no plan)."""
+        from guided_lfd.demonstration.render import Noise, render, script_for_plan
+        from guided_lfd.evaluate import excuse_goal, optimal_plan
+
+        plan = optimal_plan(self.human, replace(problem, init=state), goal=excuse_goal(request))
+        if not plan:
+            return None
+        script = script_for_plan([(s.action, s.args) for s in plan], self.human, set(state))
+        rendering = render(script, _scene(problem, self.human), set(state), self.rate_hz, Noise(seed=self.seed))
+        trace, states = folder / "demonstration.csv", folder / "demonstration.state.csv"
+        write_text(trace, rendering.trace_csv)
+        write_text(states, rendering.state_csv)
+        write_text(folder / "demonstration.labels.csv", rendering.labels_csv)
+        return trace, states
+
+
+@dataclass
+class GivenTraces:
+    """Demonstrations recorded beforehand (``--demo``), one per round, in order; each with its state file."""
+
+    traces: list[Path]
+
+    def demonstrate(self, folder: Path, state: frozenset[Atom], request: list[Change],
+                    problem: Problem) -> tuple[Path, Path] | None:
+        """The next trace and its state file (``TRACE.state.csv`` beside it), or None when none is left."""
+        from guided_lfd.demonstration.trace import default_state_path
+
+        if not self.traces:
+            return None
+        trace = self.traces.pop(0)
+        return trace, Path(default_state_path(str(trace)))
+
+
+# -- the loop ----------------------------------------------------------------------------
+
+def teach(robot: Domain, problem: Problem, demonstrator: Demonstrator, out: Path, max_rounds: int = 5,
+          options: ExcuseOptions | None = None) -> TeachSession:
+    """Teach the robot its task round by round (see the module docstring); every round's files go under ``out``.
+
+    ``out/robot.pddl`` is the robot's domain after each round; ``session.json``
+    and ``session.md`` are written by the caller from the returned session.
+    """
+    out.mkdir(parents=True, exist_ok=True)
+    state, current, rounds = problem.init, robot, []
+    status, final_plan = "max-rounds", None
+    for k in range(1, max_rounds + 1):
+        folder = out / f"round-{k}"
+        folder.mkdir(parents=True, exist_ok=True)
+        task = replace(problem, init=state)
+        report = find_excuses(current, task, options)
+        write_text(folder / "excuse.json", report.to_json())
+        if report.status is ExcuseStatus.ALREADY_SOLVABLE:
+            status, final_plan = ("already-solvable" if k == 1 else "solved"), report.robot_plan
+            break
+        if report.excuse is None:
+            status = "no-excuse" if report.status is not ExcuseStatus.TIMEOUT else "timeout"
+            break
+        rnd = _request(k, current, task, report)
+        rnd.files["excuse"] = str(folder / "excuse.json")
+        rounds.append(rnd)
+        given = demonstrator.demonstrate(folder, state, rnd.request, task)
+        if given is None:
+            status = "no-demonstration"
+            break
+        current, state = _learn_round(rnd, folder, out, current, task, given)
+        outcome = _replan(current, replace(problem, init=state))
+        rnd.solvable_after = outcome is not None
+        if outcome is not None:
+            status, final_plan = "solved", outcome
+            break
+    write_text(out / "robot.pddl", domain_to_pddl(current, header=f"The robot's domain after teaching {problem.path}"))
+    return TeachSession(robot.path, problem.path, status, rounds, final_plan,
+                        _replan(current, problem) is not None, str(out / "robot.pddl"))
+
+
+def _request(k: int, robot: Domain, task: Problem, report) -> Round:
+    """The round's request: the minimal excuse, why the robot needs it, what to leave as it is."""
+    spellings = report.spellings
+    excuse = report.excuse.changes
+    keep = keep_facts(robot, task, task.init, excuse, report.excuse.plan)
+    from guided_lfd.pddl.model import pretty_atom
+
+    return Round(k, excuse, list(excuse), [describe_change(c, spellings) for c in excuse], _why(report, robot, task),
+                 keep, [f"keep {pretty_atom(a, spellings)}" for a in keep])
+
+
+def _learn_round(rnd: Round, folder: Path, out: Path, robot: Domain, task: Problem,
+                 given: tuple[Path, Path]) -> tuple[Domain, frozenset[Atom]]:
+    """Segment the demonstration, learn its skills, merge them into the robot; (new domain, state it left)."""
+    from guided_lfd.demonstration.learn import ground_actions, learn_domain
+    from guided_lfd.demonstration.segment import segment, segments_document
+    from guided_lfd.demonstration.trace import load_demonstration
+    from guided_lfd.merge import merge_domains
+
+    trace, states = given
+    demo = load_demonstration(str(trace), str(states))
+    acting = [s for s in segment(demo) if s.activity != "Idle"]
+    doc = segments_document(demo, acting, str(states))
+    doc["trace"] = str(trace)
+    write_text(folder / "segments.json", json_document("segments", doc))
+    rnd.demonstration_length = len(ground_actions(doc, str(trace)))
+    learned = learn_domain([(str(trace), doc)], name=f"learned-round-{rnd.index}")
+    write_text(folder / "learned.pddl", domain_to_pddl(learned, header=f"Learned from {trace}"))
+    merged = merge_domains([robot, learned], name=robot.name).domain
+    known = {a.name for a in robot.actions}
+    rnd.learned_actions = [a.name for a in merged.actions if a.name not in known]
+    write_text(folder / "robot.pddl", domain_to_pddl(merged, header=f"The robot's domain after round {rnd.index}"))
+    write_text(out / "robot.pddl", domain_to_pddl(merged, header=f"The robot's domain after round {rnd.index}"))
+    rnd.files.update(trace=str(trace), state=str(states), segments=str(folder / "segments.json"),
+                     learned=str(folder / "learned.pddl"), robot=str(folder / "robot.pddl"))
+    state = _state_after(demo, task, merged)
+    rnd.unmet = [c for c in rnd.request if (c.atom in state) != c.added]
+    rnd.request_met = not rnd.unmet
+    return merged, state
+
+
+def _state_after(demo, task: Problem, robot: Domain) -> frozenset[Atom]:
+    """The world as the demonstration left it: the trace's fluents at its end, the rest as it was."""
+    end = float(demo.frames["time"].max())
+    observed = demo.state_at(end)
+    traced = {a.predicate for a in demo.initial} | {a.predicate for _, a, _ in demo.events}
+    state = {a for a in task.init if a.predicate not in traced and a.predicate not in HAND_PREDICATES}
+    state |= set(observed)
+    held = {str(v).strip().lower() for v in demo.frames.groupby("hand")["in_hand"].last() if str(v).strip()
+            and str(v) != "nan"}
+    if "in_hand" in robot.predicates:
+        state |= {Atom("in_hand", (obj,)) for obj in held}
+    if "hand_free" in robot.predicates and not held:
+        state.add(Atom("hand_free"))
+    return frozenset(state)
+
+
+def _replan(robot: Domain, task: Problem) -> list[PlanStep] | None:
+    """The robot's validated optimal plan for ``task``, or None when it has none."""
+    from guided_lfd.api import plan
+
+    result = plan(robot, task)
+    return result.plan

@@ -1,0 +1,125 @@
+"""guided-lfd teach: the whole loop (excuse -> request -> demonstration -> learn -> merge -> re-plan)."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+
+from conftest import DOMAINS, kitchen
+from guided_lfd.excuse.change import Change
+from guided_lfd.pddl.model import Atom
+from guided_lfd.pddl.reader import parse_domain, parse_task
+from guided_lfd.teach import SimulatedHuman, teach
+
+HUMAN = {k: str(DOMAINS / f"kitchen-{k}" / "human.pddl") for k in (1, 2)}
+
+#: session.json's documented keys and their types (README: JSON formats, guided-lfd/teach).
+SESSION_KEYS = {"format": str, "format_version": int, "robot": str, "problem": str, "solved": bool, "status": str,
+                "rounds": list, "plan": (list, type(None)), "plans_original_task": bool, "robot_domain": str}
+ROUND_KEYS = {"round": int, "excuse": list, "request": list, "request_text": list, "why": list, "keep": list,
+              "keep_text": list, "demonstration_length": (int, type(None)), "learned_actions": list,
+              "request_met": (bool, type(None)), "unmet": list, "solvable_after": (bool, type(None)), "files": dict}
+
+
+def _check_schema(doc: dict) -> None:
+    assert set(doc) == set(SESSION_KEYS) and (doc["format"], doc["format_version"]) == ("guided-lfd/teach", 1)
+    for key, kind in SESSION_KEYS.items():
+        assert isinstance(doc[key], kind), key
+    for rnd in doc["rounds"]:
+        assert set(rnd) == set(ROUND_KEYS)
+        for key, kind in ROUND_KEYS.items():
+            assert isinstance(rnd[key], kind), key
+        assert all(c[0] in "+-" and c[1] == "(" for c in rnd["request"])
+
+
+@pytest.mark.parametrize("k,asked,learned", [(1, ["+(open pinkdrawer)"], ["open_drawer"]),
+                                               (2, ["+(clear pinkdrawer)"], ["push_obstacle"])])
+def test_simulated_teaching_solves_each_kitchen_in_one_round(k, asked, learned, runner, app, tmp_path):
+    robot, problem = kitchen(k)
+    result = runner.invoke(app, ["teach", robot, problem, "--simulate", HUMAN[k], "-o", str(tmp_path), "--json",
+                                 "--quiet"])
+    assert result.exit_code == 0, result.output
+    doc = json.loads(result.stdout)
+    assert doc == json.loads((tmp_path / "session.json").read_text())
+    _check_schema(doc)
+    assert doc["solved"] and doc["plans_original_task"] and len(doc["rounds"]) == 1
+    assert doc["rounds"][0]["request"] == asked and doc["rounds"][0]["learned_actions"] == learned
+    assert doc["rounds"][0]["request_met"] is True and doc["rounds"][0]["demonstration_length"] == 1
+    # Every round's files are there, and the taught domain plans the task.
+    for name in ("excuse.json", "demonstration.csv", "demonstration.state.csv", "segments.json", "learned.pddl",
+                 "robot.pddl"):
+        assert (tmp_path / "round-1" / name).stat().st_size > 0, name
+    taught, task = parse_task(str(tmp_path / "robot.pddl"), problem)
+    assert {a.name for a in taught.actions} >= set(learned)
+    assert (tmp_path / "session.md").read_text().startswith(f"# Teaching session: {problem}")
+
+
+def test_the_request_says_why_and_what_to_leave_as_it_is(tmp_path):
+    robot, problem = parse_task(*kitchen(1))
+    session = teach(robot, problem, SimulatedHuman(parse_domain(HUMAN[1])), tmp_path)
+    rnd = session.rounds[0]
+    assert rnd.request_text == ["Open PinkDrawer"]
+    assert rnd.why == ["Open PinkDrawer: no skill of the robot does this, and its plan to Inside RedPlate, "
+                       "PinkDrawer needs it"]
+    # The robot's plan takes the plate from the table: moving it would misdirect the demonstration.
+    assert Atom("on_top", ("redplate", "table")) in rnd.keep and "keep On_top RedPlate, Table" in rnd.keep_text
+    assert all(a.predicate != "graspable" for a in rnd.keep)  # nothing can change it: nothing to ask
+
+
+def test_a_robot_that_can_neither_open_nor_move_the_chair_is_taught_both_in_one_round(tmp_path):
+    robot, problem = parse_task(str(DOMAINS / "kitchen-2" / "robot-no-open.pddl"), kitchen(2)[1])
+    session = teach(robot, problem, SimulatedHuman(parse_domain(HUMAN[2])), tmp_path)
+    assert session.status == "solved" and len(session.rounds) == 1 and session.plans_original_task
+    assert [str(c) for c in session.rounds[0].excuse] == ["+(clear pinkdrawer)", "+(open pinkdrawer)"]
+    assert set(session.rounds[0].learned_actions) == {"push_obstacle", "open_drawer"}
+
+
+def test_a_demonstration_that_misses_the_request_gives_a_second_round(runner, app, tmp_path):
+    robot, problem = kitchen(2)
+    # A demonstration of something else: opening BlueDrawer (a skill the robot has) when
+    # clearing PinkDrawer (moving the chair, which it cannot do) was asked for.
+    wrong = tmp_path / "wrong"
+    wrong.mkdir()
+    task = parse_task(robot, problem)[1]
+    trace, _ = SimulatedHuman(parse_domain(HUMAN[2])).demonstrate(
+        wrong, task.init, [Change(Atom("open", ("bluedrawer",)), True)], task)
+    session = tmp_path / "session"
+    result = runner.invoke(app, ["teach", robot, problem, "--demo", str(trace), "--simulate", HUMAN[2],
+                                 "-o", str(session), "--json", "--quiet"])
+    assert result.exit_code == 0, result.output
+    doc = json.loads(result.stdout)
+    first, second = doc["rounds"]
+    assert (first["request"], first["request_met"], first["unmet"], first["solvable_after"]) == (
+        ["+(clear pinkdrawer)"], False, ["+(clear pinkdrawer)"], False)
+    assert first["learned_actions"] == []  # opening a drawer: the robot knew it already
+    # Round two asks again, from the state the first demonstration left (BlueDrawer open).
+    second_task = json.loads((session / "round-2" / "excuse.json").read_text())
+    assert "(open bluedrawer)" in second_task["excuse"]["state"]
+    assert (second["request"], second["request_met"], doc["status"]) == (["+(clear pinkdrawer)"], True, "solved")
+    assert "the demonstration did not make: +(clear pinkdrawer)" in (session / "session.md").read_text()
+
+
+def test_no_demonstration_ends_the_session_with_its_exit_code(runner, app, tmp_path):
+    robot, problem = kitchen(2)
+    result = runner.invoke(app, ["teach", robot, problem, "-o", str(tmp_path), "--json"])
+    assert result.exit_code == 14
+    doc = json.loads(result.stdout)
+    _check_schema(doc)
+    assert doc["status"] == "no-demonstration" and not doc["solved"] and doc["rounds"][0]["request_met"] is None
+    assert "teaching ended: no-demonstration after 1 round(s)" in result.stderr
+
+
+def test_an_already_solvable_task_needs_no_round(runner, app, tmp_path):
+    _, problem = kitchen(1)
+    result = runner.invoke(app, ["teach", HUMAN[1], problem, "-o", str(tmp_path), "--json", "--quiet"])
+    assert result.exit_code == 0
+    doc = json.loads(result.stdout)
+    assert (doc["status"], doc["rounds"], doc["solved"]) == ("already-solvable", [], True) and doc["plan"]
+
+
+def test_max_rounds_must_be_positive(runner, app, tmp_path):
+    robot, problem = kitchen(1)
+    result = runner.invoke(app, ["teach", robot, problem, "-o", str(tmp_path), "--max-rounds", "0"])
+    assert result.exit_code == 37 and "--max-rounds 0" in result.stderr
