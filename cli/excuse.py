@@ -60,6 +60,14 @@ def excuse(
                                  help="Also fix every predicate no action of DOMAIN changes "
                                       "(e.g. the human's domain: the world's unchangeable structure).")
     ] = None,
+    prefer: Annotated[
+        str | None, typer.Option("--prefer", metavar="CRITERION",
+                                 help="'demonstration': of the minimal excuses, the one whose predicted "
+                                      "demonstration (the --human model's shortest plan to it) is shortest.")
+    ] = None,
+    human: Annotated[
+        str | None, typer.Option("--human", metavar="DOMAIN", help="The human model --prefer predicts with.")
+    ] = None,
     excuse_problem: Annotated[
         str | None, typer.Option("--excuse-problem", metavar="FILE",
                                  help="Also write the problem with the excuse state as its initial state to FILE "
@@ -77,25 +85,35 @@ def excuse(
     robot's own skills reach the goal: the human then demonstrates only how to
     reach it. The robot's plan from the excuse state is printed, validated.
     """
+    if prefer not in (None, "demonstration"):
+        raise errors.OptionError(f"--prefer {prefer}: expected 'demonstration'")
+    if prefer and not human:
+        raise errors.OptionError("--prefer demonstration: needs the human model (--human DOMAIN)")
     if strategy not in STRATEGIES:
         raise errors.OptionError(f"--strategy {strategy}: unknown strategy (expected one of: {', '.join(STRATEGIES)})")
     if max_size is not None and max_size < 0:
         raise errors.OptionError(f"--max-size {max_size}: expected a number of changes >= 0")
     time_limit = check_time_limit(time_limit)
     apply_memory_limit(memory_limit)
-    check_files([domain, problem, invariants_from, fixed_from], {"--output": output, "--excuse-problem": excuse_problem})
+    check_files([domain, problem, invariants_from, fixed_from, human],
+                {"--output": output, "--excuse-problem": excuse_problem})
     # The time limit bounds the whole run: reading the files counts too.
     started = started_at()
     with watchdog(deadline_after(time_limit, started), "reading the input"):
         dom, prob = parse_task(domain, problem)
         options = ExcuseOptions(
             semantics=semantics, strategy=strategy, fixed=[f.lower() for f in fixed or []], costs=list(cost or []),
-            all_minimal=all_minimal, max_size=max_size, time_limit=time_limit,
+            all_minimal=all_minimal or prefer is not None, max_size=max_size, time_limit=time_limit,
             invariants_from=parse_domain(invariants_from) if invariants_from else None,
             fixed_from=parse_domain(fixed_from) if fixed_from else None, started=started,
         )
     ui.reading_warnings(dom, options.invariants_from, options.fixed_from)
+    human_domain = parse_domain(human) if human else None
     report = _run(dom, prob, options)
+    if prefer and human_domain is not None and report.excuses:
+        from guided_lfd.excuse.preference import apply_preference
+
+        apply_preference(report, human_domain, dom, prob, keep_all=all_minimal)
     spellings = report.spellings  # predicates as the domain writes them
     as_json = output_format(output, json_out) == "json"
     text = report.to_json() if as_json else report.to_text()

@@ -64,6 +64,16 @@ def teach(
     simulate: Annotated[str | None, typer.Option("--simulate", metavar="HUMAN",
                                                  help="Simulate the demonstrator with this human domain: its "
                                                       "shortest plan to each request, rendered as a hand trace.")] = None,
+    human_model: Annotated[str | None, typer.Option("--human", metavar="DOMAIN",
+                                                    help="The human model (default: the --simulate domain): "
+                                                         "excuses only change what the human can, and the request "
+                                                         "is the smallest part of the excuse that suffices.")] = None,
+    prefer: Annotated[str | None, typer.Option("--prefer", metavar="CRITERION",
+                                               help="'demonstration': ask for the minimal excuse with the "
+                                                    "shortest predicted demonstration (needs a human model).")] = None,
+    redundancy: Annotated[bool, typer.Option("--redundancy/--no-redundancy",
+                                             help="Ask only for the part of the excuse that suffices "
+                                                  "(with a human model).")] = True,
     max_rounds: Annotated[int, typer.Option("--max-rounds", metavar="N", help="Stop after N rounds.")] = 5,
     json_out: JsonOption = False,
     time_limit: TimeLimitOption = None,
@@ -85,13 +95,19 @@ def teach(
 
     if max_rounds < 1:
         raise errors.OptionError(f"--max-rounds {max_rounds}: expected a number of rounds >= 1")
+    if prefer not in (None, "demonstration"):
+        raise errors.OptionError(f"--prefer {prefer}: expected 'demonstration'")
     time_limit = check_time_limit(time_limit)
     robot_domain, task = parse_task(robot, problem)
     ui.reading_warnings(robot_domain)
     human = SimulatedHuman(parse_domain(simulate)) if simulate else None
+    model = parse_domain(human_model) if human_model else human.human if human else None
+    if prefer and model is None:
+        raise errors.OptionError("--prefer demonstration: needs a human model (--human DOMAIN or --simulate HUMAN)")
     demonstrator = _Chain(human, list(demo or []), prompt=sys.stdin.isatty() and not json_out)
     session_obj = run_teach(robot_domain, task, demonstrator, session, max_rounds,
-                            ExcuseOptions(time_limit=time_limit))
+                            ExcuseOptions(time_limit=time_limit), human=model, prefer=prefer is not None,
+                            redundancy=redundancy)
     write_text(session / "session.json", session_obj.to_json())
     write_text(session / "session.md", session_obj.to_markdown())
     if json_out:

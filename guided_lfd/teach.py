@@ -53,6 +53,7 @@ class Round:
     unmet: list[Change] = field(default_factory=list)  # the request's changes the demonstration did not make
     solvable_after: bool | None = None
     files: dict[str, str] = field(default_factory=dict)
+    preference: str | None = None  # why this excuse among the minimal ones (--prefer demonstration)
 
     def to_dict(self) -> dict[str, Any]:
         """The round as ``session.json`` has it."""
@@ -62,6 +63,7 @@ class Round:
             "keep_text": self.keep_text, "demonstration_length": self.demonstration_length,
             "learned_actions": self.learned_actions, "request_met": self.request_met,
             "unmet": [str(c) for c in self.unmet], "solvable_after": self.solvable_after, "files": self.files,
+            "preference": self.preference,
         }
 
 
@@ -98,6 +100,11 @@ class TeachSession:
         lines = [f"# Teaching session: {self.problem}", "", f"Robot: `{self.robot}`; status: **{self.status}**.", ""]
         for r in self.rounds:
             lines += [f"## Round {r.index}", "", "Request: " + "; ".join(r.request_text) + ".", ""]
+            if r.request != r.excuse:
+                lines.append("- the minimal excuse is " + " ".join(str(c) for c in r.excuse)
+                             + "; demonstrating the request makes the rest")
+            if r.preference:
+                lines.append(f"- {r.preference}")
             lines += [f"- why: {w}" for w in r.why]
             if r.keep_text:
                 lines.append("- leave as it is: " + "; ".join(r.keep_text))
@@ -140,13 +147,13 @@ def keep_facts(robot: Domain, problem: Problem, state: frozenset[Atom], changes:
     return [a for a in keep if a not in changed and a.predicate not in static]
 
 
-def _why(report, robot: Domain, problem: Problem) -> list[str]:
+def _why(report, robot: Domain, problem: Problem, excuse: list[Change]) -> list[str]:
     """Why the robot needs the demonstration: each requested change it has no skill for, or that it cannot
     make from here, on the way to the goal it cannot reach."""
     spellings = report.spellings
     goal = ", ".join(describe_change(Change(l.atom, l.positive), spellings) for l in problem.goal)
     out = [f"no skill of the robot makes {g} true" for g in report.unachievable_goals]
-    for change in report.excuse.changes:
+    for change in excuse:
         effects = (a.add if change.added else a.delete for a in robot.actions)
         can = any(atom.predicate == change.atom.predicate for effect in effects for atom in effect)
         what = describe_change(change, spellings)
@@ -194,12 +201,31 @@ class SimulatedHuman:
         if not plan:
             return None
         script = script_for_plan([(s.action, s.args) for s in plan], self.human, set(state))
-        rendering = render(script, _scene(problem, self.human), set(state), self.rate_hz, Noise(seed=self.seed))
+        scene = _scene(problem, self.human)
+        _check_drawable(script, scene, plan, self.human)
+        rendering = render(script, scene, set(state), self.rate_hz, Noise(seed=self.seed))
         trace, states = folder / "demonstration.csv", folder / "demonstration.state.csv"
         write_text(trace, rendering.trace_csv)
         write_text(states, rendering.state_csv)
         write_text(folder / "demonstration.labels.csv", rendering.labels_csv)
         return trace, states
+
+
+def _check_drawable(script, scene, plan: list[PlanStep], human: Domain) -> None:
+    """The renderer draws hand manipulation (take, put, open and close, push an obstacle away): a plan
+    with another kind of action (walking through a door) is refused in one line, not drawn wrongly."""
+    from guided_lfd.errors import UnsupportedFeatureError
+
+    needs_target = ("Put", "Push")
+    for step in script:
+        if step.activity == "Idle" or step.activity == "Release":
+            continue
+        if step.obj not in scene.positions or (step.activity in needs_target and step.target not in scene.positions):
+            actions = sorted({s.action for s in plan})
+            raise UnsupportedFeatureError(
+                f"--simulate renders hand manipulation (take, put, open or close, push an obstacle): the human's "
+                f"plan uses {', '.join(actions)}, which it cannot draw as hand activities (give --demo traces)",
+                human.locate(actions[0], ":action") if actions else None)
 
 
 @dataclass
@@ -222,13 +248,22 @@ class GivenTraces:
 # -- the loop ----------------------------------------------------------------------------
 
 def teach(robot: Domain, problem: Problem, demonstrator: Demonstrator, out: Path, max_rounds: int = 5,
-          options: ExcuseOptions | None = None) -> TeachSession:
+          options: ExcuseOptions | None = None, human: Domain | None = None, prefer: bool = False,
+          redundancy: bool = True) -> TeachSession:
     """Teach the robot its task round by round (see the module docstring); every round's files go under ``out``.
 
-    ``out/robot.pddl`` is the robot's domain after each round; ``session.json``
-    and ``session.md`` are written by the caller from the returned session.
+    With a ``human`` model, excuses change only what the human can change
+    (``fixed_from`` the human's domain), the request is the smallest part of
+    the excuse whose demonstration suffices (``redundancy``), and with
+    ``prefer`` the excuse with the shortest predicted demonstration is asked
+    for.  ``out/robot.pddl`` is the robot's domain after each round;
+    ``session.json`` and ``session.md`` are written by the caller from the
+    returned session.
     """
     out.mkdir(parents=True, exist_ok=True)
+    options = options or ExcuseOptions()
+    if human is not None:
+        options = replace(options, fixed_from=human, all_minimal=options.all_minimal or prefer)
     state, current, rounds = problem.init, robot, []
     status, final_plan = "max-rounds", None
     for k in range(1, max_rounds + 1):
@@ -243,7 +278,7 @@ def teach(robot: Domain, problem: Problem, demonstrator: Demonstrator, out: Path
         if report.excuse is None:
             status = "no-excuse" if report.status is not ExcuseStatus.TIMEOUT else "timeout"
             break
-        rnd = _request(k, current, task, report)
+        rnd = _request(k, current, task, report, human if prefer else None, human if redundancy else None)
         rnd.files["excuse"] = str(folder / "excuse.json")
         rounds.append(rnd)
         given = demonstrator.demonstrate(folder, state, rnd.request, task)
@@ -261,15 +296,24 @@ def teach(robot: Domain, problem: Problem, demonstrator: Demonstrator, out: Path
                         _replan(current, problem) is not None, str(out / "robot.pddl"))
 
 
-def _request(k: int, robot: Domain, task: Problem, report) -> Round:
-    """The round's request: the minimal excuse, why the robot needs it, what to leave as it is."""
-    spellings = report.spellings
-    excuse = report.excuse.changes
-    keep = keep_facts(robot, task, task.init, excuse, report.excuse.plan)
+def _request(k: int, robot: Domain, task: Problem, report, prefer_by: Domain | None,
+             reduce_by: Domain | None) -> Round:
+    """The round's request: the (preferred) minimal excuse or its smallest sufficient part, why the robot
+    needs it, what to leave as it is."""
+    from guided_lfd.excuse.preference import minimal_request, prefer_demonstration
     from guided_lfd.pddl.model import pretty_atom
 
-    return Round(k, excuse, list(excuse), [describe_change(c, spellings) for c in excuse], _why(report, robot, task),
-                 keep, [f"keep {pretty_atom(a, spellings)}" for a in keep])
+    spellings = report.spellings
+    chosen, preference = report.excuse, None
+    if prefer_by is not None and len(report.excuses) > 1:
+        index, preference = prefer_demonstration([e.changes for e in report.excuses], prefer_by, robot, task)
+        chosen = report.excuses[index]
+    excuse = chosen.changes
+    request = minimal_request(reduce_by, robot, task, excuse) if reduce_by is not None else list(excuse)
+    keep = keep_facts(robot, task, task.init, excuse, chosen.plan)
+    return Round(k, excuse, request, [describe_change(c, spellings) for c in request],
+                 _why(report, robot, task, excuse), keep, [f"keep {pretty_atom(a, spellings)}" for a in keep],
+                 preference=preference)
 
 
 def _learn_round(rnd: Round, folder: Path, out: Path, robot: Domain, task: Problem,

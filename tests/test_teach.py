@@ -20,7 +20,8 @@ SESSION_KEYS = {"format": str, "format_version": int, "robot": str, "problem": s
                 "rounds": list, "plan": (list, type(None)), "plans_original_task": bool, "robot_domain": str}
 ROUND_KEYS = {"round": int, "excuse": list, "request": list, "request_text": list, "why": list, "keep": list,
               "keep_text": list, "demonstration_length": (int, type(None)), "learned_actions": list,
-              "request_met": (bool, type(None)), "unmet": list, "solvable_after": (bool, type(None)), "files": dict}
+              "request_met": (bool, type(None)), "unmet": list, "solvable_after": (bool, type(None)), "files": dict,
+              "preference": (str, type(None))}
 
 
 def _check_schema(doc: dict) -> None:
@@ -68,12 +69,27 @@ def test_the_request_says_why_and_what_to_leave_as_it_is(tmp_path):
     assert all(a.predicate != "graspable" for a in rnd.keep)  # nothing can change it: nothing to ask
 
 
-def test_a_robot_that_can_neither_open_nor_move_the_chair_is_taught_both_in_one_round(tmp_path):
-    robot, problem = parse_task(str(DOMAINS / "kitchen-2" / "robot-no-open.pddl"), kitchen(2)[1])
-    session = teach(robot, problem, SimulatedHuman(parse_domain(HUMAN[2])), tmp_path)
-    assert session.status == "solved" and len(session.rounds) == 1 and session.plans_original_task
-    assert [str(c) for c in session.rounds[0].excuse] == ["+(clear pinkdrawer)", "+(open pinkdrawer)"]
-    assert set(session.rounds[0].learned_actions) == {"push_obstacle", "open_drawer"}
+def test_only_the_part_of_the_excuse_that_suffices_is_requested(runner, app, tmp_path):
+    """The paper's redundancy example (III-B-1): a robot that can neither open drawers nor move the chair.
+
+    The minimal excuse is to clear and open PinkDrawer; asking only "Open PinkDrawer" suffices, as the
+    human must clear it first.
+    """
+    robot, problem = str(DOMAINS / "kitchen-2" / "robot-no-open.pddl"), kitchen(2)[1]
+    result = runner.invoke(app, ["teach", robot, problem, "--simulate", HUMAN[2], "-o", str(tmp_path), "--json",
+                                 "--quiet"])
+    assert result.exit_code == 0, result.output
+    doc = json.loads(result.stdout)
+    (rnd,) = doc["rounds"]
+    assert rnd["excuse"] == ["+(clear pinkdrawer)", "+(open pinkdrawer)"]
+    assert (rnd["request"], rnd["request_text"]) == (["+(open pinkdrawer)"], ["Open PinkDrawer"])
+    assert rnd["request_met"] and set(rnd["learned_actions"]) == {"push_obstacle", "open_drawer"}
+    assert doc["solved"] and doc["plans_original_task"]  # the learned robot plans the original task
+    assert "the minimal excuse is +(clear pinkdrawer) +(open pinkdrawer)" in (tmp_path / "session.md").read_text()
+    # Without the redundancy step, the whole excuse is asked for.
+    plain = runner.invoke(app, ["teach", robot, problem, "--simulate", HUMAN[2], "-o", str(tmp_path / "plain"),
+                                "--json", "--quiet", "--no-redundancy"])
+    assert json.loads(plain.stdout)["rounds"][0]["request"] == ["+(clear pinkdrawer)", "+(open pinkdrawer)"]
 
 
 def test_a_demonstration_that_misses_the_request_gives_a_second_round(runner, app, tmp_path):
@@ -123,3 +139,31 @@ def test_max_rounds_must_be_positive(runner, app, tmp_path):
     robot, problem = kitchen(1)
     result = runner.invoke(app, ["teach", robot, problem, "-o", str(tmp_path), "--max-rounds", "0"])
     assert result.exit_code == 37 and "--max-rounds 0" in result.stderr
+
+
+ROOMS = Path(__file__).parent / "data" / "teach"
+
+
+def test_the_preferred_excuse_has_the_shortest_predicted_demonstration(runner, app):
+    """Case 1 (III-B-2): two minimal excuses, a door whose key is here (2 actions) and one whose key is in the
+    hall (4); the search's own order puts the far one first, the preference picks the near one and says why."""
+    robot, problem, human = (str(ROOMS / f"rooms-{n}.pddl") for n in ("robot", "problem", "human"))
+    base = ["excuse", robot, problem, "--fixed-from", human, "--json", "--quiet"]
+    plain = json.loads(runner.invoke(app, base).stdout)
+    assert plain["excuse"]["changes"][0]["change"] == "+(unlocked adoor)" and plain["preference"] is None
+    preferred = runner.invoke(app, [*base, "--prefer", "demonstration", "--human", human])
+    assert preferred.exit_code == 0, preferred.output
+    doc = json.loads(preferred.stdout)
+    assert doc["excuse"]["changes"][0]["change"] == "+(unlocked bdoor)" and doc["alternatives"] == []
+    assert doc["preference"] == ("preferred +(unlocked bdoor): its demonstration takes 2 action(s), "
+                                 "against 4 for +(unlocked adoor)")
+    text = runner.invoke(app, [*base[:-2], "--quiet", "--prefer", "demonstration", "--human", human]).stdout
+    assert text.startswith("two-doors: preferred +(unlocked bdoor)")
+    assert runner.invoke(app, [*base, "--prefer", "demonstration"]).exit_code == 37  # needs --human
+
+
+def test_simulating_a_human_whose_skills_are_not_hand_manipulation_is_refused_in_one_line(runner, app, tmp_path):
+    robot, problem, human = (str(ROOMS / f"rooms-{n}.pddl") for n in ("robot", "problem", "human"))
+    result = runner.invoke(app, ["teach", robot, problem, "--simulate", human, "-o", str(tmp_path)])
+    assert result.exit_code == 33 and "--simulate renders hand manipulation" in result.stderr
+

@@ -65,6 +65,7 @@ def excuse_document(report: ExcuseReport, domain: str, problem: str, spellings: 
         "strategy": report.strategy,
         "status": report.status.value,
         "message": excuse_summary(report, spellings) or None,
+        "preference": report.preference,
         "excuse": _excuse_dict(first, spellings) if first else None,
         "alternatives": [_excuse_dict(e, spellings) for e in report.excuses[1:]],
         "robot_plan": None if report.robot_plan is None else [str(step) for step in report.robot_plan],
@@ -92,6 +93,8 @@ def excuse_text(report: ExcuseReport, prob: Problem, spellings: dict[str, str]) 
         return "\n".join(lines) + "\n"
     if not report.excuses:
         return f"{name}: {excuse_summary(report, spellings)}\n"
+    if report.preference:
+        lines.append(f"{name}: {report.preference}.")
     total = len(report.excuses)
     for k, e in enumerate(report.excuses, 1):
         which = f"Minimal excuse {k} of {total}" if total > 1 else "Minimal excuse"

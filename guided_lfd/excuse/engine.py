@@ -103,6 +103,8 @@ class ExcuseReport:
     robot_plan: list[PlanStep] | None = None  # when the task is already solvable
     checked_groups: list[tuple[frozenset[Atom], bool]] = field(default_factory=list)
     robot_plan_cost: int | None = None  # the cost of ``robot_plan`` (see Excuse.plan_cost)
+    #: Why the first excuse was chosen among the minimal ones (:func:`guided_lfd.excuse.preference.apply_preference`).
+    preference: str | None = None
     #: The task asked about (its paths and spellings go into the document).
     domain: Domain | None = field(default=None, repr=False)
     problem: Problem | None = field(default=None, repr=False)
@@ -296,7 +298,7 @@ class _Run:
         robot_cost = self.robot_plan_cost if robot_plan is not None else None
         return ExcuseReport(status, sorted(self.excuses, key=_excuse_order), self.options.semantics,
                             self.options.strategy, self.stats, self.unachievable, groups, robot_plan, checked,
-                            robot_cost, self.domain, self.problem)
+                            robot_cost, domain=self.domain, problem=self.problem)
 
     def timed_out(self) -> ExcuseReport:
         """The report when the time limit ended the run: excuses completed so far stay."""

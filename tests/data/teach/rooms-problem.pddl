@@ -1,0 +1,8 @@
+(define (problem two-doors)
+  (:domain rooms)
+  (:objects start hall goal - room adoor bdoor cdoor - door akey bkey - key)
+  (:init (at start)
+         (connects adoor start goal) (connects bdoor start goal)
+         (connects cdoor start hall) (connects cdoor hall start) (unlocked cdoor)
+         (opens akey adoor) (opens bkey bdoor) (key-at akey hall) (key-at bkey start))
+  (:goal (at goal)))
