@@ -48,6 +48,7 @@ class Round:
     keep: list[Atom]
     keep_text: list[str]
     demonstration_length: int | None = None  # demonstrated actions (segments that act)
+    new_actions: int | None = None  # of those, the ones no skill of the robot already does (the useful part)
     learned_actions: list[str] = field(default_factory=list)
     request_met: bool | None = None
     unmet: list[Change] = field(default_factory=list)  # the request's changes the demonstration did not make
@@ -61,6 +62,7 @@ class Round:
             "round": self.index, "excuse": [str(c) for c in self.excuse], "request": [str(c) for c in self.request],
             "request_text": self.request_text, "why": self.why, "keep": [str(a) for a in self.keep],
             "keep_text": self.keep_text, "demonstration_length": self.demonstration_length,
+            "new_actions": self.new_actions,
             "learned_actions": self.learned_actions, "request_met": self.request_met,
             "unmet": [str(c) for c in self.unmet], "solvable_after": self.solvable_after, "files": self.files,
             "preference": self.preference,
@@ -213,19 +215,27 @@ class SimulatedHuman:
 
 def _check_drawable(script, scene, plan: list[PlanStep], human: Domain) -> None:
     """The renderer draws hand manipulation (take, put, open and close, push an obstacle away): a plan
-    with another kind of action (walking through a door) is refused in one line, not drawn wrongly."""
+    with another kind of action (walking through a door, turning a key) is refused in one line, not drawn wrongly."""
     from guided_lfd.errors import UnsupportedFeatureError
 
-    needs_target = ("Put", "Push")
-    for step in script:
-        if step.activity == "Idle" or step.activity == "Release":
-            continue
-        if step.obj not in scene.positions or (step.activity in needs_target and step.target not in scene.positions):
-            actions = sorted({s.action for s in plan})
-            raise UnsupportedFeatureError(
-                f"--simulate renders hand manipulation (take, put, open or close, push an obstacle): the human's "
-                f"plan uses {', '.join(actions)}, which it cannot draw as hand activities (give --demo traces)",
-                human.locate(actions[0], ":action") if actions else None)
+    schemas = {a.name: a for a in human.actions}
+    odd = set()
+    for step in plan:
+        schema = schemas[step.action]
+        binding = {v: a for (v, _), a in zip(schema.params, step.args)}
+        changed = [a.substitute(binding) for a in (*schema.add, *schema.delete) if a.predicate not in HAND_PREDICATES]
+        manipulates = any(a.predicate in HAND_PREDICATES for a in (*schema.add, *schema.delete)) or any(
+            a.predicate == "open" for a in changed)
+        # Otherwise the hand pushes the action's first object: it must be what the action changes.
+        if not manipulates and not any(step.args[:1] and step.args[0] in a.args for a in changed):
+            odd.add(step.action)
+    missing = [s.obj for s in script if s.activity not in ("Idle", "Release") and s.obj not in scene.positions]
+    if odd or missing:
+        actions = sorted(odd) or sorted({s.action for s in plan})
+        raise UnsupportedFeatureError(
+            f"--simulate renders hand manipulation (take, put, open or close, push an obstacle): the human's "
+            f"plan uses {', '.join(actions)}, which it cannot draw as hand activities (give --demo traces)",
+            human.locate(actions[0], ":action"))
 
 
 @dataclass
@@ -330,7 +340,11 @@ def _learn_round(rnd: Round, folder: Path, out: Path, robot: Domain, task: Probl
     doc = segments_document(demo, acting, str(states))
     doc["trace"] = str(trace)
     write_text(folder / "segments.json", json_document("segments", doc))
-    rnd.demonstration_length = len(ground_actions(doc, str(trace)))
+    from guided_lfd.evaluate import usefulness
+
+    demonstrated = ground_actions(doc, str(trace))
+    rnd.demonstration_length = len(demonstrated)
+    rnd.new_actions = usefulness(demonstrated, robot, doc.get("objects", {})).useful
     learned = learn_domain([(str(trace), doc)], name=f"learned-round-{rnd.index}")
     write_text(folder / "learned.pddl", domain_to_pddl(learned, header=f"Learned from {trace}"))
     merged = merge_domains([robot, learned], name=robot.name).domain

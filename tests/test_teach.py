@@ -19,7 +19,7 @@ HUMAN = {k: str(DOMAINS / f"kitchen-{k}" / "human.pddl") for k in (1, 2)}
 SESSION_KEYS = {"format": str, "format_version": int, "robot": str, "problem": str, "solved": bool, "status": str,
                 "rounds": list, "plan": (list, type(None)), "plans_original_task": bool, "robot_domain": str}
 ROUND_KEYS = {"round": int, "excuse": list, "request": list, "request_text": list, "why": list, "keep": list,
-              "keep_text": list, "demonstration_length": (int, type(None)), "learned_actions": list,
+              "keep_text": list, "demonstration_length": (int, type(None)), "new_actions": (int, type(None)), "learned_actions": list,
               "request_met": (bool, type(None)), "unmet": list, "solvable_after": (bool, type(None)), "files": dict,
               "preference": (str, type(None))}
 

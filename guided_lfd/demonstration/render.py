@@ -172,7 +172,9 @@ def _motion(step: Step, hand: str, start: np.ndarray, s: np.ndarray, n: int, sce
         path = minimum_jerk(start, start + direction, s)
         grip, act_on = True, step.obj
     elif step.activity == "Push":
-        goal = np.array(scene.positions[step.target]) + np.array([0.0, -0.4, 0.0])
+        # Pushed to where it goes, or (no place named: "push it aside") sideways off what it blocks.
+        goal = (np.array(scene.positions[step.target]) + np.array([0.0, -0.4, 0.0]) if step.target
+                else np.array(scene.positions[step.obj]) + np.array([0.4, -0.4, 0.0]))
         path = minimum_jerk(start, goal, s)
         grip, act_on = True, step.obj
     elif step.activity == "Idle":
