@@ -1,0 +1,193 @@
+#!/usr/bin/env python3
+"""Guided-teaching benchmark: `guided-lfd teach --simulate` against the unguided baseline.
+
+    python benchmarks/teach_bench.py --jobs 2        # -> benchmarks/teach_results/{teach.csv,summary.md}
+
+For every kitchen task and every household task of the scaling series up to
+``--max-items`` (both robots: without the skill that opens, and without the
+one that pushes obstacles away), the guided loop runs with the human model
+simulating the demonstrator, in three configurations:
+
+* ``guided``: the request is the part of the excuse that suffices (redundancy)
+  and the excuse with the shortest predicted demonstration is preferred;
+* ``excuse``: the plain minimal excuse (``--no-redundancy``, no preference);
+* ``unguided``: the baseline, the human demonstrates the whole task (the human
+  model's optimal plan from the initial state to the goal).
+
+Each row: rounds, total demonstrated actions, the ones the robot already had,
+misdirected demonstrations (a round whose request the demonstration did not
+meet), whether the taught robot then plans the task, and the whole run's wall
+time (teaching includes excuse search, simulated rendering, segmentation,
+learning, merging and re-planning).  Every run is the installed command line
+in its own process.
+"""
+
+from __future__ import annotations
+
+import argparse
+import csv
+import io
+import json
+import subprocess
+import sys
+import tempfile
+import time
+from concurrent.futures import ThreadPoolExecutor
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(ROOT))
+
+from guided_lfd import household  # noqa: E402
+from guided_lfd.benchmark import cli_command  # noqa: E402
+
+OUT = ROOT / "benchmarks" / "teach_results"
+FIELDS = ["task", "robot", "config", "status", "solved", "plans_task", "rounds", "demonstrated", "already_had",
+          "misdirected", "request", "wall_s"]
+
+
+def tasks(max_items: int, folder: Path) -> list[dict]:
+    """The kitchen tasks and the household series up to ``max_items`` items, each with its robot and human."""
+    domains = ROOT / "data" / "domains"
+    out = [{"task": "kitchen-1", "robot": "robot", "robot_file": domains / "kitchen-1" / "robot.pddl",
+            "problem": domains / "kitchen-1" / "problem.pddl", "human": domains / "kitchen-1" / "human.pddl"}]
+    for robot in ("robot", "robot-no-open"):
+        out.append({"task": "kitchen-2", "robot": robot, "robot_file": domains / "kitchen-2" / f"{robot}.pddl",
+                    "problem": domains / "kitchen-2" / "problem.pddl", "human": domains / "kitchen-2" / "human.pddl"})
+    folder.mkdir(parents=True, exist_ok=True)
+    (folder / "human.pddl").write_text(household.domain_pddl())
+    for variant in ("no-open", "no-push"):
+        (folder / f"robot-{variant}.pddl").write_text(household.domain_pddl(variant))
+        for rooms, items, drawers, cupboards, goals in household.SERIES:
+            if items > max_items:
+                continue
+            house = household.House(rooms, items, drawers, cupboards, goals, variant)
+            path = folder / f"{house.name}.pddl"
+            path.write_text(household.problem_pddl(house))
+            out.append({"task": house.name, "robot": f"robot-{variant}", "robot_file": folder / f"robot-{variant}.pddl",
+                        "problem": path, "human": folder / "human.pddl"})
+    return out
+
+
+def run_teach(task: dict, config: str, time_limit: float) -> dict:
+    """One ``guided-lfd teach --simulate`` run; its row."""
+    with tempfile.TemporaryDirectory() as session:
+        cmd = [*cli_command(), "teach", str(task["robot_file"]), str(task["problem"]), "--simulate",
+               str(task["human"]), "-o", session, "--json", "--quiet", "--time-limit", f"{time_limit:g}"]
+        cmd += ["--prefer", "demonstration"] if config == "guided" else ["--no-redundancy"]
+        start = time.perf_counter()
+        proc = subprocess.run(cmd, capture_output=True, text=True, timeout=10 * time_limit + 60)
+        wall = time.perf_counter() - start
+    row = {"task": task["task"], "robot": task["robot"], "config": config, "wall_s": round(wall, 3)}
+    try:
+        doc = json.loads(proc.stdout)
+    except json.JSONDecodeError:
+        return {**row, "status": f"crashed: {proc.stderr.strip()[-120:]}"}
+    rounds = doc["rounds"]
+    demonstrated = sum(r["demonstration_length"] or 0 for r in rounds)
+    new = sum(r["new_actions"] or 0 for r in rounds)
+    return {**row, "status": doc["status"], "solved": doc["solved"], "plans_task": doc["plans_original_task"],
+            "rounds": len(rounds), "demonstrated": demonstrated, "already_had": demonstrated - new,
+            "misdirected": sum(r["request_met"] is False for r in rounds),
+            "request": " | ".join(" ".join(r["request"]) for r in rounds)}
+
+
+def run_unguided(task: dict) -> dict:
+    """The baseline: the human demonstrates the whole task (its optimal plan), the robot learns it."""
+    from guided_lfd.evaluate import optimal_plan
+    from guided_lfd.pddl.reader import parse_domain, parse_task
+
+    start = time.perf_counter()
+    robot, problem = parse_task(str(task["robot_file"]), str(task["problem"]))
+    human = parse_domain(str(task["human"]))
+    plan = optimal_plan(human, problem)
+    known = {a.name for a in robot.actions}
+    row = {"task": task["task"], "robot": task["robot"], "config": "unguided", "status": "demonstrated",
+           "solved": plan is not None, "plans_task": "", "rounds": 1,  # learning it is not simulated
+           "demonstrated": len(plan or []), "already_had": sum(s.action in known for s in plan or []),
+           "misdirected": 0, "request": "the whole task"}
+    return {**row, "wall_s": round(time.perf_counter() - start, 3)}
+
+
+def summary(rows: list[dict], command: str) -> str:
+    """The markdown table: per task and robot, each configuration's demonstration length beside the baseline's."""
+    by = {(r["task"], r["robot"], r["config"]): r for r in rows}
+    keys = sorted({(r["task"], r["robot"]) for r in rows}, key=lambda k: (not k[0].startswith("kitchen"), k))
+    lines = ["# Guided teaching vs demonstrating the whole task", "", f"Regenerate with: `{command}`", "",
+             "Demonstrated actions (of which the robot already had), rounds, misdirected demonstrations, "
+             "and whether the taught robot then plans its task; wall time of the whole teaching run.", "",
+             "| task | robot | guided | excuse (no redundancy, no preference) | unguided (whole task) | "
+             "guided < unguided | wall guided (s) |", "|---|---|---|---|---|---|---|"]
+    better = total = 0
+    for task, robot in keys:
+        g, e, u = (by.get((task, robot, c)) for c in ("guided", "excuse", "unguided"))
+        cell = (lambda r: "-" if r is None or "demonstrated" not in r else
+                f"{r['demonstrated']} ({r['already_had']}), {r['rounds']} round(s), {r['misdirected']} misdirected"
+                + ("" if r.get("plans_task") in (True, "") else ", **not taught**"))
+        wins = g is not None and u is not None and "demonstrated" in g and g["solved"] and \
+            g["demonstrated"] < u["demonstrated"]
+        total += 1
+        better += wins
+        lines.append(f"| {task} | {robot} | {cell(g)} | {cell(e)} | {cell(u)} | {'yes' if wins else 'no'} | "
+                     f"{g['wall_s'] if g else '-'} |")
+    lines += ["", f"Guided teaching needs fewer demonstrated actions than the whole task on {better} of {total} "
+              "tasks."]
+    return "\n".join(lines) + "\n"
+
+
+def plot(rows: list[dict], path: Path) -> Path | None:
+    """Demonstrated actions per task: guided, the plain excuse, and the whole task (None without matplotlib)."""
+    from guided_lfd.reporting import PlotsUnavailable, pyplot, save_figure
+
+    try:
+        plt = pyplot()
+    except PlotsUnavailable as exc:
+        print(f"plot skipped: {exc}", file=sys.stderr)
+        return None
+    by = {(r["task"], r["robot"], r["config"]): r for r in rows}
+    keys = sorted({(r["task"], r["robot"]) for r in rows}, key=lambda k: (not k[0].startswith("kitchen"), k))
+    fig, ax = plt.subplots(figsize=(10, 4.5))
+    width = 0.27
+    for j, (config, label) in enumerate((("guided", "guided (redundancy, preference)"),
+                                         ("excuse", "the minimal excuse"), ("unguided", "the whole task"))):
+        values = [by.get((t, r, config), {}).get("demonstrated", 0) or 0 for t, r in keys]
+        ax.bar([k + (j - 1) * width for k in range(len(keys))], values, width, label=label)
+    ax.set_xticks(range(len(keys)))
+    ax.set_xticklabels([f"{t.replace('house-', '')}\n{r}" for t, r in keys], rotation=60, ha="right", fontsize=7)
+    ax.set_ylabel("demonstrated actions")
+    ax.set_title("What the human demonstrates: guided teaching vs the whole task")
+    ax.legend()
+    return save_figure(fig, path, 110)
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--max-items", type=int, default=32, help="largest household task (items)")
+    parser.add_argument("--jobs", type=int, default=2)
+    parser.add_argument("--time-limit", type=float, default=60.0, help="per excuse search, in seconds")
+    parser.add_argument("--out", type=Path, default=OUT)
+    args = parser.parse_args(argv)
+    with tempfile.TemporaryDirectory() as scratch:
+        work = tasks(args.max_items, Path(scratch))
+        with ThreadPoolExecutor(max_workers=max(1, args.jobs)) as pool:
+            taught = list(pool.map(lambda job: run_teach(*job, args.time_limit),
+                                   [(t, c) for t in work for c in ("guided", "excuse")]))
+        rows = taught + [run_unguided(t) for t in work]
+    args.out.mkdir(parents=True, exist_ok=True)
+    buf = io.StringIO()
+    writer = csv.DictWriter(buf, fieldnames=FIELDS, lineterminator="\n", restval="")
+    writer.writeheader()
+    writer.writerows(sorted(rows, key=lambda r: (r["task"], r["robot"], r["config"])))
+    (args.out / "teach.csv").write_text(buf.getvalue(), encoding="utf-8")
+    command = "python benchmarks/teach_bench.py " + " ".join(argv if argv is not None else sys.argv[1:])
+    text = summary(rows, command.strip())
+    picture = plot(rows, args.out / "teach.png")
+    if picture is not None:
+        text += f"\n![demonstrated actions]({picture.name})\n"
+    (args.out / "summary.md").write_text(text, encoding="utf-8")
+    print(text)
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
