@@ -68,6 +68,10 @@ def excuse(
     human: Annotated[
         str | None, typer.Option("--human", metavar="DOMAIN", help="The human model --prefer predicts with.")
     ] = None,
+    slack: Annotated[
+        int | None, typer.Option("--slack", metavar="K", help="With --all or --prefer: also the excuses up to K "
+                                                              "costlier than the minimum (none a superset of another).")
+    ] = None,
     excuse_problem: Annotated[
         str | None, typer.Option("--excuse-problem", metavar="FILE",
                                  help="Also write the problem with the excuse state as its initial state to FILE "
@@ -89,6 +93,8 @@ def excuse(
         raise errors.OptionError(f"--prefer {prefer}: expected 'demonstration'")
     if prefer and not human:
         raise errors.OptionError("--prefer demonstration: needs the human model (--human DOMAIN)")
+    if slack and not (all_minimal or prefer):
+        raise errors.OptionError(f"--slack {slack}: needs --all or --prefer (it widens the excuses listed)")
     if strategy not in STRATEGIES:
         raise errors.OptionError(f"--strategy {strategy}: unknown strategy (expected one of: {', '.join(STRATEGIES)})")
     if max_size is not None and max_size < 0:
@@ -103,7 +109,7 @@ def excuse(
         dom, prob = parse_task(domain, problem)
         options = ExcuseOptions(
             semantics=semantics, strategy=strategy, fixed=[f.lower() for f in fixed or []], costs=list(cost or []),
-            all_minimal=all_minimal or prefer is not None, max_size=max_size, time_limit=time_limit,
+            all_minimal=all_minimal or prefer is not None, max_size=max_size, time_limit=time_limit, slack=slack or 0,
             invariants_from=parse_domain(invariants_from) if invariants_from else None,
             fixed_from=parse_domain(fixed_from) if fixed_from else None, started=started,
         )

@@ -71,6 +71,9 @@ def teach(
     prefer: Annotated[str | None, typer.Option("--prefer", metavar="CRITERION",
                                                help="'demonstration': ask for the minimal excuse with the "
                                                     "shortest predicted demonstration (needs a human model).")] = None,
+    slack: Annotated[int | None, typer.Option("--slack", metavar="K",
+                                              help="With --prefer: also consider excuses up to K costlier than the "
+                                                   "minimum.")] = None,
     redundancy: Annotated[bool, typer.Option("--redundancy/--no-redundancy",
                                              help="Ask only for the part of the excuse that suffices "
                                                   "(with a human model).")] = True,
@@ -102,11 +105,13 @@ def teach(
     ui.reading_warnings(robot_domain)
     human = SimulatedHuman(parse_domain(simulate)) if simulate else None
     model = parse_domain(human_model) if human_model else human.human if human else None
+    if slack and not prefer:
+        raise errors.OptionError(f"--slack {slack}: needs --prefer demonstration")
     if prefer and model is None:
         raise errors.OptionError("--prefer demonstration: needs a human model (--human DOMAIN or --simulate HUMAN)")
     demonstrator = _Chain(human, list(demo or []), prompt=sys.stdin.isatty() and not json_out)
     session_obj = run_teach(robot_domain, task, demonstrator, session, max_rounds,
-                            ExcuseOptions(time_limit=time_limit), human=model, prefer=prefer is not None,
+                            ExcuseOptions(time_limit=time_limit, slack=slack or 0), human=model, prefer=prefer is not None,
                             redundancy=redundancy)
     write_text(session / "session.json", session_obj.to_json())
     write_text(session / "session.md", session_obj.to_markdown())

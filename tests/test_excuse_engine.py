@@ -178,8 +178,8 @@ def _parse_random(tmp_path_factory, name: str, pddl: tuple[str, str]):
     return parse_task(folder / "d.pddl", folder / "p.pddl")
 
 
-def brute_force(domain, problem, groups, max_size=3):
-    """All minimal excuses by enumeration, with an independent BFS for reachability."""
+def excuse_checker(domain, problem, groups):
+    """(ground atoms, is_excuse(change atoms)): an independent BFS and consistency check on each excuse state."""
     from guided_lfd.grounding import ground_atoms
 
     atoms = ground_atoms(domain, problem)
@@ -221,11 +221,22 @@ def brute_force(domain, problem, groups, max_size=3):
         return True
 
     init = frozenset(problem.init)
+
+    def is_excuse(combo) -> bool:
+        s = frozenset(init.symmetric_difference(combo))
+        return (not combo or not goal_holds(s)) and consistent(s) and reachable(s)
+
+    return atoms, is_excuse
+
+
+def brute_force(domain, problem, groups, max_size=3):
+    """All minimal excuses by enumeration, with an independent BFS for reachability."""
+    atoms, is_excuse = excuse_checker(domain, problem, groups)
+    init = frozenset(problem.init)
     for size in range(0, min(max_size, len(atoms)) + 1):
         found = []
         for combo in itertools.combinations(atoms, size):
-            s = frozenset(init.symmetric_difference(combo))
-            if (size == 0 or not goal_holds(s)) and consistent(s) and reachable(s):
+            if is_excuse(combo):
                 found.append(sorted(str(Change(a, a not in init)) for a in combo))
         if found:
             return size, sorted(found)
@@ -352,3 +363,30 @@ def test_statistics_are_typed_and_written_in_the_documented_order():
     report = find_excuses(*parse_task(*kitchen(1)))
     assert isinstance(report.statistics, ExcuseStatistics) and report.statistics.candidates >= 1
     assert report.excuse.plan and all(isinstance(step, PlanStep) for step in report.excuse.plan)
+
+
+@pytest.mark.parametrize("semantics", list(Semantics))
+@settings(max_examples=30, deadline=None, suppress_health_check=[HealthCheck.too_slow, HealthCheck.function_scoped_fixture])
+@given(pddl=small_tasks())
+def test_slack_lists_every_excuse_up_to_one_more_change_that_extends_none(tmp_path_factory, semantics, pddl):
+    """--slack 1 (unit costs): the minimal excuses and every excuse one change larger that contains none of them."""
+    domain, problem = _parse_random(tmp_path_factory, "rnds", pddl)
+    report = find_excuses(domain, problem, ExcuseOptions(semantics=semantics, all_minimal=True, slack=1, max_size=3))
+    if report.status != "excuse-found":
+        return  # already solvable or no excuse: the plain brute-force test covers those
+    groups = report.checked_groups
+    size, minimal = brute_force(domain, problem, groups)
+    atoms, is_excuse = excuse_checker(domain, problem, groups)
+    init = frozenset(problem.init)
+    valid_bigger = []
+    minimal_sets = [set(m) for m in minimal]
+    for combo in itertools.combinations(atoms, size + 1) if size + 1 <= 3 else ():  # within --max-size 3
+        changes = sorted(str(Change(a, a not in init)) for a in combo)
+        if any(m <= set(changes) for m in minimal_sets):
+            continue
+        if is_excuse(combo):
+            valid_bigger.append(changes)
+    expected = sorted(minimal) + sorted(valid_bigger)
+    got = [sorted(str(c) for c in e.changes) for e in report.excuses]
+    assert sorted(got) == sorted(expected)
+    assert all(check_excuse(domain, problem, e.changes, e.plan, groups) == [] for e in report.excuses)

@@ -167,3 +167,22 @@ def test_simulating_a_human_whose_skills_are_not_hand_manipulation_is_refused_in
     result = runner.invoke(app, ["teach", robot, problem, "--simulate", human, "-o", str(tmp_path)])
     assert result.exit_code == 33 and "--simulate renders hand manipulation" in result.stderr
 
+
+
+def test_slack_widens_the_excuses_and_the_preference_may_pick_a_costlier_one(runner, app):
+    """The direct door's key is two rooms away (1 change, 4 actions); the detour's two doors share a key at
+    hand (2 changes, 3 actions): within a slack of 1 the preference asks for the detour."""
+    robot, problem, human = (str(ROOMS / f"corridor-{n}.pddl") for n in ("robot", "problem", "human"))
+    base = ["excuse", robot, problem, "--fixed-from", human, "--json", "--quiet"]
+    listed = json.loads(runner.invoke(app, [*base, "--all", "--slack", "1"]).stdout)
+    assert [c["change"] for c in listed["excuse"]["changes"]] == ["+(unlocked direct)"]
+    assert [[c["change"] for c in e["changes"]] for e in listed["alternatives"]] == [
+        ["+(unlocked first)", "+(unlocked second)"]]  # no superset of the minimal one
+    assert json.loads(runner.invoke(app, [*base, "--all"]).stdout)["alternatives"] == []
+    preferred = json.loads(runner.invoke(app, [*base, "--prefer", "demonstration", "--human", human,
+                                               "--slack", "1"]).stdout)
+    assert [c["change"] for c in preferred["excuse"]["changes"]] == ["+(unlocked first)", "+(unlocked second)"]
+    assert preferred["preference"] == ("preferred +(unlocked first) +(unlocked second): its demonstration takes "
+                                       "3 action(s), against 4 for +(unlocked direct)")
+    assert runner.invoke(app, [*base, "--slack", "1"]).exit_code == 37  # needs --all or --prefer
+    assert runner.invoke(app, [*base, "--all", "--slack", "1", "--strategy", "baseline"]).exit_code == 37

@@ -97,7 +97,11 @@ def excuse_text(report: ExcuseReport, prob: Problem, spellings: dict[str, str]) 
         lines.append(f"{name}: {report.preference}.")
     total = len(report.excuses)
     for k, e in enumerate(report.excuses, 1):
-        which = f"Minimal excuse {k} of {total}" if total > 1 else "Minimal excuse"
+        if report.preference and k == 1:
+            kind = "Preferred excuse"
+        else:
+            kind = "Minimal excuse" if e.cost == min(x.cost for x in report.excuses) else "Excuse within the slack"
+        which = f"{kind} {k} of {total}" if total > 1 else kind
         lines.append(f"{which} for {name} (size {e.size}, cost {e.cost}): demonstrate how to reach")
         width = max(len(describe_change(c, spellings)) for c in e.changes)
         for c in e.changes:

@@ -48,6 +48,8 @@ class ExcuseOptions:
     invariants_from: Domain | None = None
     fixed_from: Domain | None = None
     optimal_plans: bool = True
+    #: With ``all_minimal``, also the excuses up to this much costlier than the minimum (landmark strategy).
+    slack: int = 0
     #: ``time.monotonic()`` when the run started (the time limit counts from
     #: it: a command line starts it before reading its files); None = now.
     started: float | None = None
@@ -145,9 +147,14 @@ class ExcuseReport:
 
 
 def check_option_names(domain: Domain, options: ExcuseOptions) -> None:
-    """Reject unknown predicates in --fixed and --cost before any expensive work."""
+    """Reject unknown predicates in --fixed and --cost, and options the strategy lacks, before any expensive work."""
     check_fixed(options.fixed, domain)
     check_cost_predicates(options.costs, domain)
+    if options.slack < 0 or (options.slack and options.strategy != "landmark"):
+        from guided_lfd.errors import OptionError
+
+        raise OptionError(f"--slack {options.slack}: expected a cost >= 0, with the landmark strategy "
+                          "(the baseline enumerates minimal excuses only)")
 
 
 def unachievable_goals(task: GroundTask) -> list[Literal]:
@@ -344,7 +351,8 @@ class _Run:
             return self.report(ExcuseStatus.ALREADY_SOLVABLE, _steps(plan), candidates=0, planner_calls=1)
 
         self._enter("searching")
-        limits = SearchLimits(all_minimal=options.all_minimal, max_size=options.max_size, deadline=self.deadline)
+        limits = SearchLimits(all_minimal=options.all_minimal, max_size=options.max_size, deadline=self.deadline,
+                              slack=options.slack)
         search_start = time.monotonic()
         self.stats.setup_time_s = round(search_start - self.start, 6)
         outcome = STRATEGIES[options.strategy].search(space, limits, self.progress, oracle=oracle, relaxed=relaxed)

@@ -34,6 +34,9 @@ class SearchLimits:
     max_size: int | None = None
     deadline: float | None = None  # time.monotonic() value
     max_solutions: int = 1000
+    #: With ``all_minimal``: also the excuses up to this much costlier than the minimum (none of them a
+    #: superset of another: adding changes to an excuse is no other choice).
+    slack: int = 0
 
 
 @dataclass
@@ -135,6 +138,7 @@ class _LandmarkRun:
         self.seen = {0}
         linger(self.heap, self.inherited, self.seen)  # never freed after a deadline (see guided_lfd.deadline)
         self.best: float | None = None
+        self.g_limit: float = INF  # the heaviest node still worth expanding, once an excuse is found
         self.solutions: list[int] = []
         self.plans: dict[int, list[GroundAction]] = {}
         self.candidates = self.expanded = self.evaluations = 0
@@ -152,7 +156,7 @@ class _LandmarkRun:
         # Hot loop: one pass per node; the steps it calls do the work.
         while heap:
             f, neg_g, _, changes = heapq.heappop(heap)
-            if self.best is not None and f > self.best:
+            if self.best is not None and f > self.g_limit:
                 return
             if _timed_out(self.limits):
                 raise SearchTimeout("excuse search exceeded its time limit")
@@ -228,11 +232,18 @@ class _LandmarkRun:
 
     def check_candidate(self, g: int, state: int, changes: int) -> int | None:
         """Ask the oracle about a candidate excuse; the relevant changes to branch on if it is none."""
+        if self.solutions and (g > self.g_limit or any(changes & found == found for found in self.solutions)
+                               or self.space.cost(changes) > self.space.cost(self.solutions[0]) + self.limits.slack):
+            return None  # beyond the slack, or an excuse with changes added: no other choice
         self.candidates += 1
         plan = self.oracle.solve(state)
         if plan is None:
             return self.relevant_changes & ~changes
-        self.best = g
+        if self.best is None:
+            self.best = g
+            # Weights are cost x size_factor + size: all excuses up to the slack's cost weigh less than this.
+            slack = self.limits.slack
+            self.g_limit = g if not slack else (self.space.cost(changes) + slack + 1) * self.space.size_factor - 1
         self.solutions.append(changes)
         self.plans[changes] = plan
         if not self.limits.all_minimal or len(self.solutions) >= self.limits.max_solutions:
