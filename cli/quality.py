@@ -25,6 +25,10 @@ def quality(
     domains: Annotated[Path, typer.Option("--domains", metavar="DIR",
                                           help="Each kitchen's human.pddl, the reference for learning.")]
     = Path("data/domains"),
+    traces: Annotated[list[Path] | None, typer.Option("--traces", metavar="DIR",
+                                                       help="Also every source and scenario: an independent trace "
+                                                            "source DIR/SCENARIO/CONDITION/*.csv (repeatable), "
+                                                            "one row per condition.")] = None,
     quiet: QuietOption = False,
 ) -> None:
     """Score segmentation and learning on labelled demos.
@@ -32,8 +36,12 @@ def quality(
     Segmentation: frame-level activity F1 and segment counts per
     demonstration. Learning: precision and recall of the learned domain's
     preconditions and effects against each kitchen's human.pddl. Markdown on
-    stdout.
+    stdout. With --traces, a second table follows: per source, scenario
+    and recording condition, frame macro-F1, segment counts, learning
+    against the scenario's human.pddl and the targets of issue 14 missed.
     """
-    from guided_lfd.demonstration.quality import quality_markdown, quality_report
+    from guided_lfd.demonstration.quality import quality_markdown, quality_report, sources_markdown, sources_report
 
     sys.stdout.write(quality_markdown(quality_report(demos, domains)))
+    if traces:
+        sys.stdout.write("\n## All sources\n\n" + sources_markdown(sources_report(demos, domains, traces)))
