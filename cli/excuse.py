@@ -91,6 +91,8 @@ def excuse(
     """
     if prefer not in (None, "demonstration"):
         raise errors.OptionError(f"--prefer {prefer}: expected 'demonstration'")
+    if human and not prefer:
+        raise errors.OptionError("--human: the human model is for --prefer demonstration; expected both")
     if prefer and not human:
         raise errors.OptionError("--prefer demonstration: needs the human model (--human DOMAIN)")
     if slack and not (all_minimal or prefer):

@@ -8,7 +8,9 @@ from typing import Annotated
 
 import typer
 
-from cli.common import JsonOption, QuietOption, TimeLimitOption, check_time_limit, command, help_footer, ui
+from cli.common import (JsonOption, QuietOption, TimeLimitOption, check_inputs, check_time_limit, command, help_footer,
+                        started_at, ui)
+from guided_lfd.deadline import deadline_after
 from guided_lfd import errors
 
 
@@ -18,11 +20,16 @@ class _Prompted:
     def demonstrate(self, folder, state, request, problem):
         from guided_lfd.demonstration.trace import default_state_path
 
-        answer = typer.prompt("Path of the demonstration's trace CSV (empty: stop)", default="", show_default=False,
-                              err=True)
-        if not answer.strip():
-            return None
-        return Path(answer.strip()), Path(default_state_path(answer.strip()))
+        while True:  # a path that is not there is asked again, not the end of the session
+            answer = typer.prompt("Path of the demonstration's trace CSV (empty: stop)", default="",
+                                  show_default=False, err=True).strip()
+            if not answer:
+                return None
+            trace, states = Path(answer), Path(default_state_path(answer))
+            missing = [str(p) for p in (trace, states) if not p.is_file()]
+            if not missing:
+                return trace, states
+            typer.echo(f"not found: {', '.join(missing)} (the trace and its .state.csv beside it)", err=True)
 
 
 class _Chain:
@@ -34,12 +41,26 @@ class _Chain:
     def demonstrate(self, folder, state, request, problem):
         from guided_lfd.teach import GivenTraces
 
-        ui.info(f"[bold]request[/]: {'; '.join(str(c) for c in request)}")
         if self.traces:
             return GivenTraces(self.traces).demonstrate(folder, state, request, problem)
         if self.simulate is not None:
             return self.simulate.demonstrate(folder, state, request, problem)
         return _Prompted().demonstrate(folder, state, request, problem) if self.prompt else None
+
+
+def _check_session(session: Path, inputs: list[str | None]) -> None:
+    """Refuse, before any work, a session folder that is a file, or that holds one of the run's inputs
+    (a session writes robot.pddl, session.json, session.md and round-N/ there)."""
+    from guided_lfd.errors import Location, OutputError
+
+    check_inputs(*[p for p in inputs if p is not None])
+    if session.exists() and not session.is_dir():
+        raise OutputError("is a file, expected a folder for the session (-o SESSION_DIR)", Location(str(session)))
+    root = session.resolve()
+    for path in inputs:
+        if path is not None and path != "-" and Path(path).resolve().is_relative_to(root):
+            raise errors.OptionError(f"-o {session}: holds {path}, an input of this run, which the session's files "
+                                     "may replace; expected another folder")
 
 
 @help_footer(
@@ -101,6 +122,7 @@ def teach(
     if prefer not in (None, "demonstration"):
         raise errors.OptionError(f"--prefer {prefer}: expected 'demonstration'")
     time_limit = check_time_limit(time_limit)
+    _check_session(session, [robot, problem, simulate, human_model, *(str(d) for d in demo or [])])
     robot_domain, task = parse_task(robot, problem)
     ui.reading_warnings(robot_domain)
     human = SimulatedHuman(parse_domain(simulate)) if simulate else None
@@ -109,18 +131,35 @@ def teach(
         raise errors.OptionError(f"--slack {slack}: needs --prefer demonstration")
     if prefer and model is None:
         raise errors.OptionError("--prefer demonstration: needs a human model (--human DOMAIN or --simulate HUMAN)")
-    demonstrator = _Chain(human, list(demo or []), prompt=sys.stdin.isatty() and not json_out)
+    prompt = sys.stdin.isatty() and not json_out and human is None
+    demonstrator = _Chain(human, list(demo or []), prompt=prompt)
+
+    def show(rnd) -> None:
+        """The request as the demonstrator reads it: on a terminal always, else as a diagnostic."""
+        lines = [f"round {rnd.index}, please demonstrate: {'; '.join(rnd.request_text)}",
+                 *(f"  why: {w}" for w in rnd.why)]
+        if rnd.keep_text:
+            lines.append("  leave as it is: " + "; ".join(rnd.keep_text))
+        for line in lines:
+            typer.echo(line, err=True) if prompt else ui.info_plain(line)
+
     session_obj = run_teach(robot_domain, task, demonstrator, session, max_rounds,
-                            ExcuseOptions(time_limit=time_limit, slack=slack or 0), human=model, prefer=prefer is not None,
-                            redundancy=redundancy)
+                            ExcuseOptions(slack=slack or 0), human=model, prefer=prefer is not None,
+                            redundancy=redundancy, deadline=deadline_after(time_limit, started_at()),
+                            on_request=show)
     write_text(session / "session.json", session_obj.to_json())
     write_text(session / "session.md", session_obj.to_markdown())
     if json_out:
         write_text("-", session_obj.to_json())
     for r in session_obj.rounds:
+        if r.demonstration_length is None:
+            continue
         ui.info(f"round {r.index}: {'; '.join(r.request_text)}; demonstrated {r.demonstration_length} action(s), "
                 f"learned {', '.join(r.learned_actions) or 'nothing new'}"
                 + ("" if r.request_met is not False else f"; not done: {', '.join(str(c) for c in r.unmet)}"))
+    if session_obj.error is not None:  # the demonstration's own error, its own exit code
+        ui.error(f"{session_obj.error} (teaching ended; see {session / 'session.md'})")
+        raise typer.Exit(session_obj.error.exit_code)
     codes = {"solved": 0, "already-solvable": 0, "no-excuse": errors.EXIT_NO_EXCUSE,
              "timeout": errors.EXIT_TIME_LIMIT}
     code = codes.get(session_obj.status, errors.EXIT_NOT_TAUGHT)

@@ -13,7 +13,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field, replace
 from pathlib import Path
-from typing import Any, Protocol
+from typing import Any, Callable, Protocol
 
 from guided_lfd.demonstration.trace import HAND_PREDICATES
 from guided_lfd.excuse.change import Change, excuse_state
@@ -55,6 +55,7 @@ class Round:
     solvable_after: bool | None = None
     files: dict[str, str] = field(default_factory=dict)
     preference: str | None = None  # why this excuse among the minimal ones (--prefer demonstration)
+    error: str | None = None  # why the demonstration could not be used (it ended the session)
 
     def to_dict(self) -> dict[str, Any]:
         """The round as ``session.json`` has it."""
@@ -65,7 +66,7 @@ class Round:
             "new_actions": self.new_actions,
             "learned_actions": self.learned_actions, "request_met": self.request_met,
             "unmet": [str(c) for c in self.unmet], "solvable_after": self.solvable_after, "files": self.files,
-            "preference": self.preference,
+            "preference": self.preference, "error": self.error,
         }
 
 
@@ -80,6 +81,7 @@ class TeachSession:
     plan: list[PlanStep] | None  # the robot's plan from the state the session ended in
     plans_original_task: bool | None  # whether the taught robot plans the task from its original state
     robot_domain: str  # the taught domain's file
+    error: Any = field(default=None, repr=False, compare=False)  # the GuidedLfdError that ended it, if any
 
     @property
     def solved(self) -> bool:
@@ -112,6 +114,8 @@ class TeachSession:
                 lines.append("- leave as it is: " + "; ".join(r.keep_text))
             lines.append(f"- demonstrated actions: {r.demonstration_length if r.demonstration_length is not None else '-'}"
                          f"; learned: {', '.join(r.learned_actions) or '-'}")
+            if r.error:
+                lines.append(f"- the demonstration could not be used: {r.error}")
             if r.request_met is False:
                 lines.append("- the demonstration did not make: " + ", ".join(str(c) for c in r.unmet))
             lines.append("")
@@ -121,11 +125,13 @@ class TeachSession:
 
 
 def keep_facts(robot: Domain, problem: Problem, state: frozenset[Atom], changes: list[Change],
-               plan: list[PlanStep]) -> list[Atom]:
+               plan: list[PlanStep], human: Domain | None = None) -> list[Atom]:
     """The facts true now that the robot's plan from the excuse state relies on, no step of it making them true.
 
     Asking the demonstrator to leave them as they are prevents misdirected
-    guidance (a chair put back in front of the drawer the robot needs).
+    guidance (a chair put back in front of the drawer the robot needs).  With
+    a ``human`` model, facts no human action changes are left out (nobody can
+    disturb them); without one, every such fact is listed.
     """
     schemas = {a.name: a for a in robot.actions}
     current = set(excuse_state(state, changes))
@@ -143,8 +149,8 @@ def keep_facts(robot: Domain, problem: Problem, state: frozenset[Atom], changes:
         dels = {a.substitute(binding) for a in schema.delete}
         made |= adds - current
         current = (current - dels) | adds
-    # Facts no skill of the robot changes (graspable) are the world's structure: nothing to ask about.
-    static = set(robot.predicates) - robot.fluent_predicates()
+    # Facts the human cannot change (graspable) are the world's structure: nothing to ask about.
+    static = set(human.predicates) - human.fluent_predicates() if human is not None else set()
     changed = {c.atom for c in changes}
     return [a for a in keep if a not in changed and a.predicate not in static]
 
@@ -259,55 +265,96 @@ class GivenTraces:
 
 def teach(robot: Domain, problem: Problem, demonstrator: Demonstrator, out: Path, max_rounds: int = 5,
           options: ExcuseOptions | None = None, human: Domain | None = None, prefer: bool = False,
-          redundancy: bool = True) -> TeachSession:
+          redundancy: bool = True, deadline: float | None = None,
+          on_request: Callable[[Round], None] | None = None) -> TeachSession:
     """Teach the robot its task round by round (see the module docstring); every round's files go under ``out``.
 
     With a ``human`` model, excuses change only what the human can change
     (``fixed_from`` the human's domain), the request is the smallest part of
     the excuse whose demonstration suffices (``redundancy``), and with
     ``prefer`` the excuse with the shortest predicted demonstration is asked
-    for.  ``out/robot.pddl`` is the robot's domain after each round;
-    ``session.json`` and ``session.md`` are written by the caller from the
-    returned session.
+    for.  ``deadline`` (a ``time.monotonic()`` value) bounds the whole
+    session: past it the session ends as ``timeout``.  ``on_request`` hears
+    each round's request before the demonstration is asked for.  A
+    demonstration that cannot be read, or starts from another state than the
+    task's, ends the session (``error`` in its round; ``status`` names it).
+    ``out/robot.pddl`` is the robot's domain after each round;
+    ``session.json`` and ``session.md`` are written by the caller.
     """
-    out.mkdir(parents=True, exist_ok=True)
+    from guided_lfd.errors import GuidedLfdError, SearchTimeout
+
+    _make_folder(out)
     options = options or ExcuseOptions()
     if human is not None:
         options = replace(options, fixed_from=human, all_minimal=options.all_minimal or prefer)
     state, current, rounds = problem.init, robot, []
-    status, final_plan = "max-rounds", None
-    for k in range(1, max_rounds + 1):
-        folder = out / f"round-{k}"
-        folder.mkdir(parents=True, exist_ok=True)
-        task = replace(problem, init=state)
-        report = find_excuses(current, task, options)
-        write_text(folder / "excuse.json", report.to_json())
-        if report.status is ExcuseStatus.ALREADY_SOLVABLE:
-            status, final_plan = ("already-solvable" if k == 1 else "solved"), report.robot_plan
-            break
-        if report.excuse is None:
-            status = "no-excuse" if report.status is not ExcuseStatus.TIMEOUT else "timeout"
-            break
-        rnd = _request(k, current, task, report, human if prefer else None, human if redundancy else None)
-        rnd.files["excuse"] = str(folder / "excuse.json")
-        rounds.append(rnd)
-        given = demonstrator.demonstrate(folder, state, rnd.request, task)
-        if given is None:
-            status = "no-demonstration"
-            break
-        current, state = _learn_round(rnd, folder, out, current, task, given)
-        outcome = _replan(current, replace(problem, init=state))
-        rnd.solvable_after = outcome is not None
-        if outcome is not None:
-            status, final_plan = "solved", outcome
-            break
+    status, final_plan, error = "max-rounds", None, None
+    try:
+        for k in range(1, max_rounds + 1):
+            folder = _make_folder(out / f"round-{k}")
+            task = replace(problem, init=state)
+            report = find_excuses(current, task, replace(options, time_limit=_left(deadline)))
+            write_text(folder / "excuse.json", report.to_json())
+            if report.status is ExcuseStatus.ALREADY_SOLVABLE:
+                status, final_plan = ("already-solvable" if k == 1 else "solved"), report.robot_plan
+                break
+            if report.excuse is None:
+                status = "no-excuse" if report.status is not ExcuseStatus.TIMEOUT else "timeout"
+                break
+            rnd = _request(k, current, task, report, human if prefer else None, human if redundancy else None,
+                           human)
+            rnd.files["excuse"] = str(folder / "excuse.json")
+            rounds.append(rnd)
+            if on_request:
+                on_request(rnd)
+            try:
+                given = demonstrator.demonstrate(folder, state, rnd.request, task)
+                if given is None:
+                    status = "no-demonstration"
+                    break
+                current, state = _learn_round(rnd, folder, out, current, task, given)
+            except SearchTimeout:
+                raise
+            except GuidedLfdError as exc:  # the demonstration's fault: the session so far stays
+                rnd.error, error, status = str(exc), exc, "bad-demonstration"
+                break
+            outcome = _replan(current, replace(problem, init=state), deadline)
+            rnd.solvable_after = outcome is not None
+            if outcome is not None:
+                status, final_plan = "solved", outcome
+                break
+    except SearchTimeout:
+        status = "timeout"
     write_text(out / "robot.pddl", domain_to_pddl(current, header=f"The robot's domain after teaching {problem.path}"))
-    return TeachSession(robot.path, problem.path, status, rounds, final_plan,
-                        _replan(current, problem) is not None, str(out / "robot.pddl"))
+    try:
+        original = _replan(current, problem, deadline) is not None
+    except SearchTimeout:
+        original = None
+    session = TeachSession(robot.path, problem.path, status, rounds, final_plan, original, str(out / "robot.pddl"))
+    session.error = error
+    return session
+
+
+def _left(deadline: float | None) -> float | None:
+    """Seconds left before ``deadline`` (at least a little: the search then ends as a timeout)."""
+    import time
+
+    return None if deadline is None else max(0.001, deadline - time.monotonic())
+
+
+def _make_folder(folder: Path) -> Path:
+    """``folder``, created if need be; one the OS refuses is the output error (exit 40)."""
+    from guided_lfd.errors import Location, OutputError
+
+    try:
+        folder.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise OutputError(f"cannot make the session folder ({exc.strerror or exc})", Location(str(folder))) from None
+    return folder
 
 
 def _request(k: int, robot: Domain, task: Problem, report, prefer_by: Domain | None,
-             reduce_by: Domain | None) -> Round:
+             reduce_by: Domain | None, human: Domain | None = None) -> Round:
     """The round's request: the (preferred) minimal excuse or its smallest sufficient part, why the robot
     needs it, what to leave as it is."""
     from guided_lfd.excuse.preference import minimal_request, prefer_demonstration
@@ -320,7 +367,7 @@ def _request(k: int, robot: Domain, task: Problem, report, prefer_by: Domain | N
         chosen = report.excuses[index]
     excuse = chosen.changes
     request = minimal_request(reduce_by, robot, task, excuse) if reduce_by is not None else list(excuse)
-    keep = keep_facts(robot, task, task.init, excuse, chosen.plan)
+    keep = keep_facts(robot, task, task.init, excuse, chosen.plan, human)
     return Round(k, excuse, request, [describe_change(c, spellings) for c in request],
                  _why(report, robot, task, excuse), keep, [f"keep {pretty_atom(a, spellings)}" for a in keep],
                  preference=preference)
@@ -354,10 +401,31 @@ def _learn_round(rnd: Round, folder: Path, out: Path, robot: Domain, task: Probl
     write_text(out / "robot.pddl", domain_to_pddl(merged, header=f"The robot's domain after round {rnd.index}"))
     rnd.files.update(trace=str(trace), state=str(states), segments=str(folder / "segments.json"),
                      learned=str(folder / "learned.pddl"), robot=str(folder / "robot.pddl"))
+    _check_start(demo, task, trace)
     state = _state_after(demo, task, merged)
     rnd.unmet = [c for c in rnd.request if (c.atom in state) != c.added]
     rnd.request_met = not rnd.unmet
     return merged, state
+
+
+def _check_start(demo, task: Problem, trace: Path) -> None:
+    """The demonstration starts where the task is now: its objects are the task's, its first state is the
+    task's current one on the fluents the trace records (a trace of another world is refused, exit 34)."""
+    from guided_lfd.errors import Location, MismatchError
+
+    unknown = sorted(set(demo.objects) - set(task.objects))
+    if unknown:
+        raise MismatchError(f"the demonstration has object(s) the task does not: {', '.join(unknown)} "
+                            "(expected a demonstration of this task)", Location(str(trace)))
+    traced = {a.predicate for a in demo.initial} | {a.predicate for _, a, _ in demo.events}
+    here = {a for a in task.init if a.predicate in traced}
+    differ = sorted(here ^ set(demo.initial))
+    if differ:
+        which = differ[0]
+        side = "true now but not at the demonstration's start" if which in here else "true at its start, not now"
+        raise MismatchError(f"the demonstration starts from another state: {which} is {side} "
+                            f"({len(differ)} fact(s) differ; expected a demonstration from the task's current "
+                            "state)", Location(str(trace)))
 
 
 def _state_after(demo, task: Problem, robot: Domain) -> frozenset[Atom]:
@@ -376,9 +444,8 @@ def _state_after(demo, task: Problem, robot: Domain) -> frozenset[Atom]:
     return frozenset(state)
 
 
-def _replan(robot: Domain, task: Problem) -> list[PlanStep] | None:
-    """The robot's validated optimal plan for ``task``, or None when it has none."""
+def _replan(robot: Domain, task: Problem, deadline: float | None = None) -> list[PlanStep] | None:
+    """The robot's validated optimal plan for ``task``, or None when it has none (SearchTimeout past ``deadline``)."""
     from guided_lfd.api import plan
 
-    result = plan(robot, task)
-    return result.plan
+    return plan(robot, task, time_limit=_left(deadline)).plan

@@ -390,3 +390,11 @@ def test_slack_lists_every_excuse_up_to_one_more_change_that_extends_none(tmp_pa
     got = [sorted(str(c) for c in e.changes) for e in report.excuses]
     assert sorted(got) == sorted(expected)
     assert all(check_excuse(domain, problem, e.changes, e.plan, groups) == [] for e in report.excuses)
+
+
+def test_a_fixed_atom_of_an_invariant_group_pins_its_group():
+    """Review finding: --fixed on a predicate whose true atom is in a mutex group crashed LM-cut (KeyError)."""
+    domain, problem = parse_task(*kitchen(2))
+    for fixed in (["hand_free"], ["on_top"]):
+        report = find_excuses(domain, problem, ExcuseOptions(fixed=fixed))
+        assert [str(c) for c in report.excuse.changes] == ["+(clear pinkdrawer)"]

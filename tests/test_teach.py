@@ -17,11 +17,11 @@ HUMAN = {k: str(DOMAINS / f"kitchen-{k}" / "human.pddl") for k in (1, 2)}
 
 #: session.json's documented keys and their types (README: JSON formats, guided-lfd/teach).
 SESSION_KEYS = {"format": str, "format_version": int, "robot": str, "problem": str, "solved": bool, "status": str,
-                "rounds": list, "plan": (list, type(None)), "plans_original_task": bool, "robot_domain": str}
+                "rounds": list, "plan": (list, type(None)), "plans_original_task": (bool, type(None)), "robot_domain": str}
 ROUND_KEYS = {"round": int, "excuse": list, "request": list, "request_text": list, "why": list, "keep": list,
               "keep_text": list, "demonstration_length": (int, type(None)), "new_actions": (int, type(None)), "learned_actions": list,
               "request_met": (bool, type(None)), "unmet": list, "solvable_after": (bool, type(None)), "files": dict,
-              "preference": (str, type(None))}
+              "preference": (str, type(None)), "error": (str, type(None))}
 
 
 def _check_schema(doc: dict) -> None:
@@ -59,7 +59,8 @@ def test_simulated_teaching_solves_each_kitchen_in_one_round(k, asked, learned, 
 
 def test_the_request_says_why_and_what_to_leave_as_it_is(tmp_path):
     robot, problem = parse_task(*kitchen(1))
-    session = teach(robot, problem, SimulatedHuman(parse_domain(HUMAN[1])), tmp_path)
+    human = parse_domain(HUMAN[1])
+    session = teach(robot, problem, SimulatedHuman(human), tmp_path, human=human)
     rnd = session.rounds[0]
     assert rnd.request_text == ["Open PinkDrawer"]
     assert rnd.why == ["Open PinkDrawer: no skill of the robot does this, and its plan to Inside RedPlate, "
@@ -186,3 +187,51 @@ def test_slack_widens_the_excuses_and_the_preference_may_pick_a_costlier_one(run
                                        "3 action(s), against 4 for +(unlocked direct)")
     assert runner.invoke(app, [*base, "--slack", "1"]).exit_code == 37  # needs --all or --prefer
     assert runner.invoke(app, [*base, "--all", "--slack", "1", "--strategy", "baseline"]).exit_code == 37
+
+
+def test_a_session_folder_holding_an_input_or_that_is_a_file_is_refused_before_any_work(runner, app, tmp_path):
+    import shutil
+
+    for name in ("robot.pddl", "problem.pddl", "human.pddl"):
+        shutil.copy(DOMAINS / "kitchen-2" / name, tmp_path / name)
+    before = (tmp_path / "robot.pddl").read_bytes()
+    inside = runner.invoke(app, ["teach", str(tmp_path / "robot.pddl"), str(tmp_path / "problem.pddl"),
+                                 "--simulate", str(tmp_path / "human.pddl"), "-o", str(tmp_path)])
+    assert inside.exit_code == 37 and "an input of this run" in inside.stderr
+    assert (tmp_path / "robot.pddl").read_bytes() == before  # nothing the user had is replaced
+    (tmp_path / "afile").write_text("x")
+    robot, problem = kitchen(2)
+    for target in (tmp_path / "afile", tmp_path / "afile" / "sub"):
+        result = runner.invoke(app, ["teach", robot, problem, "--simulate", HUMAN[2], "-o", str(target)])
+        assert result.exit_code == 40 and "internal error" not in result.stderr, result.stderr
+
+
+def test_a_trace_of_another_world_is_refused_and_the_session_so_far_is_written(runner, app, tmp_path):
+    robot, problem = kitchen(2)
+    other = DOMAINS.parent / "demos" / "kitchen-1" / "P1-excuse.csv"  # Kitchen I: no chair in front of the drawer
+    result = runner.invoke(app, ["teach", robot, problem, "--demo", str(other), "-o", str(tmp_path), "--json"])
+    assert result.exit_code == 34 and "the demonstration starts from another state" in result.stderr
+    doc = json.loads((tmp_path / "session.json").read_text())
+    _check_schema(doc)
+    assert doc["status"] == "bad-demonstration" and "starts from another state" in doc["rounds"][0]["error"]
+    missing = runner.invoke(app, ["teach", robot, problem, "--demo", str(tmp_path / "nope.csv"), "-o",
+                                  str(tmp_path / "s2")])
+    assert missing.exit_code == 30 and "nope.csv" in missing.stderr  # refused before any work
+
+
+def test_the_time_limit_bounds_the_whole_session(runner, app, tmp_path):
+    import time
+
+    robot, problem = kitchen(2)
+    start = time.monotonic()
+    result = runner.invoke(app, ["teach", robot, problem, "--simulate", HUMAN[2], "-o", str(tmp_path),
+                                 "--time-limit", "0.001", "--json"])
+    assert result.exit_code == 20 and json.loads(result.stdout)["status"] == "timeout"
+    assert time.monotonic() - start < 5
+
+
+def test_the_human_model_is_for_the_preference_only(runner, app):
+    robot, problem = kitchen(2)
+    result = runner.invoke(app, ["excuse", robot, problem, "--human", HUMAN[2]])
+    assert result.exit_code == 37 and "--prefer demonstration" in result.stderr
+

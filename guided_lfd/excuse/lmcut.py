@@ -229,7 +229,9 @@ class RelaxedExcuseTask:
             if present.bit_count() != 1:
                 continue
             q = present.bit_length() - 1
-            if (changes >> q) & 1:
+            if (changes >> q) & 1 or q not in self.space.weights:
+                # q was made true by the change set, or may not change at all (fixed): it stays,
+                # so no other atom of its group can be made true.
                 yield k, None
             elif not (self.neg_mask >> q) & 1:
                 yield k, self.space.weights[q] * self.scale / self.membership[q]
