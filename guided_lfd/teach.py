@@ -161,9 +161,10 @@ def _why(report, robot: Domain, problem: Problem, excuse: list[Change]) -> list[
     spellings = report.spellings
     goal = ", ".join(describe_change(Change(l.atom, l.positive), spellings) for l in problem.goal)
     out = [f"no skill of the robot makes {g} true" for g in report.unachievable_goals]
+    objects = {**robot.constants, **problem.objects}
+    subtypes = robot.subtypes()
     for change in excuse:
-        effects = (a.add if change.added else a.delete for a in robot.actions)
-        can = any(atom.predicate == change.atom.predicate for effect in effects for atom in effect)
+        can = any(_could_make(act, change, objects, subtypes) for act in robot.actions)
         what = describe_change(change, spellings)
         out.append(f"{what}: no skill of the robot does this, and its plan to {goal} needs it" if not can else
                    f"{what}: the robot cannot do this from here, and its plan to {goal} needs it")
@@ -371,6 +372,19 @@ def _request(k: int, robot: Domain, task: Problem, report, prefer_by: Domain | N
     return Round(k, excuse, request, [describe_change(c, spellings) for c in request],
                  _why(report, robot, task, excuse), keep, [f"keep {pretty_atom(a, spellings)}" for a in keep],
                  preference=preference)
+
+
+def _could_make(act, change: Change, objects: dict[str, str], subtypes: dict[str, set[str]]) -> bool:
+    """Whether ``act`` has an effect that makes ``change`` (its predicate, with arguments its parameters' types
+    admit): a drawer's ``open`` is not made by opening cupboard doors."""
+    params = dict(act.params)
+    for atom in act.add if change.added else act.delete:
+        if atom.predicate != change.atom.predicate or len(atom.args) != len(change.atom.args):
+            continue
+        if all((objects.get(value) in subtypes.get(params[term], {params[term]})) if term in params
+               else term == value for term, value in zip(atom.args, change.atom.args)):
+            return True
+    return False
 
 
 def _learn_round(rnd: Round, folder: Path, out: Path, robot: Domain, task: Problem,

@@ -235,3 +235,19 @@ def test_the_human_model_is_for_the_preference_only(runner, app):
     result = runner.invoke(app, ["excuse", robot, problem, "--human", HUMAN[2]])
     assert result.exit_code == 37 and "--prefer demonstration" in result.stderr
 
+
+
+def test_why_respects_types_a_cupboard_door_skill_does_not_open_a_drawer(tmp_path):
+    """The household robot without the drawer skill opens cupboard doors: 'open' alone is not a skill for it."""
+    from guided_lfd import household
+
+    house = household.House(2, 4, 2, 1, 1, "no-open")
+    (tmp_path / "robot.pddl").write_text(household.domain_pddl("no-open"))
+    (tmp_path / "problem.pddl").write_text(household.problem_pddl(house))
+    (tmp_path / "human.pddl").write_text(household.domain_pddl())
+    robot, problem = parse_task(str(tmp_path / "robot.pddl"), str(tmp_path / "problem.pddl"))
+    human = parse_domain(str(tmp_path / "human.pddl"))
+    session = teach(robot, problem, SimulatedHuman(human), tmp_path / "s", human=human)
+    (rnd,) = session.rounds
+    assert rnd.why[0].endswith("no skill of the robot does this, and its plan to Inside plate1, drawer1_1 needs it")
+    assert session.status == "solved"
