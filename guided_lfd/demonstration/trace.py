@@ -325,6 +325,8 @@ def hand_move(frame: pd.DataFrame) -> np.ndarray:
             continue
         t = frame["time"].to_numpy()[idx]
         pos = frame[["x", "y", "z"]].to_numpy()[idx]
+        # At low frame rates the window must still reach one neighbouring frame on each side.
+        half = max(MOVE_WINDOW_S / 2, 1.01 * float(np.median(np.diff(t)))) if idx.size > 1 else half
         lo = np.searchsorted(t, t - half, side="left")
         hi = np.searchsorted(t, t + half, side="right") - 1
         with np.errstate(over="ignore", divide="ignore", invalid="ignore"):  # huge coordinates: infinite speed
