@@ -48,6 +48,9 @@ JITTER_S = 0.06
 MIN_SEGMENT_S = 0.15
 #: Frame gaps up to this long (dropped frames) do not split a segment (s).
 MAX_GAP_S = 0.5
+#: How late the object detector may name a reach's target (s): a reach whose first frames move
+#: without a target yet, after the hand was idle, is a reach from its start, not a Release.
+DETECTOR_LATENCY_S = 0.15
 # EFFECT_DELAY_S (from trace): fluent changes this long after a segment still belong to it (s).
 #: Frames read at a segment boundary for what the hand holds or targets.
 BOUNDARY_FRAMES = 4
@@ -152,6 +155,22 @@ def _debounce(times: np.ndarray, runs: list[list]) -> list[list]:
     return runs
 
 
+def _lagged_reaches(times: np.ndarray, runs: list[list]) -> list[list]:
+    """A short target-less motion that starts from rest and runs into a Reach is that Reach's start
+    (the detector named the target late, by up to :data:`DETECTOR_LATENCY_S`)."""
+    out: list[list] = []
+    for k, run in enumerate(runs):
+        label, first, last = run
+        after = runs[k + 1] if k + 1 < len(runs) else None
+        from_rest = not out or out[-1][0] == "Idle"
+        if (label == "Release" and after is not None and after[0] == "Reach" and from_rest
+                and times[after[1]] - times[first] <= DETECTOR_LATENCY_S + 1e-9):
+            runs[k + 1] = ["Reach", first, after[2]]  # the Reach starts here
+            continue
+        out.append(run)
+    return out
+
+
 def _hand_segments(demo: Demonstration, labels: np.ndarray, hand: str) -> list[Segment]:
     """One hand's segments, without fluents yet."""
     frames = demo.frames
@@ -159,7 +178,7 @@ def _hand_segments(demo: Demonstration, labels: np.ndarray, hand: str) -> list[S
     if idx.size == 0:
         return []
     times = frames["time"].to_numpy()[idx]
-    runs = _debounce(times, _runs(times, labels[idx]))
+    runs = _debounce(times, _lagged_reaches(times, _runs(times, labels[idx])))
     held = frames["in_hand"].to_numpy()[idx]
     target = frames["act_on"].to_numpy()[idx]
     out = []
