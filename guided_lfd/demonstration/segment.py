@@ -216,9 +216,10 @@ def _attribute(demo: Demonstration, per_hand: dict[str, list[Segment]]) -> dict[
     for when, atom, value in demo.events:
         by_time.setdefault(when, []).append((atom, value))
     for when, changes in by_time.items():
-        candidates = [segs[int(np.searchsorted(windows[hand], when, side="left"))]
-                      for hand, segs in per_hand.items() if segs]
+        positions = [(segs, int(np.searchsorted(windows[hand], when, side="left")))
+                     for hand, segs in per_hand.items() if segs]
         for event in _linked(changes):
+            candidates = [_by_contact(segs, k, event) for segs, k in positions]
             objects = {a for atom, _ in event for a in atom.args}
             scored = [(len(objects & _handled(s)), s.activity != "Idle") for s in candidates]
             best = max(scored)
@@ -226,6 +227,21 @@ def _attribute(demo: Demonstration, per_hand: dict[str, list[Segment]]) -> dict[
                 if score == best:
                     caused[id(seg)] += [(when, atom, value) for atom, value in event]
     return caused
+
+
+def _by_contact(segs: list[Segment], k: int, event: list[tuple[Atom, bool]]) -> Segment:
+    """The segment of one hand an event belongs to: the one in progress, except that the carried object
+    leaving its place (a fact about it ends, none about it begins: its support becomes clear with it)
+    belongs to the Take that grasped it, however far into the transport the contact ended (the plate
+    leaves the table once lifted)."""
+    seg = segs[k]
+    carried = seg.object
+    leaves = any(not value and carried in atom.args for atom, value in event)
+    arrives = any(value and carried in atom.args for atom, value in event)
+    if (seg.activity in ("Put", "Stack") and k > 0 and carried and segs[k - 1].activity == "Take"
+            and segs[k - 1].object == carried and leaves and not arrives):
+        return segs[k - 1]
+    return seg
 
 
 def _linked(changes: list[tuple[Atom, bool]]) -> list[list[tuple[Atom, bool]]]:
