@@ -115,8 +115,8 @@ def excuse(
             invariants_from=parse_domain(invariants_from) if invariants_from else None,
             fixed_from=parse_domain(fixed_from) if fixed_from else None, started=started,
         )
+        human_domain = parse_domain(human) if human else None
     ui.reading_warnings(dom, options.invariants_from, options.fixed_from)
-    human_domain = parse_domain(human) if human else None
     report = _run(dom, prob, options)
     if prefer and human_domain is not None and report.excuses:
         from guided_lfd.excuse.preference import apply_preference

@@ -173,22 +173,15 @@ def _why(report, robot: Domain, problem: Problem, excuse: list[Change]) -> list[
 
 # -- demonstrators -----------------------------------------------------------------------
 
-#: Where the kitchens' objects stand (the study's scene); other objects get places on a grid.
-_KNOWN_POSITIONS = {
-    "redplate": (0.5, 0.2, 0.8), "table": (0.5, 0.2, 0.75), "counter": (0.9, 0.2, 0.9),
-    "pinkdrawer": (-0.1, 0.45, 0.6), "bluedrawer": (-0.4, 0.45, 0.6), "corner": (-1.0, -0.5, 0.5),
-    "chair": (-0.1, 0.1, 0.5),
-}
-
-
 def _scene(problem: Problem, domain: Domain):
     """A scene for ``problem``'s objects: the study's positions where known, a grid of places otherwise."""
     from guided_lfd.demonstration.render import Scene
+    from guided_lfd.demonstration.study_data import SCENE_POSITIONS
 
     objects = {**domain.constants, **problem.objects}
     positions = {}
     for k, obj in enumerate(sorted(objects)):
-        positions[obj] = _KNOWN_POSITIONS.get(obj, (-0.9 + 0.35 * (k % 6), 0.3 + 0.3 * (k // 6), 0.8))
+        positions[obj] = SCENE_POSITIONS.get(obj, (-0.9 + 0.35 * (k % 6), 0.3 + 0.3 * (k // 6), 0.8))
     return Scene(positions=positions, types=dict(objects), spellings={**domain.spellings, **problem.spellings})
 
 
@@ -338,9 +331,10 @@ def teach(robot: Domain, problem: Problem, demonstrator: Demonstrator, out: Path
 
 def _left(deadline: float | None) -> float | None:
     """Seconds left before ``deadline`` (at least a little: the search then ends as a timeout)."""
-    import time
+    from guided_lfd.deadline import remaining
 
-    return None if deadline is None else max(0.001, deadline - time.monotonic())
+    left = remaining(deadline)
+    return None if left is None else max(0.001, left)
 
 
 def _make_folder(folder: Path) -> Path:
@@ -422,6 +416,11 @@ def _learn_round(rnd: Round, folder: Path, out: Path, robot: Domain, task: Probl
     return merged, state
 
 
+def _traced_predicates(demo) -> set[str]:
+    """The predicates the demonstration's state file records (its fluents' vocabulary)."""
+    return {a.predicate for a in demo.initial} | {a.predicate for _, a, _ in demo.events}
+
+
 def _check_start(demo, task: Problem, trace: Path) -> None:
     """The demonstration starts where the task is now: its objects are the task's, its first state is the
     task's current one on the fluents the trace records (a trace of another world is refused, exit 34)."""
@@ -431,7 +430,7 @@ def _check_start(demo, task: Problem, trace: Path) -> None:
     if unknown:
         raise MismatchError(f"the demonstration has object(s) the task does not: {', '.join(unknown)} "
                             "(expected a demonstration of this task)", Location(str(trace)))
-    traced = {a.predicate for a in demo.initial} | {a.predicate for _, a, _ in demo.events}
+    traced = _traced_predicates(demo)
     here = {a for a in task.init if a.predicate in traced}
     differ = sorted(here ^ set(demo.initial))
     if differ:
@@ -446,7 +445,7 @@ def _state_after(demo, task: Problem, robot: Domain) -> frozenset[Atom]:
     """The world as the demonstration left it: the trace's fluents at its end, the rest as it was."""
     end = float(demo.frames["time"].max())
     observed = demo.state_at(end)
-    traced = {a.predicate for a in demo.initial} | {a.predicate for _, a, _ in demo.events}
+    traced = _traced_predicates(demo)
     state = {a for a in task.init if a.predicate not in traced and a.predicate not in HAND_PREDICATES}
     state |= set(observed)
     held = {str(v).strip().lower() for v in demo.frames.groupby("hand")["in_hand"].last() if str(v).strip()
