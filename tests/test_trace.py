@@ -130,13 +130,13 @@ def test_decision_tree_names_a_put_by_where_the_hand_goes():
         (False, "redplate", "", True),            # holding still: Take
         (False, "redplate", "pinkdrawer", True),  # the transport's slow start or end: still a Put
         (True, "redplate", "pinkdrawer", True),   # carrying toward the drawer: Put
-        (True, "redplate", "redplate", True),     # moving while grasping: Put, not Stack onto itself
+        (True, "redplate", "redplate", True),     # moving, the detector on the held plate: the grasp's (Take)
         (False, "redplate", "blueplate", True),   # toward an item of its own type: Stack
         (False, "", "pinkdrawer", False),         # Reach, moving or not
         (True, "", "", False),                    # withdrawing: Release
         (False, "", "", False),                   # Idle
     ]), objects)
-    assert list(labels) == ["Take", "Take", "Put", "Put", "Put", "Stack", "Reach", "Release", "Idle"]
+    assert list(labels) == ["Take", "Take", "Put", "Put", "Take", "Stack", "Reach", "Release", "Idle"]
 
 
 def _debounced(pattern, rate=90.0):

@@ -98,8 +98,12 @@ def frame_labels(frames, objects: dict[str, str]) -> np.ndarray:
     labels[~held & ~grip & targeted] = "Reach"
     labels[~held & ~grip & ~targeted & moving] = "Release"
     labels[~held & grip & targeted] = "Manipulate"
+    # The detector still naming the held object: the hand is still on the grasp (a late detector
+    # at a transport's start, or tremor while holding), not carrying toward somewhere.
+    on_grasp = targeted & (target == in_hand)
     labels[held & ~moving & ~toward] = "Take"
     labels[held & (moving | toward)] = "Put"
+    labels[held & moving & on_grasp] = "Take"
     labels[held & (moving | toward) & onto_item] = "Stack"
     return labels
 
@@ -120,7 +124,10 @@ def _debounce(times: np.ndarray, runs: list[list]) -> list[list]:
     frame = float(np.median(np.diff(times))) if len(times) > 1 else 0.0
 
     def length(r: list) -> float:
-        return float(times[r[2]] - times[r[1]]) + frame
+        # A run lasts until the next frame: after dropped frames, longer than one frame period.
+        # (Clock rounding does not count: only a gap of more than one and a half periods.)
+        step = float(times[r[2] + 1] - times[r[2]]) if r[2] + 1 < len(times) else frame
+        return float(times[r[2]] - times[r[1]]) + (min(step, MAX_GAP_S) if step > 1.5 * frame else frame)
 
     def noise(k: int) -> bool:
         n = length(runs[k])
@@ -171,6 +178,24 @@ def _lagged_reaches(times: np.ndarray, runs: list[list]) -> list[list]:
     return out
 
 
+def _late_transports(times: np.ndarray, labels: np.ndarray, onset: np.ndarray) -> np.ndarray:
+    """Moving frames that end a Take and run into a Put or Stack within :data:`DETECTOR_LATENCY_S`
+    are that transport's start (the detector still named the held object); longer, they are
+    motion while holding (tremor, adjusting the grasp) and stay the Take's."""
+    k = 0
+    while k < len(labels):
+        if not (onset[k] and labels[k] == "Take"):
+            k += 1
+            continue
+        j = k
+        while j < len(labels) and onset[j] and labels[j] == "Take":
+            j += 1
+        if j < len(labels) and labels[j] in ("Put", "Stack") and times[j] - times[k] <= DETECTOR_LATENCY_S + 1e-9:
+            labels[k:j] = labels[j]
+        k = j
+    return labels
+
+
 def _hand_segments(demo: Demonstration, labels: np.ndarray, hand: str) -> list[Segment]:
     """One hand's segments, without fluents yet."""
     frames = demo.frames
@@ -178,7 +203,10 @@ def _hand_segments(demo: Demonstration, labels: np.ndarray, hand: str) -> list[S
     if idx.size == 0:
         return []
     times = frames["time"].to_numpy()[idx]
-    runs = _debounce(times, _lagged_reaches(times, _runs(times, labels[idx])))
+    onset = (frames["hand_move"].to_numpy(dtype=bool) & (frames["in_hand"] != "").to_numpy()
+             & (frames["act_on"] == frames["in_hand"]).to_numpy())[idx]
+    hand_labels = _late_transports(times, labels[idx].copy(), onset)
+    runs = _debounce(times, _lagged_reaches(times, _runs(times, hand_labels)))
     held = frames["in_hand"].to_numpy()[idx]
     target = frames["act_on"].to_numpy()[idx]
     out = []
@@ -187,8 +215,8 @@ def _hand_segments(demo: Demonstration, labels: np.ndarray, hand: str) -> list[S
         # Boundaries move by a few frames with jitter and debouncing: read
         # the hand's state over a few frames, not one.
         # At the trace's start: what the hand holds in its first frame.
-        held_before = _most_common(held[max(0, first - BOUNDARY_FRAMES):first]) if first > 0 else str(held[0])
-        held_after = _most_common(held[max(first, last - BOUNDARY_FRAMES + 1):last + 1])
+        held_before = _hand_state(held[max(0, first - BOUNDARY_FRAMES):first][::-1]) if first > 0 else str(held[0])
+        held_after = _hand_state(held[max(first, last - BOUNDARY_FRAMES + 1):last + 1][::-1])
         out.append(Segment(0, hand, label, float(times[first]), float(times[last]), obj, tgt,
                            held_before=held_before, held_after=held_after))
     return out
@@ -298,6 +326,13 @@ def _most_common(values) -> str:
         return ""
     names, counts = np.unique(np.array(vals, dtype=object).astype(str), return_counts=True)
     return str(names[int(np.argmax(counts))])
+
+
+def _hand_state(values) -> str:
+    """What the hand holds over a few boundary frames, nearest first: the majority, an empty hand
+    counted too (one frame of the next grasp at a Reach's end is not holding), ties to the nearest."""
+    vals = [str(v) if v else "" for v in values]
+    return max(dict.fromkeys(vals), key=vals.count) if vals else ""
 
 
 def _roles(label: str, held, target) -> tuple[str, str]:
