@@ -49,6 +49,8 @@ def learn_domain(
     prior_domain = parse_domain(prior) if prior else None
     ui.reading_warnings(prior_domain)
     domain = learn(documents, prior_domain, name=name.lower())
+    # Demonstrations the learner left out or reconciled (their effects disagree with the others').
+    ui.reading_warnings(domain)
     header = "Learned by guided-lfd learn-domain from: " + ", ".join(segments)
     write_text(output, domain_to_pddl(domain, header=header))
     # With --prior the result keeps the prior's actions under their names; the rest were demonstrated.

@@ -164,7 +164,8 @@ def test_generalise_aligns_repeats_and_keeps_names_unique():
     c = ActionSchema("push", (("?o1", "obstacle"),), (), (Atom("clear", ("?o1",)),), ())
     parents = {"furniture": "object", "drawer": "furniture", "surface": "furniture", "obstacle": "object"}
     out = generalise([a, b, c], parents)
-    assert [x.name for x in out] == ["push", "push_2"]
+    # Two skills (different effects): named by their parameters' types.
+    assert [x.name for x in out] == ["push_obstacle_furniture_furniture", "push_obstacle"]
     merged = out[0]
     assert merged.add == (Atom("blocking", ("?o1", "?o2")),) and merged.delete == (Atom("blocking", ("?o1", "?o3")),)
     assert dict(merged.params)["?o3"] == "furniture"  # drawer and surface generalise to furniture

@@ -15,8 +15,9 @@ holds) is a demonstrated action:
   been false before it (a negative precondition, as action-model learners do);
 * a Put (or Stack) and the Release that ends it are one skill;
 * objects are lifted to typed parameters; repeated demonstrations of a skill
-  (same name and parameter types) are generalised by intersecting their
-  preconditions and effects;
+  (same activity, equal lifted effects) are generalised by intersecting their
+  preconditions, and a demonstration whose effects disagree with the others'
+  is reported and left out, see :mod:`guided_lfd.demonstration.generalise`;
 * a negative precondition ``(not p)`` is dropped when a positive one ``q``
   implies it through a mutex proven by invariant synthesis (the plate in the
   hand is in no drawer), see :mod:`guided_lfd.demonstration.mutex`.
@@ -26,6 +27,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass, replace
 
+from guided_lfd.demonstration.generalise import generalise
+from guided_lfd.demonstration.implied import drop_implied_preconditions
 from guided_lfd.demonstration.mutex import drop_implied_negative_preconditions, proven_invariants
 from guided_lfd.demonstration.trace import HAND_PREDICATES
 from guided_lfd.errors import Location, MergeError, TraceError
@@ -45,6 +48,8 @@ class DemonstratedAction:
     add: frozenset[Atom]
     delete: frozenset[Atom]
     source: str
+    start: float = 0.0  # the segment's time span in its trace (s)
+    end: float = 0.0
 
 
 def _hand_fluents(held: str) -> set[Atom]:
@@ -112,7 +117,8 @@ def ground_actions(document: dict, source: str = "segments") -> list[Demonstrate
         objects = tuple(dict.fromkeys(roles + others))
         name = "_".join([seg["activity"].lower(), *(types.get(o, "object") for o in roles)])
         out.append(DemonstratedAction(name, objects, frozenset(pre), frozenset(add), frozenset(delete),
-                                      f"{source} segment {seg['index']} ({seg['activity']} {' '.join(roles)})"))
+                                      f"{source} segment {seg['index']} ({seg['activity']} {' '.join(roles)})",
+                                      float(seg.get("start", 0.0)), float(seg.get("end", 0.0))))
     return out
 
 
@@ -142,72 +148,6 @@ def lift(action: DemonstratedAction, types: dict[str, str]) -> ActionSchema:
     )
 
 
-def _aligned(base: ActionSchema, other: ActionSchema) -> dict[str, str] | None:
-    """The renaming of ``other``'s parameters that best agrees with ``base`` (effects first)."""
-    import itertools
-
-    best, best_score = None, None
-    names = [v for v, _ in other.params]
-    base_eff = {("+", a) for a in base.add} | {("-", a) for a in base.delete}
-    base_pre = set(base.precondition)
-    for perm in itertools.permutations([v for v, _ in base.params]):
-        mapping = dict(zip(names, perm))
-        eff = {("+", a.substitute(mapping)) for a in other.add} | {("-", a.substitute(mapping)) for a in other.delete}
-        pre = {l.substitute(mapping) for l in other.precondition}
-        score = (len(eff & base_eff), len(pre & base_pre))
-        if best_score is None or score > best_score:
-            best, best_score = mapping, score
-    return best
-
-
-def generalise(actions: list[ActionSchema], parents: dict[str, str | None] | None = None) -> list[ActionSchema]:
-    """One schema per skill (name and arity): repeats are aligned and intersected.
-
-    Each repeat's parameters are renamed to agree best with the first
-    demonstration (effects first, then preconditions); preconditions and
-    effects are intersected; differing parameter types become their closest
-    common supertype (from ``parents``, else ``object``).  A repeat that
-    shares no effect with the skill so far is another skill of the same name
-    (opposite changes both named Push): intersecting them would leave an
-    action that does nothing.
-    """
-    parents = parents or {}
-    groups: dict[tuple, list[ActionSchema]] = {}
-    for act in actions:
-        groups.setdefault((act.name, len(act.params)), []).append(act)
-    out: list[ActionSchema] = []
-    used: dict[str, int] = {}
-    for (name, _), group in groups.items():
-        # Each skill: [first, types, pre, add, delete, repeats].
-        skills: list[list] = []
-        for other in group:
-            for skill in skills:
-                first, types, pre, add, dele, acts = skill
-                mapping = _aligned(first, other) or {}
-                shared_add = add & {a.substitute(mapping) for a in other.add}
-                shared_del = dele & {a.substitute(mapping) for a in other.delete}
-                if not shared_add and not shared_del:
-                    continue
-                for var, typ in other.params:
-                    target = mapping.get(var, var)
-                    types[target] = common_supertype(parents, types[target], typ)
-                skill[2] = pre & {l.substitute(mapping) for l in other.precondition}
-                skill[3], skill[4] = shared_add, shared_del
-                acts.append(other)
-                break
-            else:
-                skills.append([other, dict(other.params), set(other.precondition), set(other.add), set(other.delete),
-                               [other]])
-        for first, types, pre, add, dele, acts in skills:
-            used[name] = used.get(name, 0) + 1
-            unique = name if used[name] == 1 else f"{name}_{used[name]}"  # same skill name, other arity or effects
-            origin = f"learned from {len(acts)} demonstration(s): " + "; ".join(a.origin or "" for a in acts[:3])
-            params = tuple((v, types[v]) for v, _ in first.params)
-            out.append(ActionSchema(unique, params, tuple(sorted(pre)), tuple(sorted(add)), tuple(sorted(dele)),
-                                    origin))
-    return out
-
-
 def learn_domain(documents: list[tuple[str, dict]], prior: Domain | None = None, name: str = "learned") -> Domain:
     """A domain of the skills demonstrated in ``documents`` (source, segments document).
 
@@ -215,8 +155,9 @@ def learn_domain(documents: list[tuple[str, dict]], prior: Domain | None = None,
     the prior merged with the learned skills by :func:`guided_lfd.merge.merge_domains`
     (skills the prior already has are kept once, name clashes renamed).
     """
-    types, lifted = _lifted_demonstrations(documents)
-    learned = generalise(lifted, prior.types if prior is not None else None)
+    types, lifted, spans = _lifted_demonstrations(documents)
+    notes: list[str] = []
+    learned = generalise(lifted, prior.types if prior is not None else None, notes, spans)
     predicates = _predicates_of(learned)
     type_decl: dict[str, str | None] = {"object": None}
     for t in sorted(set(types.values())):
@@ -224,15 +165,23 @@ def learn_domain(documents: list[tuple[str, dict]], prior: Domain | None = None,
     if prior is None:
         domain = Domain(name=name, requirements=(":strips", ":typing", ":negative-preconditions"), types=type_decl,
                         constants={}, predicates=predicates, actions=learned, path="<learned>")
-        invariants = proven_invariants(domain, types, observed_states(documents))
-        return drop_implied_negative_preconditions(domain, {a.name for a in learned}, invariants)
-    return _learned_into_prior(documents, prior, name, types, type_decl, predicates, learned)
+        states = observed_states(documents)
+        invariants = proven_invariants(domain, types, states)
+        simplified = drop_implied_negative_preconditions(domain, {a.name for a in learned}, invariants)
+        simplified = drop_implied_preconditions(simplified, {a.name for a in learned}, states, invariants)
+    else:
+        simplified = _learned_into_prior(documents, prior, name, types, type_decl, predicates, learned)
+    # Demonstrations left out or reconciled are reported with the domain (the CLI prints them).
+    return replace(simplified, warnings=(*simplified.warnings, *notes))
 
 
-def _lifted_demonstrations(documents: list[tuple[str, dict]]) -> tuple[dict[str, str], list[ActionSchema]]:
-    """Every object's type and every demonstrated action lifted; a predicate used with two arities is an error."""
+def _lifted_demonstrations(documents: list[tuple[str, dict]]
+                           ) -> tuple[dict[str, str], list[ActionSchema], dict[str, str]]:
+    """Every object's type, every demonstrated action lifted and the time span of each (by origin);
+    a predicate used with two arities is an error."""
     types: dict[str, str] = {}
     lifted: list[ActionSchema] = []
+    spans: dict[str, str] = {}
     arity: dict[str, tuple[int, str]] = {}
     for source, doc in documents:
         for fluents in [doc.get("initial", [])] + [s[k] for s in doc.get("segments", []) for k in ("before", "after")]:
@@ -242,8 +191,10 @@ def _lifted_demonstrations(documents: list[tuple[str, dict]]) -> tuple[dict[str,
                     raise TraceError(f"{atom.predicate} has {len(atom.args)} argument(s) here and {n} in {where}; "
                                      "expected the same number", Location(source))
         types.update(doc.get("objects", {}))
-        lifted += [lift(a, doc.get("objects", {})) for a in ground_actions(doc, source)]
-    return types, lifted
+        for action in ground_actions(doc, source):
+            lifted.append(lift(action, doc.get("objects", {})))
+            spans[action.source] = f", {action.start:.2f}-{action.end:.2f} s"
+    return types, lifted, spans
 
 
 def _predicates_of(actions: list[ActionSchema]) -> dict[str, Predicate]:
@@ -282,8 +233,10 @@ def _learned_into_prior(documents: list[tuple[str, dict]], prior: Domain, name: 
     combined = replace(prior, requirements=reqs, predicates={**predicates, **prior.predicates},
                        actions=[*prior.actions, *(replace(a, name=f"{a.name}__learned") for a in learned)],
                        path="<learned>")
-    invariants = proven_invariants(combined, types, observed_states(documents))
+    states = observed_states(documents)
+    invariants = proven_invariants(combined, types, states)
     simplified = drop_implied_negative_preconditions(combined, set(provisional), invariants)
+    simplified = drop_implied_preconditions(simplified, set(provisional), states, invariants)
     learned = [replace(a, name=provisional[a.name]) for a in simplified.actions if a.name in provisional]
     alone = Domain(name=name, requirements=reqs, types=type_decl, constants={}, predicates=predicates,
                    actions=learned, path="<learned>")

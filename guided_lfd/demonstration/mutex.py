@@ -70,12 +70,22 @@ def mutex(p: Atom, q: Atom, invariants: list) -> object | None:
     """
     if p.predicate == q.predicate:
         return None
+    return _shared_group(p, q, invariants)
+
+
+def _shared_group(p: Atom, q: Atom, invariants: list) -> object | None:
     for inv in invariants:
         keys_p = {_key(part, p) for part in inv.parts} - {None}
         keys_q = {_key(part, q) for part in inv.parts} - {None}
         if keys_p & keys_q:
             return inv
     return None
+
+
+def group_key_matches(p: Atom, q: Atom, invariants: list) -> bool:
+    """Whether lifted atoms ``p`` and ``q`` fall into one at-most-one group for every binding: they are never
+    both true unless some binding makes them the same atom (same predicate), which the caller must rule out."""
+    return _shared_group(p, q, invariants) is not None
 
 
 def drop_implied_negative_preconditions(domain: Domain, names: set[str], invariants: list) -> Domain:
@@ -93,4 +103,4 @@ def drop_implied_negative_preconditions(domain: Domain, names: set[str], invaria
     return replace(domain, actions=actions)
 
 
-__all__ = ["proven_invariants", "mutex", "drop_implied_negative_preconditions"]
+__all__ = ["proven_invariants", "mutex", "group_key_matches", "drop_implied_negative_preconditions"]

@@ -32,6 +32,6 @@
   ;; learned from 1 demonstration(s): kitchen-2/P1-complete segment 12 (Put redplate pinkdrawer)
   (:action put_item_drawer
     :parameters (?o1 - item ?o2 - drawer)
-    :precondition (and (clear ?o2) (graspable ?o1) (in_hand ?o1) (open ?o2))
+    :precondition (and (clear ?o2) (in_hand ?o1) (open ?o2))
     :effect (and (hand_free) (inside ?o1 ?o2) (not (in_hand ?o1))))
 )

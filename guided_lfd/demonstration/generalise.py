@@ -1,0 +1,163 @@
+"""Generalising repeated demonstrations of a skill (paper, section III-D-1; issue #14).
+
+Repeats are grouped by what they *do*: two demonstrations of an activity are
+one skill when their lifted effects are equal under some renaming of their
+parameters (taking a block from the table and from another block are two
+skills, both labelled Take).  A skill's preconditions are the intersection of
+its repeats' (aligned) preconditions; parameters no longer used are dropped;
+differing parameter types become their closest common supertype.
+
+A demonstration whose effects are a strict part or a strict extension of a
+skill's that more demonstrations agree on is a bad observation (a change
+given to the wrong segment), not a skill: it is left out and reported.  With
+as many demonstrations on each side the learner cannot tell which is right
+and keeps what both show (the intersection), reported too.  Either way no
+near-duplicate skill is made.
+"""
+
+from __future__ import annotations
+
+import itertools
+from dataclasses import dataclass, field
+
+from guided_lfd.pddl.model import ActionSchema, Atom, Literal, common_supertype
+
+Effects = frozenset[tuple[str, Atom]]
+
+
+def _effects(action: ActionSchema, mapping: dict[str, str]) -> Effects:
+    return frozenset({("+", a.substitute(mapping)) for a in action.add}
+                     | {("-", a.substitute(mapping)) for a in action.delete})
+
+
+@dataclass
+class Skill:
+    """Demonstrations generalised into one skill so far."""
+
+    first: ActionSchema
+    types: dict[str, str]
+    precondition: set[Literal]
+    effects: Effects
+    demonstrations: list[ActionSchema] = field(default_factory=list)
+
+    @classmethod
+    def of(cls, action: ActionSchema) -> "Skill":
+        return cls(action, dict(action.params), set(action.precondition), _effects(action, {}), [action])
+
+    def absorb(self, other: ActionSchema, mapping: dict[str, str], parents: dict[str, str | None]) -> None:
+        """Add a repeat (renamed by ``mapping``): intersect preconditions and effects, widen types."""
+        for var, typ in other.params:
+            target = mapping[var]
+            if target in self.types:
+                self.types[target] = common_supertype(parents, self.types[target], typ)
+        self.precondition &= {lit.substitute(mapping) for lit in other.precondition}
+        self.effects &= _effects(other, mapping)
+        self.demonstrations.append(other)
+
+    def schema(self, name: str) -> ActionSchema:
+        """The generalised action under ``name``, without parameters nothing mentions any more."""
+        used = {x for lit in self.precondition for x in lit.atom.args} | {x for _, a in self.effects for x in a.args}
+        params = tuple((v, self.types[v]) for v, _ in self.first.params if v in used)
+        acts = self.demonstrations
+        origin = f"learned from {len(acts)} demonstration(s): " + "; ".join(a.origin or "" for a in acts[:3])
+        return ActionSchema(name, params, tuple(sorted(self.precondition)),
+                            tuple(sorted(a for s, a in self.effects if s == "+")),
+                            tuple(sorted(a for s, a in self.effects if s == "-")), origin)
+
+
+def aligned(base: ActionSchema, other: ActionSchema) -> dict[str, str]:
+    """The renaming of ``other``'s parameters onto ``base``'s that agrees best with it (effects first,
+    then preconditions); a parameter ``base`` has no counterpart for gets a fresh name."""
+    base_eff, base_pre = _effects(base, {}), set(base.precondition)
+    names = [v for v, _ in other.params]
+    slots = [v for v, _ in base.params] + [f"?unmatched{i}" for i in range(len(names))]
+    best, best_score = {v: v for v in names}, None
+    for targets in itertools.permutations(slots, len(names)):
+        mapping = dict(zip(names, targets))
+        score = (len(_effects(other, mapping) & base_eff), len({l.substitute(mapping) for l in other.precondition}
+                                                               & base_pre))
+        if best_score is None or score > best_score:
+            best, best_score = mapping, score
+    return best
+
+
+def _cluster(group: list[ActionSchema], parents: dict[str, str | None]) -> list[Skill]:
+    """Repeats with equal lifted effects (under the best renaming) as one skill each."""
+    skills: list[Skill] = []
+    for other in group:
+        for skill in skills:
+            mapping = aligned(skill.first, other)
+            if _effects(other, mapping) == skill.effects:
+                skill.absorb(other, mapping, parents)
+                break
+        else:
+            skills.append(Skill.of(other))
+    return skills
+
+
+def _show(effects: Effects, action: ActionSchema) -> str:
+    return " ".join(str(a) if s == "+" else f"(not {a})" for s, a in sorted(effects)) or "nothing"
+
+
+def _reconcile(skills: list[Skill], parents: dict[str, str | None], name: str,
+               notes: list[str], spans: dict[str, str]) -> list[Skill]:
+    """Skills whose effects are a strict part or extension of a better-supported one's are bad
+    observations of it: left out (fewer demonstrations) or intersected with it (as many), and noted."""
+    kept: list[Skill] = []
+    for skill in sorted(skills, key=lambda s: -len(s.demonstrations)):
+        for good in kept:
+            mapping = aligned(good.first, skill.first)
+            theirs = _effects(skill.first, mapping)
+            if not (theirs < good.effects or theirs > good.effects):
+                continue
+            where = "; ".join(f"{a.origin}{spans.get(a.origin or '', '')}" for a in skill.demonstrations)
+            what = (f"its effects ({_show(theirs, skill.first)}) disagree with {len(good.demonstrations)} other "
+                    f"demonstration(s) of {name} ({_show(good.effects, good.first)})")
+            if len(skill.demonstrations) < len(good.demonstrations):
+                notes.append(f"{where}: warning: {what}; left out")
+            else:
+                for other in skill.demonstrations:
+                    good.absorb(other, aligned(good.first, other), parents)
+                notes.append(f"{where}: warning: {what}; kept what both show")
+            break
+        else:
+            kept.append(skill)
+    return kept
+
+
+def _distinct_names(name: str, skills: list[Skill]) -> list[str]:
+    """``name`` for one skill; for several (different effects), the types of the parameters the name does not
+    already say (``take_block_surface``, ``take_block_block``), then ``_2`` ... if that still clashes."""
+    if len(skills) == 1:
+        return [name]
+    named = len(name.split("_")) - 1  # the activity, then one type per role
+    out: list[str] = []
+    for skill in skills:
+        used = {x for _, a in skill.effects for x in a.args} | {x for l in skill.precondition for x in l.atom.args}
+        params = [skill.types[v] for v, _ in skill.first.params if v in used]
+        candidate = "_".join([name, *params[named:]]) if len(params) > named else name
+        unique, n = candidate, 1
+        while unique in out:
+            n += 1
+            unique = f"{candidate}_{n}"
+        out.append(unique)
+    return out
+
+
+def generalise(actions: list[ActionSchema], parents: dict[str, str | None] | None = None,
+               notes: list[str] | None = None, spans: dict[str, str] | None = None) -> list[ActionSchema]:
+    """One schema per skill: repeats of an activity grouped by their lifted effects, aligned and intersected.
+
+    ``notes`` collects one line per demonstration left out or reconciled (see the module docstring);
+    ``spans`` maps a demonstration's origin to the frames it covers, for those lines.
+    """
+    parents, notes, spans = parents or {}, notes if notes is not None else [], spans or {}
+    groups: dict[str, list[ActionSchema]] = {}
+    for act in actions:
+        groups.setdefault(act.name, []).append(act)
+    out: list[ActionSchema] = []
+    for name, group in groups.items():
+        skills = _reconcile(_cluster(group, parents), parents, name, notes, spans)
+        skills.sort(key=lambda s: group.index(s.first))  # in order of first demonstration
+        out += [skill.schema(unique) for skill, unique in zip(skills, _distinct_names(name, skills))]
+    return out
