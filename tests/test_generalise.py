@@ -114,3 +114,28 @@ def test_learn_domain_warns_about_a_disagreeing_demonstration_and_learns_no_near
     assert warning[0].startswith(f"{paths[1]} segment 2 (Take greenblock), ")
     assert warning[0].endswith("disagree with 3 other demonstration(s) of take_block ((in_hand ?o1) "
                                "(not (hand_free)) (not (on_top ?o1 ?o2))); left out")
+
+
+def test_a_static_relation_ties_in_the_open_door_but_not_the_closed_one():
+    """Putting the mug into the cupboard needs the door it goes through open: door_of (static) ties the doors
+    to the cupboard; the open one, of which a varying fact holds, is a parameter, the closed one is not."""
+    from guided_lfd.demonstration.learn import ground_actions, static_predicates
+
+    scene = ["(door_of leftdoor cupboard)", "(door_of rightdoor cupboard)", "(graspable mug)"]
+    doc = {"objects": {"mug": "item", "cupboard": "cupboard", "leftdoor": "door", "rightdoor": "door",
+                       "table": "surface"},
+           "initial": [*scene, "(on_top mug table)"],
+           "segments": [{"index": 1, "hand": "right", "activity": "Put", "object": "mug", "target": "cupboard",
+                         "held_before": "mug", "held_after": "", "start": 1.0, "end": 2.0,
+                         "before": [*scene, "(open rightdoor)"],
+                         "after": [*scene, "(open rightdoor)", "(inside mug cupboard)"]}]}
+    assert static_predicates([("d", doc)]) == {"door_of", "graspable"}
+    (put,) = ground_actions(doc, "d")
+    assert put.objects == ("mug", "cupboard", "rightdoor")
+    assert {str(l) for l in put.precondition} == {"(door_of rightdoor cupboard)", "(open rightdoor)",
+                                                  "(graspable mug)", "(in_hand mug)", "(not (inside mug cupboard))"}
+    # Opening a door: the cupboard it belongs to has only the static relation: no evidence, not a parameter.
+    opening = dict(doc, segments=[dict(doc["segments"][0], activity="Open", object="leftdoor", target="",
+                                       held_before="", before=scene, after=[*scene, "(open leftdoor)"])])
+    (open_door,) = ground_actions(opening, "d")
+    assert open_door.objects == ("leftdoor",)

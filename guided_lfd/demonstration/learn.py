@@ -9,7 +9,9 @@ holds) is a demonstrated action:
   every fluent true before the segment that mentions an object the hand
   interacts with (the handled object, the target, what it holds, and every
   object whose fluents change), changed or not (``clear`` of the drawer),
-  plus the hand's state (``in_hand``/``hand_free``);
+  plus the hand's state (``in_hand``/``hand_free``), and fluents about
+  objects a static relation ties to those (the cupboard's open door, by
+  ``door_of``) where a fluent about them that varies holds;
 * effects are the changes over the segment to fluents of the objects the
   hand handles, and to the hand's state; what the skill makes true must have
   been false before it (a negative precondition, as action-model learners do);
@@ -20,7 +22,10 @@ holds) is a demonstrated action:
   is reported and left out, see :mod:`guided_lfd.demonstration.generalise`;
 * a negative precondition ``(not p)`` is dropped when a positive one ``q``
   implies it through a mutex proven by invariant synthesis (the plate in the
-  hand is in no drawer), see :mod:`guided_lfd.demonstration.mutex`.
+  hand is in no drawer), see :mod:`guided_lfd.demonstration.mutex`;
+* positive preconditions holding implies (the held block is ``clear``) are
+  dropped, and a grasp affordance (``graspable``) is kept only on the object
+  the skill grasps, see :mod:`guided_lfd.demonstration.implied`.
 """
 
 from __future__ import annotations
@@ -83,9 +88,37 @@ def skill_segments(segments: list[dict]) -> list[dict]:
     return out
 
 
-def ground_actions(document: dict, source: str = "segments") -> list[DemonstratedAction]:
-    """The demonstrated actions of one ``guided-lfd/segments`` document."""
+def static_predicates(documents: list[tuple[str, dict]]) -> set[str]:
+    """Predicates whose facts are the same in every state each document shows (``door_of``, ``graspable``)."""
+    seen: set[str] = set()
+    changed: set[str] = set()
+    for source, doc in documents:
+        states = [doc.get("initial", [])] + [s[k] for s in doc.get("segments", []) for k in ("before", "after")]
+        parsed = [{a for a in (_atom(x, source) for x in fluents) if a.predicate not in HAND_PREDICATES}
+                  for fluents in states]
+        first = parsed[0]
+        for state in parsed:
+            seen |= {a.predicate for a in state}
+            changed |= {a.predicate for a in state ^ first}
+    return seen - changed
+
+
+def _tied(before: set[Atom], interest: set[str], static: set[str]) -> set[str]:
+    """Objects a static relation ties to the ones the action involves (the doors of the cupboard the mug goes
+    into), kept only where a fact about them that varies holds (the door is open): a relation alone is no
+    evidence the skill needs that object."""
+    tied = {x for a in before if a.predicate in static and len(a.args) >= 2 and set(a.args) & interest
+            for x in a.args} - interest
+    return {x for x in tied if any(x in a.args and a.predicate not in static and set(a.args) <= interest | {x}
+                                   for a in before)}
+
+
+def ground_actions(document: dict, source: str = "segments", static: set[str] | None = None
+                   ) -> list[DemonstratedAction]:
+    """The demonstrated actions of one ``guided-lfd/segments`` document (``static``: the predicates that never
+    change, by default in this document)."""
     types: dict[str, str] = document.get("objects", {})
+    static = static_predicates([(source, document)]) if static is None else static
     out: list[DemonstratedAction] = []
     for seg in skill_segments(document.get("segments", [])):
         # The hand's fluents come from the trace, never from the environment state.
@@ -107,6 +140,7 @@ def ground_actions(document: dict, source: str = "segments") -> list[Demonstrate
         if not add and not delete:
             continue  # e.g. a Reach: moves the hand, changes nothing symbolic
         interest = handled | {arg for atom in add | delete for arg in atom.args}
+        interest |= _tied(before, interest, static)
         # Nodes of interest: fluents about the objects the action involves, all
         # of whose arguments it involves (so opening a drawer does not depend on
         # which plate happens to lie in it).
@@ -182,6 +216,7 @@ def _lifted_demonstrations(documents: list[tuple[str, dict]]
     types: dict[str, str] = {}
     lifted: list[ActionSchema] = []
     spans: dict[str, str] = {}
+    static = static_predicates(documents)
     arity: dict[str, tuple[int, str]] = {}
     for source, doc in documents:
         for fluents in [doc.get("initial", [])] + [s[k] for s in doc.get("segments", []) for k in ("before", "after")]:
@@ -191,7 +226,7 @@ def _lifted_demonstrations(documents: list[tuple[str, dict]]
                     raise TraceError(f"{atom.predicate} has {len(atom.args)} argument(s) here and {n} in {where}; "
                                      "expected the same number", Location(source))
         types.update(doc.get("objects", {}))
-        for action in ground_actions(doc, source):
+        for action in ground_actions(doc, source, static):
             lifted.append(lift(action, doc.get("objects", {})))
             spans[action.source] = f", {action.start:.2f}-{action.end:.2f} s"
     return types, lifted, spans
