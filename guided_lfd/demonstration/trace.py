@@ -329,6 +329,10 @@ def hand_move(frame: pd.DataFrame) -> np.ndarray:
         half = max(MOVE_WINDOW_S / 2, 1.01 * float(np.median(np.diff(t)))) if idx.size > 1 else half
         lo = np.searchsorted(t, t - half, side="left")
         hi = np.searchsorted(t, t + half, side="right") - 1
+        # Dropped frames: still reach the nearest frame before and after (a one-sided window over one
+        # interval doubles the noise on the speed).
+        lo = np.minimum(lo, np.maximum(np.searchsorted(t, t, side="left") - 1, 0))
+        hi = np.maximum(hi, np.minimum(np.searchsorted(t, t, side="right"), len(t) - 1))
         with np.errstate(over="ignore", divide="ignore", invalid="ignore"):  # huge coordinates: infinite speed
             span = t[hi] - t[lo]
             dist = np.linalg.norm(pos[hi] - pos[lo], axis=1)

@@ -454,15 +454,18 @@ def write(scenario: Scenario, cond: Condition, script_name: str, seed: int, fold
     return files
 
 
-def generate(out: Path = HERE) -> list[Path]:
-    """Write every scenario x condition x script; the manifest; the trace paths."""
+def generate(out: Path = HERE, seed_base: int = 14_000) -> list[Path]:
+    """Write every scenario x condition x script; the manifest; the trace paths.
+
+    ``seed_base`` other than the committed files' draws a held-out set: the same scenarios and
+    conditions, every duration, speed profile, noise, drop and lag drawn anew."""
     written = []
     rows = [["file", "scenario", "condition", "rate_hz", "profile", "tremor_mm", "drop", "duplicate", "flicker",
              "lag_s", "liftoff", "clock_start_s", "lowercase", "seed", "actions"]]
     for si, scenario in enumerate(SCENARIOS):
         for ci, cond in enumerate(CONDITIONS):
             for di, script in enumerate(sorted(scenario.scripts)):
-                seed = 14_000 + 1000 * si + 10 * ci + di
+                seed = seed_base + 1000 * si + 10 * ci + di
                 folder = out / scenario.name / cond.name
                 write(scenario, cond, script, seed, folder)
                 path = folder / f"{script}.csv"
@@ -478,4 +481,5 @@ def generate(out: Path = HERE) -> list[Path]:
 
 
 if __name__ == "__main__":
-    generate(Path(sys.argv[1]) if len(sys.argv) > 1 else HERE)
+    # generate.py [OUT_DIR [SEED_BASE]]
+    generate(Path(sys.argv[1]) if len(sys.argv) > 1 else HERE, int(sys.argv[2]) if len(sys.argv) > 2 else 14_000)
