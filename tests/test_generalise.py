@@ -139,3 +139,21 @@ def test_a_static_relation_ties_in_the_open_door_but_not_the_closed_one():
                                        held_before="", before=scene, after=[*scene, "(open leftdoor)"])])
     (open_door,) = ground_actions(opening, "d")
     assert open_door.objects == ("leftdoor",)
+
+
+def test_aligning_skills_with_many_parameters_stays_fast():
+    """A cupboard with six open doors: 8 parameters each side; the search tries like-for-like only."""
+    import time
+
+    def put(origin: str) -> ActionSchema:
+        doors = [f"?o{3 + i}" for i in range(6)]
+        params = (("?o1", "item"), ("?o2", "cupboard")) + tuple((d, "door") for d in doors)
+        pre = [Literal(Atom("in_hand", ("?o1",)))] + [Literal(Atom("open", (d,))) for d in doors] + [
+            Literal(Atom("door_of", (d, "?o2"))) for d in doors]
+        return ActionSchema("put_item_cupboard", params, tuple(sorted(pre)),
+                            (Atom("inside", ("?o1", "?o2")),), (Atom("in_hand", ("?o1",)),), origin)
+
+    start = time.monotonic()
+    (skill,) = generalise([put("a"), put("b"), put("c")])
+    assert time.monotonic() - start < 1.0
+    assert len(skill.params) == 8 and len(skill.precondition) == 13

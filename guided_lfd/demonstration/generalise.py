@@ -17,7 +17,6 @@ near-duplicate skill is made.
 
 from __future__ import annotations
 
-import itertools
 from dataclasses import dataclass, field
 
 from guided_lfd.pddl.model import ActionSchema, Atom, Literal, common_supertype
@@ -65,20 +64,55 @@ class Skill:
                             tuple(sorted(a for s, a in self.effects if s == "-")), origin)
 
 
+#: Renamings tried at most when aligning two demonstrations (beyond, the best found so far).
+MAX_ALIGNMENTS = 20_000
+
+
+def _signature(action: ActionSchema, var: str) -> set[tuple[str, str, int]]:
+    """Where ``var`` occurs: (effect sign or "pre", predicate, argument position)."""
+    out = {(s, a.predicate, i) for s, a in _effects(action, {}) for i, x in enumerate(a.args) if x == var}
+    return out | {("pre", l.atom.predicate, i) for l in action.precondition for i, x in enumerate(l.atom.args)
+                  if x == var}
+
+
 def aligned(base: ActionSchema, other: ActionSchema) -> dict[str, str]:
     """The renaming of ``other``'s parameters onto ``base``'s that agrees best with it (effects first,
-    then preconditions); a parameter ``base`` has no counterpart for gets a fresh name."""
+    then preconditions); a parameter ``base`` has no counterpart for gets a fresh name.
+
+    Each parameter is tried only on ``base``'s parameters that occur somewhere alike (same predicate
+    and position), so the search stays small with many parameters."""
     base_eff, base_pre = _effects(base, {}), set(base.precondition)
     names = [v for v, _ in other.params]
-    slots = [v for v, _ in base.params] + [f"?unmatched{i}" for i in range(len(names))]
-    best, best_score = {v: v for v in names}, None
-    for targets in itertools.permutations(slots, len(names)):
-        mapping = dict(zip(names, targets))
-        score = (len(_effects(other, mapping) & base_eff), len({l.substitute(mapping) for l in other.precondition}
-                                                               & base_pre))
-        if best_score is None or score > best_score:
-            best, best_score = mapping, score
-    return best
+    base_sigs = {v: _signature(base, v) for v, _ in base.params}
+    # The same name first: repeats are lifted alike, so the identity is the likeliest best.
+    options = [sorted((b for b, sig in base_sigs.items() if sig & _signature(other, v)), key=lambda b: b != v)
+               + [f"?unmatched{i}"] for i, v in enumerate(names)]
+    best: list = [{v: f"?unmatched{i}" for i, v in enumerate(names)}, None]
+    perfect = (min(len(other.add) + len(other.delete), len(base_eff)), min(len(other.precondition), len(base_pre)))
+    tried = 0
+
+    def score(mapping: dict[str, str]) -> tuple[int, int]:
+        return (len(_effects(other, mapping) & base_eff),
+                len({l.substitute(mapping) for l in other.precondition} & base_pre))
+
+    def extend(i: int, mapping: dict[str, str], used: set[str]) -> None:
+        nonlocal tried
+        if tried >= MAX_ALIGNMENTS or best[1] == perfect:
+            return
+        if i == len(names):
+            tried += 1
+            value = score(mapping)
+            if best[1] is None or value > best[1]:
+                best[0], best[1] = dict(mapping), value
+            return
+        for target in options[i]:
+            if target not in used:
+                mapping[names[i]] = target
+                extend(i + 1, mapping, used | {target})
+        mapping.pop(names[i], None)
+
+    extend(0, {}, set())
+    return best[0]
 
 
 def _cluster(group: list[ActionSchema], parents: dict[str, str | None]) -> list[Skill]:
