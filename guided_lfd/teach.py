@@ -400,7 +400,7 @@ def _learn_round(rnd: Round, folder: Path, out: Path, robot: Domain, task: Probl
     demonstrated = ground_actions(doc, str(trace))
     rnd.demonstration_length = len(demonstrated)
     rnd.new_actions = usefulness(demonstrated, robot, doc.get("objects", {})).useful
-    learned = learn_domain([(str(trace), doc)], name=f"learned-round-{rnd.index}")
+    learned = learn_domain([(str(trace), doc)], name=f"learned-round-{rnd.index}", context=robot)
     write_text(folder / "learned.pddl", domain_to_pddl(learned, header=f"Learned from {trace}"))
     merged = merge_domains([robot, learned], name=robot.name).domain
     known = {a.name for a in robot.actions}

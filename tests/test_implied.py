@@ -34,7 +34,7 @@ STATES = [
 def _simplified(domain=None, states=STATES):
     domain = domain or parse_domain(DOMAIN)
     invariants = proven_invariants(domain, OBJECTS, states)
-    out = drop_implied_preconditions(domain, {a.name for a in domain.actions}, states, invariants)
+    out = drop_implied_preconditions(domain, {a.name for a in domain.actions}, states, invariants, OBJECTS)
     return {a.name: {str(l) for l in a.precondition} for a in out.actions}
 
 

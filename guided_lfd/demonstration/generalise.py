@@ -64,8 +64,10 @@ class Skill:
                             tuple(sorted(a for s, a in self.effects if s == "-")), origin)
 
 
-#: Renamings tried at most when aligning two demonstrations (beyond, the best found so far).
+#: Renamings tried at most in each phase of an alignment (beyond, the best found so far).
 MAX_ALIGNMENTS = 20_000
+#: Effect renamings (of the best score) whose precondition-only parameters are then filled in.
+TOP_EFFECT_RENAMINGS = 8
 
 
 def _signature(action: ActionSchema, var: str) -> set[tuple[str, str, int]]:
@@ -75,35 +77,22 @@ def _signature(action: ActionSchema, var: str) -> set[tuple[str, str, int]]:
                   if x == var}
 
 
-def aligned(base: ActionSchema, other: ActionSchema) -> dict[str, str]:
-    """The renaming of ``other``'s parameters onto ``base``'s that agrees best with it (effects first,
-    then preconditions); a parameter ``base`` has no counterpart for gets a fresh name.
-
-    Each parameter is tried only on ``base``'s parameters that occur somewhere alike (same predicate
-    and position), so the search stays small with many parameters."""
-    base_eff, base_pre = _effects(base, {}), set(base.precondition)
-    names = [v for v, _ in other.params]
-    base_sigs = {v: _signature(base, v) for v, _ in base.params}
-    # The same name first: repeats are lifted alike, so the identity is the likeliest best.
-    options = [sorted((b for b, sig in base_sigs.items() if sig & _signature(other, v)), key=lambda b: b != v)
-               + [f"?unmatched{i}"] for i, v in enumerate(names)]
-    best: list = [{v: f"?unmatched{i}" for i, v in enumerate(names)}, None]
-    perfect = (min(len(other.add) + len(other.delete), len(base_eff)), min(len(other.precondition), len(base_pre)))
+def _search(names: list[str], options: list[list[str]], fixed: dict[str, str], score, limit: int,
+            keep: int) -> list[tuple[tuple, dict[str, str]]]:
+    """The ``keep`` best injective renamings of ``names`` (each from its options) extending ``fixed``, by
+    ``score``, trying at most ``limit`` complete ones; stops early at a perfect score (``score.perfect``)."""
+    found: list[tuple[tuple, dict[str, str]]] = []
     tried = 0
-
-    def score(mapping: dict[str, str]) -> tuple[int, int]:
-        return (len(_effects(other, mapping) & base_eff),
-                len({l.substitute(mapping) for l in other.precondition} & base_pre))
 
     def extend(i: int, mapping: dict[str, str], used: set[str]) -> None:
         nonlocal tried
-        if tried >= MAX_ALIGNMENTS or best[1] == perfect:
+        if tried >= limit or (found and found[0][0] == score.perfect):
             return
         if i == len(names):
             tried += 1
-            value = score(mapping)
-            if best[1] is None or value > best[1]:
-                best[0], best[1] = dict(mapping), value
+            found.append((score(mapping), dict(mapping)))
+            found.sort(key=lambda x: x[0], reverse=True)
+            del found[keep:]
             return
         for target in options[i]:
             if target not in used:
@@ -111,8 +100,51 @@ def aligned(base: ActionSchema, other: ActionSchema) -> dict[str, str]:
                 extend(i + 1, mapping, used | {target})
         mapping.pop(names[i], None)
 
-    extend(0, {}, set())
-    return best[0]
+    extend(0, dict(fixed), set(fixed.values()))
+    return found
+
+
+def aligned(base: ActionSchema, other: ActionSchema) -> dict[str, str]:
+    """The renaming of ``other``'s parameters onto ``base``'s that agrees best with it (effects first,
+    then preconditions); a parameter ``base`` has no counterpart for gets a fresh name.
+
+    Each parameter is tried only on ``base``'s parameters that occur somewhere alike (same predicate
+    and position), the same name first; the parameters the effects mention are aligned first, then the
+    precondition-only ones for the best few of those renamings, so the search stays small."""
+    base_eff, base_pre = _effects(base, {}), set(base.precondition)
+    base_sigs = {v: _signature(base, v) for v, _ in base.params}
+    names = [v for v, _ in other.params]
+    options = {v: sorted((b for b, sig in base_sigs.items() if sig & _signature(other, v)), key=lambda b: b != v)
+               + [f"?unmatched{i}"] for i, v in enumerate(names)}
+    in_effects = {x for _, a in _effects(other, {}) for x in a.args}
+    first = [v for v in names if v in in_effects]
+    rest = [v for v in names if v not in in_effects]
+
+    def effect_score(mapping: dict[str, str]) -> tuple[int]:
+        return (len(_effects(other, mapping) & base_eff),)
+
+    def pre_score(mapping: dict[str, str]) -> tuple[int]:
+        return (len({l.substitute(mapping) for l in other.precondition} & base_pre),)
+
+    effect_score.perfect = (min(len(other.add) + len(other.delete), len(base_eff)),)  # type: ignore[attr-defined]
+    pre_score.perfect = (min(len(other.precondition), len(base_pre)),)  # type: ignore[attr-defined]
+    best: tuple | None = None
+    mapping_best = {v: f"?unmatched{i}" for i, v in enumerate(names)}
+    renamings = _search(first, [options[v] for v in first], {}, effect_score, MAX_ALIGNMENTS, TOP_EFFECT_RENAMINGS)
+    for eff, partial in (r for r in renamings if r[0] == renamings[0][0]):  # the best effect renamings only
+        for pre, full in _search(rest, [options[v] for v in rest], partial, pre_score, MAX_ALIGNMENTS, 1):
+            if best is None or (eff + pre) > best:
+                best, mapping_best = eff + pre, full
+    return mapping_best
+
+
+def _shape(action: ActionSchema) -> list[tuple[str, str]]:
+    """The effects' (sign, predicate) multiset: equal for any two actions whose effects can be equal."""
+    return sorted([("+", a.predicate) for a in action.add] + [("-", a.predicate) for a in action.delete])
+
+
+def _same_types(skill: "Skill", other: ActionSchema, mapping: dict[str, str]) -> bool:
+    return all(skill.types.get(mapping[v], t) == t for v, t in other.params)
 
 
 def _cluster(group: list[ActionSchema], parents: dict[str, str | None]) -> list[Skill]:
@@ -120,6 +152,8 @@ def _cluster(group: list[ActionSchema], parents: dict[str, str | None]) -> list[
     skills: list[Skill] = []
     for other in group:
         for skill in skills:
+            if _shape(skill.first) != _shape(other):
+                continue
             mapping = aligned(skill.first, other)
             if _effects(other, mapping) == skill.effects:
                 skill.absorb(other, mapping, parents)
@@ -142,7 +176,9 @@ def _reconcile(skills: list[Skill], parents: dict[str, str | None], name: str,
         for good in kept:
             mapping = aligned(good.first, skill.first)
             theirs = _effects(skill.first, mapping)
-            if not (theirs < good.effects or theirs > good.effects):
+            # Only a demonstration of the same kinds of objects can be a bad observation of a skill
+            # (taking a block from another block is not taking it badly from the table).
+            if not (theirs < good.effects or theirs > good.effects) or not _same_types(good, skill.first, mapping):
                 continue
             where = "; ".join(f"{a.origin}{spans.get(a.origin or '', '')}" for a in skill.demonstrations)
             what = (f"its effects ({_show(theirs, skill.first)}) disagree with {len(good.demonstrations)} other "
@@ -161,7 +197,7 @@ def _reconcile(skills: list[Skill], parents: dict[str, str | None], name: str,
 
 def _distinct_names(name: str, skills: list[Skill]) -> list[str]:
     """``name`` for one skill; for several (different effects), the types of the parameters the name does not
-    already say (``take_block_surface``, ``take_block_block``), then ``_2`` ... if that still clashes."""
+    already say (``take_block_surface``, ``take_block_block``)."""
     if len(skills) == 1:
         return [name]
     named = len(name.split("_")) - 1  # the activity, then one type per role
@@ -169,13 +205,24 @@ def _distinct_names(name: str, skills: list[Skill]) -> list[str]:
     for skill in skills:
         used = {x for _, a in skill.effects for x in a.args} | {x for l in skill.precondition for x in l.atom.args}
         params = [skill.types[v] for v, _ in skill.first.params if v in used]
-        candidate = "_".join([name, *params[named:]]) if len(params) > named else name
-        unique, n = candidate, 1
-        while unique in out:
-            n += 1
-            unique = f"{candidate}_{n}"
-        out.append(unique)
+        out.append("_".join([name, *params[named:]]) if len(params) > named else name)
     return out
+
+
+def _join_missing_roles(clusters: dict[str, list[Skill]], parents: dict[str, str | None]) -> None:
+    """A skill named without a role (``put_block``: the detector never named the target) joins a skill of a
+    name that extends it (``put_block_surface``) when their effects are equal on the same kinds of objects."""
+    for name in sorted(clusters, key=len):
+        for skill in list(clusters[name]):
+            for longer in (n for n in clusters if n.startswith(name + "_")):
+                home = next((c for c in clusters[longer] if _shape(c.first) == _shape(skill.first)
+                             and _effects(skill.first, m := aligned(c.first, skill.first)) == c.effects
+                             and _same_types(c, skill.first, m)), None)
+                if home is not None:
+                    for other in skill.demonstrations:
+                        home.absorb(other, aligned(home.first, other), parents)
+                    clusters[name].remove(skill)
+                    break
 
 
 def generalise(actions: list[ActionSchema], parents: dict[str, str | None] | None = None,
@@ -183,15 +230,28 @@ def generalise(actions: list[ActionSchema], parents: dict[str, str | None] | Non
     """One schema per skill: repeats of an activity grouped by their lifted effects, aligned and intersected.
 
     ``notes`` collects one line per demonstration left out or reconciled (see the module docstring);
-    ``spans`` maps a demonstration's origin to the frames it covers, for those lines.
+    ``spans`` maps a demonstration's origin to the frames it covers, for those lines.  Names are unique
+    across all skills (``_2`` ... where two would clash).
     """
     parents, notes, spans = parents or {}, notes if notes is not None else [], spans or {}
     groups: dict[str, list[ActionSchema]] = {}
     for act in actions:
         groups.setdefault(act.name, []).append(act)
+    clusters = {name: _cluster(group, parents) for name, group in groups.items()}
+    _join_missing_roles(clusters, parents)
+    order = {id(a): i for i, a in enumerate(actions)}
+    named: list[tuple[int, Skill, str]] = []
+    for name, skills in clusters.items():
+        skills = _reconcile(skills, parents, name, notes, spans)
+        named += [(min(order[id(a)] for a in s.demonstrations), s, n)
+                  for s, n in zip(skills, _distinct_names(name, skills))]
     out: list[ActionSchema] = []
-    for name, group in groups.items():
-        skills = _reconcile(_cluster(group, parents), parents, name, notes, spans)
-        skills.sort(key=lambda s: group.index(s.first))  # in order of first demonstration
-        out += [skill.schema(unique) for skill, unique in zip(skills, _distinct_names(name, skills))]
+    taken: set[str] = set()
+    for _, skill, candidate in sorted(named, key=lambda x: x[0]):  # in order of first demonstration
+        unique, n = candidate, 1
+        while unique in taken:
+            n += 1
+            unique = f"{candidate}_{n}"
+        taken.add(unique)
+        out.append(skill.schema(unique))
     return out

@@ -21,7 +21,8 @@ every state the actions reach from them:
   condition of grasping: a skill keeps it only on the object it grasps (a
   Take keeps ``graspable`` of what it picks up, the check the robot needs on
   an object it has not seen handled), not on the block below or the block
-  it stacks onto.
+  it stacks onto (objects of a kind the hand holds); a skill on something of
+  a kind never held (pushing the chair) keeps it.
 
 Facts that are static for other reasons (every surface of Kitchen I stays
 ``clear``) are kept: the demonstrations cannot tell them from conditions.
@@ -33,7 +34,7 @@ from collections.abc import Iterable
 from dataclasses import dataclass, replace
 
 from guided_lfd.demonstration.mutex import group_key_matches
-from guided_lfd.pddl.model import EQUALITY, ActionSchema, Atom, Domain, Literal
+from guided_lfd.pddl.model import EQUALITY, ActionSchema, Atom, Domain, Literal, type_ancestors
 
 #: The hand predicate whose addition marks the object a skill grasps.
 GRASPED = "in_hand"
@@ -137,25 +138,37 @@ def grasp_affordances(domain: Domain, states: list[frozenset[Atom]]) -> set[str]
     return {p for p in candidates if held and all(Atom(p, (x,)) in s for x, s in held)}
 
 
+def held_types(domain: Domain, states: list[frozenset[Atom]], objects: dict[str, str]) -> set[str]:
+    """The types of the objects held in some state, with their supertypes."""
+    held = {a.args[0] for s in states for a in s if a.predicate == GRASPED and len(a.args) == 1}
+    return {t for x in held for t in type_ancestors(domain.types, objects.get(x, "object"))}
+
+
 def drop_implied_preconditions(domain: Domain, names: set[str], states: Iterable[frozenset[Atom]],
-                               invariants: list) -> Domain:
+                               invariants: list, objects: dict[str, str] | None = None) -> Domain:
     """``domain`` with the actions in ``names`` rid of positive preconditions the module's two rules make
-    redundant."""
+    redundant (``objects``: every demonstrated object's type)."""
     observed = list(states)
     implications = proven_implications(domain, observed, invariants)
     affordances = grasp_affordances(domain, observed)
+    graspable_types = held_types(domain, observed, objects or {})
     actions: list[ActionSchema] = []
     for action in domain.actions:
         if action.name in names:
-            action = _simplified(action, implications, affordances)
+            action = _simplified(action, implications, affordances, graspable_types)
         actions.append(action)
     return replace(domain, actions=actions)
 
 
-def _simplified(action: ActionSchema, implications: list[Implication], affordances: set[str]) -> ActionSchema:
+def _simplified(action: ActionSchema, implications: list[Implication], affordances: set[str],
+                graspable_types: set[str]) -> ActionSchema:
+    types = dict(action.params)
     grasped = {a.args[0] for a in action.add if a.predicate == GRASPED and len(a.args) == 1}
+    # An affordance goes only where it is not what this skill grasps, on objects of a kind the hand holds
+    # (the block below); a skill on something never held (pushing the chair) keeps it.
     kept = [l for l in action.precondition
-            if not (l.positive and l.atom.predicate in affordances and l.atom.args[0] not in grasped)]
+            if not (l.positive and l.atom.predicate in affordances and l.atom.args[0] not in grasped
+                    and types.get(l.atom.args[0], "object") in graspable_types)]
     changed = True
     while changed:  # one at a time, so two facts that imply each other do not both go
         changed = False
@@ -169,4 +182,4 @@ def _simplified(action: ActionSchema, implications: list[Implication], affordanc
     return action if tuple(kept) == action.precondition else replace(action, precondition=tuple(kept))
 
 
-__all__ = ["Implication", "proven_implications", "grasp_affordances", "drop_implied_preconditions"]
+__all__ = ["Implication", "proven_implications", "grasp_affordances", "held_types", "drop_implied_preconditions"]

@@ -103,11 +103,12 @@ def static_predicates(documents: list[tuple[str, dict]]) -> set[str]:
     return seen - changed
 
 
-def _tied(before: set[Atom], interest: set[str], static: set[str]) -> set[str]:
-    """Objects a static relation ties to the ones the action involves (the doors of the cupboard the mug goes
-    into), kept only where a fact about them that varies holds (the door is open): a relation alone is no
-    evidence the skill needs that object."""
-    tied = {x for a in before if a.predicate in static and len(a.args) >= 2 and set(a.args) & interest
+def _tied(before: set[Atom], roles: set[str], interest: set[str], static: set[str]) -> set[str]:
+    """Objects a static relation ties to what the hand acts on (``roles``: the doors of the cupboard the mug
+    goes into), kept only where a fact about them that varies holds (the door is open): a relation alone is
+    no evidence the skill needs that object.  Not through objects the action only changes (the table a
+    plate leaves is not a way to the counter beside it)."""
+    tied = {x for a in before if a.predicate in static and len(a.args) >= 2 and set(a.args) & roles
             for x in a.args} - interest
     return {x for x in tied if any(x in a.args and a.predicate not in static and set(a.args) <= interest | {x}
                                    for a in before)}
@@ -140,7 +141,7 @@ def ground_actions(document: dict, source: str = "segments", static: set[str] | 
         if not add and not delete:
             continue  # e.g. a Reach: moves the hand, changes nothing symbolic
         interest = handled | {arg for atom in add | delete for arg in atom.args}
-        interest |= _tied(before, interest, static)
+        interest |= _tied(before, set(roles), interest, static)
         # Nodes of interest: fluents about the objects the action involves, all
         # of whose arguments it involves (so opening a drawer does not depend on
         # which plate happens to lie in it).
@@ -182,12 +183,17 @@ def lift(action: DemonstratedAction, types: dict[str, str]) -> ActionSchema:
     )
 
 
-def learn_domain(documents: list[tuple[str, dict]], prior: Domain | None = None, name: str = "learned") -> Domain:
+def learn_domain(documents: list[tuple[str, dict]], prior: Domain | None = None, name: str = "learned",
+                 context: Domain | None = None) -> Domain:
     """A domain of the skills demonstrated in ``documents`` (source, segments document).
 
     With ``prior``, its type hierarchy generalises repeats and the result is
     the prior merged with the learned skills by :func:`guided_lfd.merge.merge_domains`
-    (skills the prior already has are kept once, name clashes renamed).
+    (skills the prior already has are kept once, name clashes renamed).  With
+    ``context`` (the robot's domain the skills will be merged into later), the
+    result is the learned skills alone, simplified only where that holds beside
+    the context's actions too (a robot action could break an invariant the
+    learned skills alone keep).
     """
     types, lifted, spans = _lifted_demonstrations(documents)
     notes: list[str] = []
@@ -196,17 +202,37 @@ def learn_domain(documents: list[tuple[str, dict]], prior: Domain | None = None,
     type_decl: dict[str, str | None] = {"object": None}
     for t in sorted(set(types.values())):
         type_decl[t] = "object"
+    reqs = (":strips", ":typing", ":negative-preconditions")
     if prior is None:
-        domain = Domain(name=name, requirements=(":strips", ":typing", ":negative-preconditions"), types=type_decl,
-                        constants={}, predicates=predicates, actions=learned, path="<learned>")
-        states = observed_states(documents)
-        invariants = proven_invariants(domain, types, states)
-        simplified = drop_implied_negative_preconditions(domain, {a.name for a in learned}, invariants)
-        simplified = drop_implied_preconditions(simplified, {a.name for a in learned}, states, invariants)
+        frame = Domain(name, reqs, type_decl, {}, predicates, [], path="<learned>")
+        if context is not None:
+            frame = replace(context, types={**type_decl, **context.types},
+                            predicates={**predicates, **context.predicates})
+        learned = _simplified(documents, learned, types, frame, context.actions if context is not None else [])
+        simplified = Domain(name=name, requirements=reqs, types=type_decl, constants={}, predicates=predicates,
+                            actions=learned, path="<learned>")
     else:
         simplified = _learned_into_prior(documents, prior, name, types, type_decl, predicates, learned)
     # Demonstrations left out or reconciled are reported with the domain (the CLI prints them).
     return replace(simplified, warnings=(*simplified.warnings, *notes))
+
+
+def _simplified(documents: list[tuple[str, dict]], learned: list[ActionSchema], types: dict[str, str],
+                frame: Domain, around: list[ActionSchema]) -> list[ActionSchema]:
+    """The learned skills with implied preconditions dropped, proven on ``frame`` holding them and ``around``.
+
+    Mutexes and implications are proven on the whole domain (the robot's actions too): an action that
+    broke one would make the dropped precondition matter.  Learned actions get provisional unique
+    names for the proof only."""
+    provisional = {f"{a.name}__learned": a.name for a in learned}
+    reqs = tuple(dict.fromkeys([*frame.requirements, ":negative-preconditions"]))
+    combined = replace(frame, requirements=reqs, path="<learned>",
+                       actions=[*around, *(replace(a, name=f"{a.name}__learned") for a in learned)])
+    states = observed_states(documents)
+    invariants = proven_invariants(combined, types, states)
+    simplified = drop_implied_negative_preconditions(combined, set(provisional), invariants)
+    simplified = drop_implied_preconditions(simplified, set(provisional), states, invariants, types)
+    return [replace(a, name=provisional[a.name]) for a in simplified.actions if a.name in provisional]
 
 
 def _lifted_demonstrations(documents: list[tuple[str, dict]]
@@ -258,21 +284,11 @@ def _learned_into_prior(documents: list[tuple[str, dict]], prior: Domain, name: 
     if clash:
         raise MergeError(f"'{clash[0]}' is a type in one and a predicate in the other of the demonstrations and the "
                          f"prior {prior.path}; expected distinct names", Location(sources))
-    # Mutexes are proven on the whole domain (the prior's actions too): a
-    # prior action that broke one would make the dropped precondition matter.
-    # Learned actions get provisional unique names for the proof only.
     from guided_lfd.merge import merge_domains
 
-    provisional = {f"{a.name}__learned": a.name for a in learned}
     reqs = tuple(dict.fromkeys([*prior.requirements, ":negative-preconditions"]))
-    combined = replace(prior, requirements=reqs, predicates={**predicates, **prior.predicates},
-                       actions=[*prior.actions, *(replace(a, name=f"{a.name}__learned") for a in learned)],
-                       path="<learned>")
-    states = observed_states(documents)
-    invariants = proven_invariants(combined, types, states)
-    simplified = drop_implied_negative_preconditions(combined, set(provisional), invariants)
-    simplified = drop_implied_preconditions(simplified, set(provisional), states, invariants)
-    learned = [replace(a, name=provisional[a.name]) for a in simplified.actions if a.name in provisional]
+    learned = _simplified(documents, learned, types, replace(prior, predicates={**predicates, **prior.predicates}),
+                          prior.actions)
     alone = Domain(name=name, requirements=reqs, types=type_decl, constants={}, predicates=predicates,
                    actions=learned, path="<learned>")
     # The same rules as `guided-lfd merge`: equal skills once, clashes renamed.

@@ -124,10 +124,11 @@ def _debounce(times: np.ndarray, runs: list[list]) -> list[list]:
     frame = float(np.median(np.diff(times))) if len(times) > 1 else 0.0
 
     def length(r: list) -> float:
-        # A run lasts until the next frame: after dropped frames, longer than one frame period.
-        # (Clock rounding does not count: only a gap of more than one and a half periods.)
+        # A run lasts until the next frame: after a few dropped frames, longer than one frame period
+        # (clock rounding does not count: only a gap of more than one and a half periods; a longer
+        # dropout counts three periods at most: what happened in it is unknown).
         step = float(times[r[2] + 1] - times[r[2]]) if r[2] + 1 < len(times) else frame
-        return float(times[r[2]] - times[r[1]]) + (min(step, MAX_GAP_S) if step > 1.5 * frame else frame)
+        return float(times[r[2]] - times[r[1]]) + (min(step, 3 * frame) if step > 1.5 * frame else frame)
 
     def noise(k: int) -> bool:
         n = length(runs[k])

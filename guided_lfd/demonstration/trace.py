@@ -329,10 +329,14 @@ def hand_move(frame: pd.DataFrame) -> np.ndarray:
         half = max(MOVE_WINDOW_S / 2, 1.01 * float(np.median(np.diff(t)))) if idx.size > 1 else half
         lo = np.searchsorted(t, t - half, side="left")
         hi = np.searchsorted(t, t + half, side="right") - 1
-        # Dropped frames: still reach the nearest frame before and after (a one-sided window over one
-        # interval doubles the noise on the speed).
-        lo = np.minimum(lo, np.maximum(np.searchsorted(t, t, side="left") - 1, 0))
-        hi = np.maximum(hi, np.minimum(np.searchsorted(t, t, side="right"), len(t) - 1))
+        # A few dropped frames: still reach the nearest frame before and after (a one-sided window over
+        # one interval doubles the noise on the speed); across a longer dropout, not (the hand may have
+        # moved while untracked: that motion is not this frame's).
+        reach = 3.01 * float(np.median(np.diff(t)))
+        before = np.maximum(np.searchsorted(t, t, side="left") - 1, 0)
+        after = np.minimum(np.searchsorted(t, t, side="right"), len(t) - 1)
+        lo = np.where(t - t[before] <= reach, np.minimum(lo, before), lo)
+        hi = np.where(t[after] - t <= reach, np.maximum(hi, after), hi)
         with np.errstate(over="ignore", divide="ignore", invalid="ignore"):  # huge coordinates: infinite speed
             span = t[hi] - t[lo]
             dist = np.linalg.norm(pos[hi] - pos[lo], axis=1)

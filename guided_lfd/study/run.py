@@ -84,7 +84,7 @@ def run_demo(root: Path, kitchen: str, demonstrator: str, kind: str, robot: Doma
     doc["trace"] = relative_path(trace, root)
     source = f"{kitchen}/{demonstrator}-{kind}"
     steps = ground_actions(doc, source)
-    learned = learn_domain([(source, doc)], name=f"learned-{kitchen}-{demonstrator}-{kind}".lower())
+    learned = learn_domain([(source, doc)], name=f"learned-{kitchen}-{demonstrator}-{kind}".lower(), context=robot)
     times = demo.frames["time"]
     useful = usefulness(steps, robot, doc.get("objects", {}))
     return DemoResult(kitchen, demonstrator, kind, round(float(times.max() - times.min()), 2), len(segments),
