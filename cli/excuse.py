@@ -119,9 +119,7 @@ def excuse(
     ui.reading_warnings(dom, options.invariants_from, options.fixed_from)
     report = _run(dom, prob, options)
     if prefer and human_domain is not None and report.excuses:
-        from guided_lfd.excuse.preference import apply_preference
-
-        apply_preference(report, human_domain, dom, prob, keep_all=all_minimal)
+        _prefer(report, human_domain, dom, prob, all_minimal, deadline_after(time_limit, started))
     spellings = report.spellings  # predicates as the domain writes them
     as_json = output_format(output, json_out) == "json"
     text = report.to_json() if as_json else report.to_text()
@@ -138,6 +136,23 @@ def excuse(
             f"{stats.planner_calls or 0} reachability check(s), {stats.time_s or 0:.2f} s[/]")
     if code:
         raise typer.Exit(code)
+
+
+def _prefer(report: ExcuseReport, human, dom, prob, keep_all: bool, deadline: float | None) -> None:
+    """Rank the minimal excuses by predicted demonstration (--prefer), within the run's time limit: past it,
+    the excuses found are printed unranked (the first one alone without --all) and stderr says so."""
+    from guided_lfd.errors import SearchTimeout
+    from guided_lfd.excuse.preference import apply_preference
+
+    try:
+        with watchdog(deadline, "predicting the demonstrations"):
+            apply_preference(report, human, dom, prob, keep_all=keep_all)
+    except SearchTimeout:
+        report.preference = None
+        if not keep_all:
+            report.excuses = report.excuses[:1]
+        ui.info_plain("--prefer demonstration: the time limit was reached before the demonstrations were "
+                      "predicted; the minimal excuses are not ranked")
 
 
 def _run(dom, prob, options: ExcuseOptions) -> ExcuseReport:

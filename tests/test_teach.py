@@ -251,3 +251,26 @@ def test_why_respects_types_a_cupboard_door_skill_does_not_open_a_drawer(tmp_pat
     (rnd,) = session.rounds
     assert rnd.why[0].endswith("no skill of the robot does this, and its plan to Inside plate1, drawer1_1 needs it")
     assert session.status == "solved"
+
+
+def test_predicting_demonstrations_for_prefer_stays_within_the_time_limit(runner, app, monkeypatch):
+    """--time-limit bounds the whole run, --prefer's predictions too: past it, the excuse found is printed
+    unranked and stderr says why (a prediction made slow on purpose stands for a large human model)."""
+    import time
+
+    from guided_lfd.excuse import preference
+
+    def slow(*args, **kwargs):
+        time.sleep(30)
+        raise AssertionError("the watchdog should have stopped this")
+
+    monkeypatch.setattr(preference, "prefer_demonstration", slow)
+    robot, problem, human = (str(ROOMS / f"rooms-{n}.pddl") for n in ("robot", "problem", "human"))
+    start = time.monotonic()
+    result = runner.invoke(app, ["excuse", robot, problem, "--fixed-from", human, "--json", "--prefer",
+                                 "demonstration", "--human", human, "--time-limit", "2"])
+    assert time.monotonic() - start < 2 + 1.0
+    assert result.exit_code == 0, result.output
+    doc = json.loads(result.stdout)
+    assert doc["status"] == "excuse-found" and doc["preference"] is None and doc["alternatives"] == []
+    assert "the time limit was reached before the demonstrations were predicted" in result.stderr
