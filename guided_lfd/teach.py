@@ -216,19 +216,10 @@ class SimulatedHuman:
 def _check_drawable(script, scene, plan: list[PlanStep], human: Domain) -> None:
     """The renderer draws hand manipulation (take, put, open and close, push an obstacle away): a plan
     with another kind of action (walking through a door, turning a key) is refused in one line, not drawn wrongly."""
+    from guided_lfd.demonstration.render import undrawable_actions
     from guided_lfd.errors import UnsupportedFeatureError
 
-    schemas = {a.name: a for a in human.actions}
-    odd = set()
-    for step in plan:
-        schema = schemas[step.action]
-        binding = {v: a for (v, _), a in zip(schema.params, step.args)}
-        changed = [a.substitute(binding) for a in (*schema.add, *schema.delete) if a.predicate not in HAND_PREDICATES]
-        manipulates = any(a.predicate in HAND_PREDICATES for a in (*schema.add, *schema.delete)) or any(
-            a.predicate == "open" for a in changed)
-        # Otherwise the hand pushes the action's first object: it must be what the action changes.
-        if not manipulates and not any(step.args[:1] and step.args[0] in a.args for a in changed):
-            odd.add(step.action)
+    odd = undrawable_actions([(step.action, step.args) for step in plan], human)
     missing = [s.obj for s in script if s.activity not in ("Idle", "Release") and s.obj not in scene.positions]
     if odd or missing:
         actions = sorted(odd) or sorted({s.action for s in plan})

@@ -243,3 +243,28 @@ def test_two_handed_demonstration_teaches_the_same_skills(tmp_path):
     assert skills(two) == skills(one)
     # taking the plate with the left hand needs that hand free, whatever the right hand holds
     assert Literal(Atom("hand_free")) in two.action("take_item").precondition
+
+
+@pytest.mark.parametrize("plan, odd", [
+    ([("open_drawer", ("pinkdrawer",))], set()),  # changes open: Reach + Open + Release
+    ([("move_chair", ("chair", "pinkdrawer", "corner"))], set()),  # pushes its first object
+])
+def test_undrawable_actions_accepts_hand_manipulation(plan, odd):
+    from conftest import kitchen
+    from guided_lfd.demonstration.render import undrawable_actions
+    from guided_lfd.pddl.reader import parse_task
+
+    human, _ = parse_task(*kitchen(2, "human"))
+    assert undrawable_actions(plan, human) == odd
+
+
+def test_undrawable_actions_names_walking():
+    """Walking through a door changes where the walker is: not the hand, not the door it names first."""
+    from guided_lfd.demonstration.render import undrawable_actions
+    from guided_lfd.pddl.reader import parse_domain
+
+    human = parse_domain("tests/data/teach/rooms-human.pddl")
+    assert undrawable_actions([("walk", ("d1", "hall", "kitchen"))], human) == {"walk"}
+    # Turning a key changes the door, not the key the action names first.
+    assert undrawable_actions([("unlock", ("k1", "d1", "hall", "kitchen"))], human) == {"unlock"}
+    assert undrawable_actions([("pick", ("k1", "hall"))], human) == set()  # the key itself moves

@@ -163,7 +163,7 @@ def _cluster(group: list[ActionSchema], parents: dict[str, str | None]) -> list[
     return skills
 
 
-def _show(effects: Effects, action: ActionSchema) -> str:
+def _show(effects: Effects) -> str:
     return " ".join(str(a) if s == "+" else f"(not {a})" for s, a in sorted(effects)) or "nothing"
 
 
@@ -181,18 +181,23 @@ def _reconcile(skills: list[Skill], parents: dict[str, str | None], name: str,
             if not (theirs < good.effects or theirs > good.effects) or not _same_types(good, skill.first, mapping):
                 continue
             where = "; ".join(f"{a.origin}{spans.get(a.origin or '', '')}" for a in skill.demonstrations)
-            what = (f"its effects ({_show(theirs, skill.first)}) disagree with {len(good.demonstrations)} other "
-                    f"demonstration(s) of {name} ({_show(good.effects, good.first)})")
+            what = (f"its effects ({_show(theirs)}) disagree with {len(good.demonstrations)} other "
+                    f"demonstration(s) of {name} ({_show(good.effects)})")
             if len(skill.demonstrations) < len(good.demonstrations):
                 notes.append(f"{where}: warning: {what}; left out")
             else:
-                for other in skill.demonstrations:
-                    good.absorb(other, aligned(good.first, other), parents)
+                _absorb_all(good, skill, mapping, parents)
                 notes.append(f"{where}: warning: {what}; kept what both show")
             break
         else:
             kept.append(skill)
     return kept
+
+
+def _absorb_all(home: Skill, skill: Skill, first_mapping: dict[str, str], parents: dict[str, str | None]) -> None:
+    """Every demonstration of ``skill`` into ``home``; ``first_mapping`` (already found) aligns ``skill.first``."""
+    for other in skill.demonstrations:
+        home.absorb(other, first_mapping if other is skill.first else aligned(home.first, other), parents)
 
 
 def _distinct_names(name: str, skills: list[Skill]) -> list[str]:
@@ -209,18 +214,26 @@ def _distinct_names(name: str, skills: list[Skill]) -> list[str]:
     return out
 
 
+def _home(candidates: list[Skill], skill: Skill) -> tuple[Skill, dict[str, str]] | None:
+    """The first of ``candidates`` whose effects ``skill`` has on the same kinds of objects, with the renaming."""
+    for c in candidates:
+        if _shape(c.first) != _shape(skill.first):
+            continue
+        mapping = aligned(c.first, skill.first)
+        if _effects(skill.first, mapping) == c.effects and _same_types(c, skill.first, mapping):
+            return c, mapping
+    return None
+
+
 def _join_missing_roles(clusters: dict[str, list[Skill]], parents: dict[str, str | None]) -> None:
     """A skill named without a role (``put_block``: the detector never named the target) joins a skill of a
     name that extends it (``put_block_surface``) when their effects are equal on the same kinds of objects."""
     for name in sorted(clusters, key=len):
         for skill in list(clusters[name]):
             for longer in (n for n in clusters if n.startswith(name + "_")):
-                home = next((c for c in clusters[longer] if _shape(c.first) == _shape(skill.first)
-                             and _effects(skill.first, m := aligned(c.first, skill.first)) == c.effects
-                             and _same_types(c, skill.first, m)), None)
-                if home is not None:
-                    for other in skill.demonstrations:
-                        home.absorb(other, aligned(home.first, other), parents)
+                found = _home(clusters[longer], skill)
+                if found is not None:
+                    _absorb_all(found[0], skill, found[1], parents)
                     clusters[name].remove(skill)
                     break
 

@@ -129,19 +129,29 @@ def proven_implications(domain: Domain, states: Iterable[frozenset[Atom]], invar
                   key=lambda i: (i.premise, i.conclusion, i.positions))
 
 
-def grasp_affordances(domain: Domain, states: list[frozenset[Atom]]) -> set[str]:
-    """One-argument predicates no action changes that every object held in a state has there (``graspable``)."""
+def _held(states: list[frozenset[Atom]]) -> list[tuple[str, frozenset[Atom]]]:
+    """(object, state) for every object held in a state."""
+    return [(a.args[0], s) for s in states for a in s if a.predicate == GRASPED and len(a.args) == 1]
+
+
+def grasp_affordances(domain: Domain, states: list[frozenset[Atom]],
+                      held: list[tuple[str, frozenset[Atom]]] | None = None) -> set[str]:
+    """One-argument predicates no action changes that every object held in a state has there (``graspable``).
+
+    ``held``: :func:`_held` of ``states``, when the caller has it already.
+    """
     changed = {a.predicate for act in domain.actions for a in (*act.add, *act.delete)}
-    held = [(a.args[0], s) for s in states for a in s if a.predicate == GRASPED and len(a.args) == 1]
+    held = _held(states) if held is None else held
     candidates = {l.atom.predicate for act in domain.actions for l in act.precondition
                   if l.positive and len(l.atom.args) == 1} - changed - {GRASPED}
     return {p for p in candidates if held and all(Atom(p, (x,)) in s for x, s in held)}
 
 
-def held_types(domain: Domain, states: list[frozenset[Atom]], objects: dict[str, str]) -> set[str]:
-    """The types of the objects held in some state, with their supertypes."""
-    held = {a.args[0] for s in states for a in s if a.predicate == GRASPED and len(a.args) == 1}
-    return {t for x in held for t in type_ancestors(domain.types, objects.get(x, "object"))}
+def held_types(domain: Domain, states: list[frozenset[Atom]], objects: dict[str, str],
+               held: list[tuple[str, frozenset[Atom]]] | None = None) -> set[str]:
+    """The types of the objects held in some state, with their supertypes (``held`` as in :func:`grasp_affordances`)."""
+    held_objects = {x for x, _ in (_held(states) if held is None else held)}
+    return {t for x in held_objects for t in type_ancestors(domain.types, objects.get(x, "object"))}
 
 
 def drop_implied_preconditions(domain: Domain, names: set[str], states: Iterable[frozenset[Atom]],
@@ -150,8 +160,9 @@ def drop_implied_preconditions(domain: Domain, names: set[str], states: Iterable
     redundant (``objects``: every demonstrated object's type)."""
     observed = list(states)
     implications = proven_implications(domain, observed, invariants)
-    affordances = grasp_affordances(domain, observed)
-    graspable_types = held_types(domain, observed, objects or {})
+    held = _held(observed)  # walked once for both rules
+    affordances = grasp_affordances(domain, observed, held)
+    graspable_types = held_types(domain, observed, objects or {}, held)
     actions: list[ActionSchema] = []
     for action in domain.actions:
         if action.name in names:

@@ -256,6 +256,27 @@ def frame_f1(truth: list[str], predicted: list[str]) -> float:
     return sum(scores) / len(scores) if scores else 1.0
 
 
+def undrawable_actions(plan: list[tuple[str, tuple[str, ...]]], domain) -> set[str]:
+    """Names of the plan's actions :func:`script_for_plan` cannot draw as hand activities.
+
+    It draws an action by what it changes: the hand state (take, put), ``open``
+    (open, close), or else the hand pushes the action's first object, which
+    must then be among what it changes (walking through a door or turning a
+    key is none of these).
+    """
+    schemas = {a.name: a for a in domain.actions}
+    odd = set()
+    for name, args in plan:
+        schema = schemas[name]
+        binding = {v: a for (v, _), a in zip(schema.params, args)}
+        effects = (*schema.add, *schema.delete)
+        changed = [a.substitute(binding) for a in effects if a.predicate not in HAND_PREDICATES]
+        manipulates = any(a.predicate in HAND_PREDICATES for a in effects) or any(a.predicate == "open" for a in changed)
+        if not manipulates and not any(args[:1] and args[0] in a.args for a in changed):
+            odd.add(name)
+    return odd
+
+
 def script_for_plan(plan: list[tuple[str, tuple[str, ...]]], domain, state: set[Atom],
                     pause: float = 0.4) -> list[Step]:
     """Hand activities that demonstrate a plan of ``domain`` from ``state``.

@@ -389,20 +389,7 @@ class RelaxedExcuseTask:
             if h[goal_fact] == 0:
                 return Bound(total, landmarks, shares)
             pcf = self._pcf(h, last)
-            # Goal zone: facts that reach the goal through zero-cost robot actions.
-            zone = np.zeros(self.n_facts, dtype=bool)
-            zone[goal_fact] = True
-            frontier = np.array([goal_fact], dtype=np.int64)
-            while frontier.size:
-                acts = _gather(self.ach_ptr, self.ach_flat, frontier)
-                src = pcf[acts]
-                src = src[src >= 0]
-                src = src[(h[src] > 0) & ~zone[src]]
-                if src.size == 0:
-                    break
-                zone_before = zone.copy()
-                zone[src] = True
-                frontier = np.flatnonzero(zone & ~zone_before)
+            zone = self._goal_zone(goal_fact, h, pcf)
             cut = np.flatnonzero(zone & (cost > 0) & np.isfinite(cost))
             if cut.size == 0:  # cannot happen for finite h; guard against a silent loop
                 return Bound(total, landmarks, shares)
@@ -411,6 +398,38 @@ class RelaxedExcuseTask:
             cost[cut] -= m
             landmarks.append(sorted(int(self.fact_atom[f]) for f in cut))
             shares.append(int(m))
+
+    def _goal_zone(self, goal_fact: int, h: np.ndarray, pcf: np.ndarray) -> np.ndarray:
+        """The goal zone: facts from which ``goal_fact`` is reached through zero-cost robot actions.
+
+        Any zone works whose zero-cost achievers each have a precondition in
+        it (every relaxed plan then enters it by a change: the cut is a
+        landmark).  So an achiever with a precondition already in the zone
+        adds nothing to it, and of one frontier's achievers those with one
+        choice (a single precondition not reached for free) go first: the
+        zone stays on the goal's own facts instead of leaking through an
+        achiever that also needs another goal's fact (depot: dropping crate9
+        onto crate0 needs crate0 there too), and the cut stays tight.
+        """
+        zone = np.zeros(self.n_facts, dtype=bool)
+        zone[goal_fact] = True
+        frontier = np.array([goal_fact], dtype=np.int64)
+        hard = h[self.pre_flat] > 0
+        choices = np.bincount(self.pre_owner[hard], minlength=self.n_actions)
+        while frontier.size:
+            acts = np.unique(_gather(self.ach_ptr, self.ach_flat, frontier))
+            added = []
+            for first_pass in (True, False):
+                covered = np.bincount(self.pre_owner[zone[self.pre_flat]], minlength=self.n_actions) > 0
+                acts = acts[~covered[acts]]
+                pick = acts[choices[acts] == 1] if first_pass else acts
+                src = pcf[pick]
+                src = src[src >= 0]
+                src = np.unique(src[(h[src] > 0) & ~zone[src]])
+                zone[src] = True
+                added.append(src)
+            frontier = np.concatenate(added)
+        return zone
 
     # -- the same LM-cut on plain lists, for small tasks ------------------------
     def _hmax_lists(self, true: list[bool], cost: list[float]) -> list[float]:
@@ -471,14 +490,32 @@ class RelaxedExcuseTask:
                 return Bound(total, landmarks, shares)
             # The precondition choice function, only for the achievers the
             # goal zone meets (most actions are never looked at).
-            pre = self.pre_lists
-            zone = {goal_fact}
-            stack = [goal_fact]
-            while stack:
-                q = stack.pop()
-                for ai in self.achiever_lists[q]:
+            zone = self._goal_zone_lists(goal_fact, h, last)
+            cut = sorted(f for f in zone if cost[f] > 0 and cost[f] != INF)
+            if not cut:
+                return Bound(total, landmarks, shares)
+            m = min(cost[f] for f in cut)
+            total += m
+            for f in cut:
+                cost[f] -= m
+            landmarks.append(sorted(self.fact_atom_list[f] for f in cut))
+            shares.append(int(m))
+
+    def _goal_zone_lists(self, goal_fact: int, h: list[float], last: bool) -> set[int]:
+        """:meth:`_goal_zone` on lists: the precondition choice function only for the achievers the zone
+        meets (most actions are never looked at)."""
+        pre = self.pre_lists
+        zone = {goal_fact}
+        frontier = [goal_fact]
+        while frontier:
+            acts = sorted({ai for q in frontier for ai in self.achiever_lists[q]})
+            frontier = []
+            for first_pass in (True, False):
+                for ai in acts:
                     p = pre[ai]
-                    if not p:
+                    if not p or any(x in zone for x in p):
+                        continue
+                    if first_pass and sum(1 for x in p if h[x] > 0) != 1:
                         continue
                     if len(p) == 1:
                         f = p[0]
@@ -491,13 +528,5 @@ class RelaxedExcuseTask:
                             f = p[vals.index(best)]
                     if f not in zone and h[f] > 0:
                         zone.add(f)
-                        stack.append(f)
-            cut = sorted(f for f in zone if cost[f] > 0 and cost[f] != INF)
-            if not cut:
-                return Bound(total, landmarks, shares)
-            m = min(cost[f] for f in cut)
-            total += m
-            for f in cut:
-                cost[f] -= m
-            landmarks.append(sorted(self.fact_atom_list[f] for f in cut))
-            shares.append(int(m))
+                        frontier.append(f)
+        return zone
