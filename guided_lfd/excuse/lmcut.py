@@ -414,16 +414,18 @@ class RelaxedExcuseTask:
         zone = np.zeros(self.n_facts, dtype=bool)
         zone[goal_fact] = True
         frontier = np.array([goal_fact], dtype=np.int64)
-        hard = h[self.pre_flat] > 0
-        choices = np.bincount(self.pre_owner[hard], minlength=self.n_actions)
         while frontier.size:
+            # Only the frontier's achievers and their preconditions are looked at
+            # (not every action's: a house has 180,000).
             acts = np.unique(_gather(self.ach_ptr, self.ach_flat, frontier))
+            owner = np.repeat(np.arange(acts.size), self.n_pre[acts])
+            pres = _gather(self.pre_ptr, self.pre_flat, acts)
+            choices = np.bincount(owner[h[pres] > 0], minlength=acts.size)
             added = []
             for first_pass in (True, False):
-                covered = np.bincount(self.pre_owner[zone[self.pre_flat]], minlength=self.n_actions) > 0
-                acts = acts[~covered[acts]]
-                pick = acts[choices[acts] == 1] if first_pass else acts
-                src = pcf[pick]
+                covered = np.bincount(owner[zone[pres]], minlength=acts.size) > 0
+                open_ = ~covered & (choices == 1) if first_pass else ~covered
+                src = pcf[acts[open_]]
                 src = src[src >= 0]
                 src = np.unique(src[(h[src] > 0) & ~zone[src]])
                 zone[src] = True
@@ -502,8 +504,14 @@ class RelaxedExcuseTask:
             shares.append(int(m))
 
     def _goal_zone_lists(self, goal_fact: int, h: list[float], last: bool) -> set[int]:
-        """:meth:`_goal_zone` on lists: the precondition choice function only for the achievers the zone
-        meets (most actions are never looked at)."""
+        """:meth:`_goal_zone` on lists, for small tasks: the precondition choice function only for the
+        achievers the zone meets.
+
+        Unlike the numpy version, which checks a pass's achievers against the zone as it stood when the
+        pass began, each achiever here is checked when its turn comes, so facts added earlier in the same
+        pass can cover it: the zone may be smaller and the bound higher.  Both zones are closed (every
+        zero-cost achiever has a precondition inside), so both cuts are landmarks.
+        """
         pre = self.pre_lists
         zone = {goal_fact}
         frontier = [goal_fact]
