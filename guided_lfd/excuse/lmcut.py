@@ -490,8 +490,6 @@ class RelaxedExcuseTask:
                 return Bound(INF, [], [])
             if h[goal_fact] == 0:
                 return Bound(total, landmarks, shares)
-            # The precondition choice function, only for the achievers the
-            # goal zone meets (most actions are never looked at).
             zone = self._goal_zone_lists(goal_fact, h, last)
             cut = sorted(f for f in zone if cost[f] > 0 and cost[f] != INF)
             if not cut:
