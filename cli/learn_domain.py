@@ -31,6 +31,11 @@ def learn_domain(
     prior: Annotated[
         str | None, typer.Option("--prior", metavar="DOMAIN", help="Keep this domain's types, predicates and actions.")
     ] = None,
+    human: Annotated[
+        str | None, typer.Option("--human", metavar="DOMAIN",
+                                 help="The demonstrator's domain: skills with a human action's effects take its "
+                                      "name and parameter order.")
+    ] = None,
     name: Annotated[str, typer.Option("--name", metavar="NAME", help="Name of the learned domain.")] = "learned",
     output: OutputOption = "-",
     quiet: QuietOption = False,
@@ -39,16 +44,29 @@ def learn_domain(
 
     Each demonstrated skill becomes a lifted action: its preconditions are the
     nodes of interest of the demonstrated states, generalised over repeats.
-    With --prior the domain keeps the prior's types, predicates and actions.
+    With --prior the domain keeps the prior's types, predicates and actions,
+    the hand's facts are the prior's own (unless the demonstration's state
+    file declares them), steps the prior already makes are not learned again,
+    and a skill that could never run beside the prior's is refused.
     """
     why = pddl_name_defect(name.lower())
     if why:
         raise OptionError(f"--name {name!r}: expected {why}")
-    check_files([*segments, prior], {"--output": output})
+    check_files([*segments, prior, human], {"--output": output})
     documents = [(path, load_segments(path)) for path in segments]
     prior_domain = parse_domain(prior) if prior else None
     ui.reading_warnings(prior_domain)
-    domain = learn(documents, prior_domain, name=name.lower())
+    human_domain = parse_domain(human) if human else None
+    domain = learn(documents, prior_domain, name=name.lower(), human=human_domain, skip_known=prior is not None)
+    if prior_domain is not None:
+        from guided_lfd.demonstration.learn import check_usable, document_vocabulary
+
+        check_usable(domain, prior_domain, {a.name for a in domain.actions} - {a.name for a in prior_domain.actions},
+                     ", ".join(segments))
+        for path, doc in documents:
+            if "vocabulary" not in doc:
+                vocabulary = document_vocabulary(doc, prior_domain, human_domain, source=path)
+                ui.info(f"[dim]{path}: hand facts: {vocabulary.describe()} (from {vocabulary.origin})[/]")
     # Demonstrations the learner left out or reconciled (their effects disagree with the others').
     ui.reading_warnings(domain)
     header = "Learned by guided-lfd learn-domain from: " + ", ".join(segments)

@@ -31,12 +31,17 @@ class _Prompted:
                 return trace, states
             typer.echo(f"not found: {', '.join(missing)} (the trace and its .state.csv beside it)", err=True)
 
+    def why_none(self, state, request, problem) -> str:
+        """The demonstrator stopped: an empty answer at the prompt."""
+        return "the demonstrator gave no trace at the prompt (an empty answer stops the session)"
+
 
 class _Chain:
     """The given traces first, then (on a terminal) prompts; the simulated human instead when one is given."""
 
     def __init__(self, simulate, traces: list[Path], prompt: bool) -> None:
         self.simulate, self.traces, self.prompt = simulate, traces, prompt
+        self.given = len(traces)
 
     def demonstrate(self, folder, state, request, problem):
         from guided_lfd.teach import GivenTraces
@@ -46,6 +51,15 @@ class _Chain:
         if self.simulate is not None:
             return self.simulate.demonstrate(folder, state, request, problem)
         return _Prompted().demonstrate(folder, state, request, problem) if self.prompt else None
+
+    def why_none(self, state, request, problem) -> str:
+        """Why :meth:`demonstrate` gave None: the simulated human's reason, the prompt's, or no demonstrator."""
+        if self.simulate is not None:
+            return self.simulate.why_none(state, request, problem)
+        if self.prompt:
+            return _Prompted().why_none(state, request, problem)
+        traces = f"all {self.given} --demo trace(s) were used" if self.given else "no --demo trace"
+        return f"no demonstration was given ({traces}, no --simulate HUMAN, and no terminal to ask for one)"
 
 
 def _check_session(session: Path, inputs: list[str | None]) -> None:
@@ -67,10 +81,10 @@ def _check_session(session: Path, inputs: list[str | None]) -> None:
     example="guided-lfd teach data/domains/kitchen-2/robot.pddl \\\n"
             "    data/domains/kitchen-2/problem.pddl \\\n"
             "    --simulate data/domains/kitchen-2/human.pddl -o session",
-    exit_codes=(errors.EXIT_NO_EXCUSE, errors.EXIT_NOT_TAUGHT, errors.EXIT_TIME_LIMIT, errors.EXIT_INPUT_FILE,
-                errors.EXIT_PDDL_SYNTAX, errors.EXIT_PDDL_SEMANTIC, errors.EXIT_UNSUPPORTED, errors.EXIT_MISMATCH,
-                errors.EXIT_TRACE, errors.EXIT_BAD_OPTION, errors.EXIT_OUTPUT),
-    success="the robot can plan its task (taught, or already able)",
+    exit_codes=(errors.EXIT_NO_EXCUSE, errors.EXIT_NOT_TAUGHT, errors.EXIT_DEMONSTRATION_ONLY, errors.EXIT_TIME_LIMIT,
+                errors.EXIT_INPUT_FILE, errors.EXIT_PDDL_SYNTAX, errors.EXIT_PDDL_SEMANTIC, errors.EXIT_UNSUPPORTED,
+                errors.EXIT_MISMATCH, errors.EXIT_TRACE, errors.EXIT_BAD_OPTION, errors.EXIT_OUTPUT),
+    success="the taught robot plans its task from the start (or already could)",
 )
 @command
 def teach(
@@ -115,7 +129,7 @@ def teach(
     from guided_lfd.excuse.engine import ExcuseOptions
     from guided_lfd.io import write_text
     from guided_lfd.pddl.reader import parse_domain, parse_task
-    from guided_lfd.teach import SimulatedHuman, teach as run_teach
+    from guided_lfd.teach import SimulatedHuman, check_human_model, teach as run_teach
 
     if max_rounds < 1:
         raise errors.OptionError(f"--max-rounds {max_rounds}: expected a number of rounds >= 1")
@@ -131,6 +145,9 @@ def teach(
         raise errors.OptionError(f"--slack {slack}: needs --prefer demonstration")
     if prefer and model is None:
         raise errors.OptionError("--prefer demonstration: needs a human model (--human DOMAIN or --simulate HUMAN)")
+    for human_domain in (model, human.human if human else None):
+        if human_domain is not None:  # a model of another world: exit 34 before any round
+            check_human_model(human_domain, task)
     prompt = sys.stdin.isatty() and not json_out and human is None
     demonstrator = _Chain(human, list(demo or []), prompt=prompt)
 
@@ -151,20 +168,28 @@ def teach(
     write_text(session / "session.md", session_obj.to_markdown())
     if json_out:
         write_text("-", session_obj.to_json())
+    _report(session_obj, session)
+
+
+def _report(session_obj, session: Path) -> None:
+    """Each round on stderr, then the session's end: its exit code and, when not taught, why."""
     for r in session_obj.rounds:
         if r.demonstration_length is None:
             continue
         ui.info(f"round {r.index}: {'; '.join(r.request_text)}; demonstrated {r.demonstration_length} action(s), "
                 f"learned {', '.join(r.learned_actions) or 'nothing new'}"
                 + ("" if r.request_met is not False else f"; not done: {', '.join(str(c) for c in r.unmet)}"))
+        if r.vocabulary:  # which hand facts were chosen, and from where (the issue asks that it be said)
+            ui.info(f"[dim]round {r.index}: hand facts: {r.vocabulary}[/]")
     if session_obj.error is not None:  # the demonstration's own error, its own exit code
         ui.error(f"{session_obj.error} (teaching ended; see {session / 'session.md'})")
         raise typer.Exit(session_obj.error.exit_code)
     codes = {"solved": 0, "already-solvable": 0, "no-excuse": errors.EXIT_NO_EXCUSE,
-             "timeout": errors.EXIT_TIME_LIMIT}
+             "demonstration-only": errors.EXIT_DEMONSTRATION_ONLY, "timeout": errors.EXIT_TIME_LIMIT}
     code = codes.get(session_obj.status, errors.EXIT_NOT_TAUGHT)
     if code:
-        ui.error(f"teaching ended: {session_obj.status} after {len(session_obj.rounds)} round(s) "
+        why = f": {session_obj.reason}" if session_obj.reason else ""
+        ui.error(f"teaching ended: {session_obj.status} after {len(session_obj.rounds)} round(s){why} "
                  f"(see {session / 'session.md'})")
         raise typer.Exit(code)
     ui.info(f"taught in {len(session_obj.rounds)} round(s); the robot's domain is {session / 'robot.pddl'}")

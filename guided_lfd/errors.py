@@ -17,6 +17,8 @@ code  meaning
 11    no excuse exists: a new skill must be demonstrated
 12    plan invalid (``validate``)
 13    no excuse within ``--max-size``
+14    ``teach`` ended, the task still unsolved (rounds used up, no demonstration)
+15    ``teach`` reached the goal only through the demonstration
 20    time limit reached
 21    task too large to ground (atom or action limit)
 22    out of memory (the process's address-space limit was reached)
@@ -45,6 +47,7 @@ EXIT_NO_EXCUSE = 11
 EXIT_PLAN_INVALID = 12
 EXIT_NO_EXCUSE_WITHIN_LIMIT = 13
 EXIT_NOT_TAUGHT = 14
+EXIT_DEMONSTRATION_ONLY = 15
 EXIT_TIME_LIMIT = 20
 EXIT_TOO_LARGE = 21
 EXIT_MEMORY = 22
@@ -69,6 +72,7 @@ EXIT_CODES: dict[int, str] = {
     EXIT_PLAN_INVALID: "plan invalid",
     EXIT_NO_EXCUSE_WITHIN_LIMIT: "no excuse within --max-size",
     EXIT_NOT_TAUGHT: "teaching ended, the task still unsolved (rounds used up, no demo)",
+    EXIT_DEMONSTRATION_ONLY: "teaching ended, the goal reached only through the demonstration",
     EXIT_TIME_LIMIT: "time limit reached",
     EXIT_TOO_LARGE: "task too large to ground",
     EXIT_MEMORY: "out of memory",

@@ -6,7 +6,14 @@ leave as it is, takes the demonstration (a hand trace; or, simulated, the
 human model's shortest plan to the request rendered as one), segments it,
 learns its skills, merges them into the robot's domain and re-plans from
 the state the demonstration left.  Rounds go on until the robot can plan
-the task, no excuse exists, or the rounds run out.
+the task, no demonstration is given, or the rounds run out.
+
+The session ends ``solved`` only when the taught robot plans the original
+task from its original state: a demonstration that reached the goal while
+the skills learned from it do not let the robot plan the task ends
+``demonstration-only``.  When no excuse exists because no skill of the robot
+makes some goal atom true, the round asks for a demonstration of a new skill
+that does (its request is those atoms).
 """
 
 from __future__ import annotations
@@ -15,7 +22,7 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any, Callable, Protocol
 
-from guided_lfd.demonstration.trace import HAND_PREDICATES
+from guided_lfd.demonstration.vocabulary import KITCHEN, HandVocabulary, infer_vocabulary
 from guided_lfd.excuse.change import Change, excuse_state
 from guided_lfd.excuse.engine import ExcuseOptions, describe_change, find_excuses
 from guided_lfd.excuse.status import ExcuseStatus
@@ -24,11 +31,15 @@ from guided_lfd.pddl.model import Atom, Domain, Problem
 from guided_lfd.pddl.writer import domain_to_pddl
 from guided_lfd.validation import PlanStep
 
-__all__ = ["Round", "TeachSession", "SimulatedHuman", "GivenTraces", "teach", "keep_facts"]
+__all__ = ["Round", "TeachSession", "SimulatedHuman", "GivenTraces", "teach", "keep_facts", "check_human_model"]
 
 
 class Demonstrator(Protocol):
-    """Whoever demonstrates: given the round's folder, the world's state and the request, a hand trace."""
+    """Whoever demonstrates: given the round's folder, the world's state and the request, a hand trace.
+
+    A demonstrator may also have a ``why_none(state, request, problem) -> str`` method: asked after
+    ``demonstrate`` gave None, it says why in one line (the session's ``reason``).
+    """
 
     def demonstrate(self, folder: Path, state: frozenset[Atom], request: list[Change],
                     problem: Problem) -> tuple[Path, Path] | None:
@@ -56,6 +67,7 @@ class Round:
     files: dict[str, str] = field(default_factory=dict)
     preference: str | None = None  # why this excuse among the minimal ones (--prefer demonstration)
     error: str | None = None  # why the demonstration could not be used (it ended the session)
+    vocabulary: str | None = None  # the hand facts the demonstration was learned in, and where they came from
 
     def to_dict(self) -> dict[str, Any]:
         """The round as ``session.json`` has it."""
@@ -66,7 +78,7 @@ class Round:
             "new_actions": self.new_actions,
             "learned_actions": self.learned_actions, "request_met": self.request_met,
             "unmet": [str(c) for c in self.unmet], "solvable_after": self.solvable_after, "files": self.files,
-            "preference": self.preference, "error": self.error,
+            "preference": self.preference, "error": self.error, "vocabulary": self.vocabulary,
         }
 
 
@@ -76,12 +88,15 @@ class TeachSession:
 
     robot: str
     problem: str
-    status: str  # solved | already-solvable | no-excuse | no-demonstration | max-rounds
+    #: solved | already-solvable | demonstration-only | no-excuse | no-demonstration | bad-demonstration
+    #: | max-rounds | timeout
+    status: str
     rounds: list[Round]
     plan: list[PlanStep] | None  # the robot's plan from the state the session ended in
     plans_original_task: bool | None  # whether the taught robot plans the task from its original state
     robot_domain: str  # the taught domain's file
     error: Any = field(default=None, repr=False, compare=False)  # the GuidedLfdError that ended it, if any
+    reason: str | None = None  # why it ended unsolved, in one line (None when solved)
 
     @property
     def solved(self) -> bool:
@@ -93,7 +108,8 @@ class TeachSession:
         return {"robot": self.robot, "problem": self.problem, "solved": self.solved, "status": self.status,
                 "rounds": [r.to_dict() for r in self.rounds],
                 "plan": None if self.plan is None else [str(s) for s in self.plan],
-                "plans_original_task": self.plans_original_task, "robot_domain": self.robot_domain}
+                "plans_original_task": self.plans_original_task, "robot_domain": self.robot_domain,
+                "reason": self.reason}
 
     def to_json(self) -> str:
         """The ``session.json`` document."""
@@ -102,9 +118,13 @@ class TeachSession:
     def to_markdown(self) -> str:
         """``session.md``: the rounds as a person reads them."""
         lines = [f"# Teaching session: {self.problem}", "", f"Robot: `{self.robot}`; status: **{self.status}**.", ""]
+        if self.reason:
+            lines += [f"Why: {self.reason}.", ""]
         for r in self.rounds:
             lines += [f"## Round {r.index}", "", "Request: " + "; ".join(r.request_text) + ".", ""]
-            if r.request != r.excuse:
+            if not r.excuse:
+                lines.append("- no excuse exists: a new skill that makes this true must be demonstrated")
+            elif r.request != r.excuse:
                 lines.append("- the minimal excuse is " + " ".join(str(c) for c in r.excuse)
                              + "; demonstrating the request makes the rest")
             if r.preference:
@@ -114,6 +134,8 @@ class TeachSession:
                 lines.append("- leave as it is: " + "; ".join(r.keep_text))
             lines.append(f"- demonstrated actions: {r.demonstration_length if r.demonstration_length is not None else '-'}"
                          f"; learned: {', '.join(r.learned_actions) or '-'}")
+            if r.vocabulary:
+                lines.append(f"- hand facts: {r.vocabulary}")
             if r.error:
                 lines.append(f"- the demonstration could not be used: {r.error}")
             if r.request_met is False:
@@ -134,6 +156,7 @@ def keep_facts(robot: Domain, problem: Problem, state: frozenset[Atom], changes:
     disturb them); without one, every such fact is listed.
     """
     schemas = {a.name: a for a in robot.actions}
+    hand = robot_vocabulary(robot, human).predicates  # the hand's own state is the demonstrator's business
     current = set(excuse_state(state, changes))
     made: set[Atom] = set()
     keep: list[Atom] = []
@@ -143,7 +166,7 @@ def keep_facts(robot: Domain, problem: Problem, state: frozenset[Atom], changes:
         for lit in schema.precondition:
             atom = lit.atom.substitute(binding)
             if (lit.positive and atom in state and atom not in made and atom not in keep
-                    and atom.predicate not in HAND_PREDICATES and atom.predicate != "="):
+                    and atom.predicate not in hand and atom.predicate != "="):
                 keep.append(atom)
         adds = {a.substitute(binding) for a in schema.add}
         dels = {a.substitute(binding) for a in schema.delete}
@@ -155,12 +178,26 @@ def keep_facts(robot: Domain, problem: Problem, state: frozenset[Atom], changes:
     return [a for a in keep if a not in changed and a.predicate not in static]
 
 
+def robot_vocabulary(robot: Domain, human: Domain | None = None) -> HandVocabulary:
+    """The robot's hand facts as its grasping actions (or, lacking them, the human model's) show them; the
+    kitchens' when neither shows any and the robot declares ``in_hand``, none otherwise."""
+    from guided_lfd.demonstration.vocabulary import NO_HAND
+
+    try:
+        found = infer_vocabulary(robot, human)
+    except ValueError:
+        found = None
+    if found is not None:
+        return found
+    return KITCHEN if "in_hand" in robot.predicates else NO_HAND
+
+
 def _why(report, robot: Domain, problem: Problem, excuse: list[Change]) -> list[str]:
     """Why the robot needs the demonstration: each requested change it has no skill for, or that it cannot
     make from here, on the way to the goal it cannot reach."""
-    spellings = report.spellings
-    goal = ", ".join(describe_change(Change(l.atom, l.positive), spellings) for l in problem.goal)
-    out = [f"no skill of the robot makes {g} true" for g in report.unachievable_goals]
+    spellings, goal = report.spellings, _goal_text(report, problem)
+    out = [f"no skill of the robot makes {describe_change(Change(g.atom, g.positive), spellings)} true"
+           for g in report.unachievable_goals]
     objects = {**robot.constants, **problem.objects}
     subtypes = robot.subtypes()
     for change in excuse:
@@ -169,6 +206,69 @@ def _why(report, robot: Domain, problem: Problem, excuse: list[Change]) -> list[
         out.append(f"{what}: no skill of the robot does this, and its plan to {goal} needs it" if not can else
                    f"{what}: the robot cannot do this from here, and its plan to {goal} needs it")
     return out
+
+
+def check_human_model(human: Domain, problem: Problem) -> None:
+    """Refuse (exit 34) a human model written for another domain: one lacking a predicate or an object type
+    the task uses (its plans could not say anything about this world), before any round."""
+    from guided_lfd.errors import Location, MismatchError
+
+    def refuse(what: str) -> None:
+        raise MismatchError(f"the human model (domain '{human.name}') is for another domain than the task's "
+                            f"('{problem.domain_name}'): {what} (expected a model of the task's world)",
+                            Location(human.path))
+
+    used = {a for a in problem.init} | {lit.atom for lit in problem.goal}
+    for atom in sorted(used):
+        if atom.predicate == "=":
+            continue
+        declared = human.predicates.get(atom.predicate)
+        if declared is None:
+            refuse(f"it has no predicate {atom.predicate}, which the task uses in {atom}")
+        elif declared.arity != len(atom.args):
+            refuse(f"its predicate {atom.predicate} takes {declared.arity} argument(s), the task's {atom} "
+                   f"{len(atom.args)}")
+    types = set(human.types) | {"object"}
+    for obj, kind in sorted(problem.objects.items()):
+        if kind not in types:
+            refuse(f"it has no type {kind}, the type of the task's object {obj}")
+
+
+def _relaxed_reach(task) -> tuple[int, int]:
+    """(atoms some state reachable from ``task``'s initial state may hold, atoms some action there may delete),
+    ignoring deletes and negative preconditions: an atom outside the first is never true (a proof)."""
+    reached, deletable, pending = task.init, 0, list(task.actions)
+    while True:
+        ready = [act for act in pending if not act.pre_pos & ~reached]
+        if not ready:
+            return reached, deletable
+        for act in ready:
+            reached |= act.add
+            deletable |= act.delete
+        pending = [act for act in pending if act.pre_pos & ~reached]
+
+
+def _first_unreachable(domain: Domain, task: Problem, changes: list[Change]) -> Change | None:
+    """The first of ``changes`` that no plan of ``domain`` makes from ``task``'s state on its own (a relaxed
+    check first, then each change's own optimal plan), or None when each one alone can be made."""
+    from guided_lfd.evaluate import excuse_goal, optimal_plan
+    from guided_lfd.grounding import ground
+
+    ground_task = ground(domain, task)
+    reached, deletable = _relaxed_reach(ground_task)
+    for change in changes:
+        i = ground_task.index.get(change.atom)
+        if i is None:
+            if change.added:  # an atom no action of the domain can even name
+                return change
+            continue
+        if not (reached if change.added else deletable | ~ground_task.init) >> i & 1:
+            return change
+    if len(changes) > 1:
+        for change in changes:
+            if optimal_plan(domain, task, goal=excuse_goal([change])) is None:
+                return change
+    return None
 
 
 # -- demonstrators -----------------------------------------------------------------------
@@ -196,21 +296,39 @@ class SimulatedHuman:
     def demonstrate(self, folder: Path, state: frozenset[Atom], request: list[Change],
                     problem: Problem) -> tuple[Path, Path] | None:
         """Render the human's optimal plan from ``state`` to a state where ``request`` holds (None: no plan)."""
-        from guided_lfd.demonstration.render import Noise, render, script_for_plan
+        from guided_lfd.demonstration.render import Noise, plan_vocabulary, render, script_for_plan
         from guided_lfd.evaluate import excuse_goal, optimal_plan
 
         plan = optimal_plan(self.human, replace(problem, init=state), goal=excuse_goal(request))
         if not plan:
             return None
-        script = script_for_plan([(s.action, s.args) for s in plan], self.human, set(state))
+        # The trace's state file declares the world's hand facts (none for a world without a hand).
+        try:
+            vocabulary = plan_vocabulary(self.human, {**self.human.constants, **problem.objects})
+        except ValueError as exc:
+            from guided_lfd.errors import UnsupportedFeatureError
+
+            raise UnsupportedFeatureError(f"--simulate: {exc}", self.human.locate(self.human.name, "domain")) from None
+        script = script_for_plan([(s.action, s.args) for s in plan], self.human, set(state), vocabulary=vocabulary)
         scene = _scene(problem, self.human)
         _check_drawable(script, scene, plan, self.human)
-        rendering = render(script, scene, set(state), self.rate_hz, Noise(seed=self.seed))
+        rendering = render(script, scene, set(state), self.rate_hz, Noise(seed=self.seed), vocabulary=vocabulary)
         trace, states = folder / "demonstration.csv", folder / "demonstration.state.csv"
         write_text(trace, rendering.trace_csv)
         write_text(states, rendering.state_csv)
         write_text(folder / "demonstration.labels.csv", rendering.labels_csv)
         return trace, states
+
+    def why_none(self, state: frozenset[Atom], request: list[Change], problem: Problem) -> str:
+        """Why :meth:`demonstrate` gave None: the human model has no plan to the request (the first change it
+        cannot make, where one alone is out of its reach)."""
+        spellings = {**problem.spellings, **self.human.spellings}
+        asked = " and ".join(describe_change(c, spellings) for c in request)
+        head = f"the human model ({self.human.path}) has no plan from the current state to {asked}"
+        first = _first_unreachable(self.human, replace(problem, init=state), request)
+        if first is None:
+            return f"{head}: it can make each change alone, not all of them together"
+        return f"{head}: it cannot reach {describe_change(first, spellings)} ({first})"
 
 
 def _check_drawable(script, scene, plan: list[PlanStep], human: Domain) -> None:
@@ -263,17 +381,26 @@ def teach(robot: Domain, problem: Problem, demonstrator: Demonstrator, out: Path
     each round's request before the demonstration is asked for.  A
     demonstration that cannot be read, or starts from another state than the
     task's, ends the session (``error`` in its round; ``status`` names it).
+    A human model (``human``, the simulated human's) for another domain is
+    refused before any round (:func:`check_human_model`, exit 34).  The
+    session is ``solved`` only when the taught robot plans the original task
+    from its original state; a goal reached only through the demonstration
+    is ``demonstration-only`` (``reason`` says what the robot lacks).
     ``out/robot.pddl`` is the robot's domain after each round;
     ``session.json`` and ``session.md`` are written by the caller.
     """
     from guided_lfd.errors import GuidedLfdError, SearchTimeout
 
+    simulated = demonstrator.human if isinstance(demonstrator, SimulatedHuman) else None
+    for model in (human, simulated if simulated is not human else None):
+        if model is not None:
+            check_human_model(model, problem)
     _make_folder(out)
     options = options or ExcuseOptions()
     if human is not None:
         options = replace(options, fixed_from=human, all_minimal=options.all_minimal or prefer)
     state, current, rounds = problem.init, robot, []
-    status, final_plan, error = "max-rounds", None, None
+    status, final_plan, error, reason = "max-rounds", None, None, None
     try:
         for k in range(1, max_rounds + 1):
             folder = _make_folder(out / f"round-{k}")
@@ -283,11 +410,13 @@ def teach(robot: Domain, problem: Problem, demonstrator: Demonstrator, out: Path
             if report.status is ExcuseStatus.ALREADY_SOLVABLE:
                 status, final_plan = ("already-solvable" if k == 1 else "solved"), report.robot_plan
                 break
-            if report.excuse is None:
+            if report.excuse is None and (report.status is ExcuseStatus.TIMEOUT or not report.unachievable_goals):
                 status = "no-excuse" if report.status is not ExcuseStatus.TIMEOUT else "timeout"
+                if status == "no-excuse":
+                    reason = _no_excuse_reason(report, task)
                 break
-            rnd = _request(k, current, task, report, human if prefer else None, human if redundancy else None,
-                           human)
+            rnd = (_new_skill_request(k, current, task, report) if report.excuse is None else
+                   _request(k, current, task, report, human if prefer else None, human if redundancy else None, human))
             rnd.files["excuse"] = str(folder / "excuse.json")
             rounds.append(rnd)
             if on_request:
@@ -295,9 +424,9 @@ def teach(robot: Domain, problem: Problem, demonstrator: Demonstrator, out: Path
             try:
                 given = demonstrator.demonstrate(folder, state, rnd.request, task)
                 if given is None:
-                    status = "no-demonstration"
+                    status, reason = _no_demonstration(demonstrator, state, rnd, task, report)
                     break
-                current, state = _learn_round(rnd, folder, out, current, task, given)
+                current, state = _learn_round(rnd, folder, out, current, task, given, human)
             except SearchTimeout:
                 raise
             except GuidedLfdError as exc:  # the demonstration's fault: the session so far stays
@@ -306,18 +435,36 @@ def teach(robot: Domain, problem: Problem, demonstrator: Demonstrator, out: Path
             outcome = _replan(current, replace(problem, init=state), deadline)
             rnd.solvable_after = outcome is not None
             if outcome is not None:
+                # Reached from the demonstrated state: whether it counts is judged below, on the original task.
                 status, final_plan = "solved", outcome
                 break
     except SearchTimeout:
         status = "timeout"
     write_text(out / "robot.pddl", domain_to_pddl(current, header=f"The robot's domain after teaching {problem.path}"))
-    try:
-        original = _replan(current, problem, deadline) is not None
-    except SearchTimeout:
-        original = None
-    session = TeachSession(robot.path, problem.path, status, rounds, final_plan, original, str(out / "robot.pddl"))
+    original, status, reason = _judge_original(current, problem, rounds, status, reason, options, deadline)
+    session = TeachSession(robot.path, problem.path, status, rounds, final_plan, original, str(out / "robot.pddl"),
+                           reason=reason)
     session.error = error
     return session
+
+
+def _judge_original(taught: Domain, problem: Problem, rounds: list[Round], status: str, reason: str | None,
+                    options: ExcuseOptions, deadline: float | None) -> tuple[bool | None, str, str | None]:
+    """(whether the taught robot plans the original task, the session's status, its reason): a session the loop
+    ended ``solved`` stays so only if the taught robot plans the task from its original state."""
+    from guided_lfd.errors import SearchTimeout
+
+    try:
+        original = _replan(taught, problem, deadline) is not None
+    except SearchTimeout:
+        original = None
+    if status == "solved" and not original:
+        # The world got to the goal (or near it) through the demonstration; the robot itself still cannot.
+        if original is None:
+            return None, "timeout", "the time limit was reached before the taught robot's plan for the task"
+        learned = [name for r in rounds for name in r.learned_actions]
+        return False, "demonstration-only", _why_not_original(taught, problem, learned, options, deadline)
+    return original, status, reason
 
 
 def _left(deadline: float | None) -> float | None:
@@ -359,6 +506,82 @@ def _request(k: int, robot: Domain, task: Problem, report, prefer_by: Domain | N
                  preference=preference)
 
 
+def _goal_text(report, task: Problem) -> str:
+    """The task's goal in the paper's words (``Inside RedPlate, PinkDrawer``)."""
+    return ", ".join(describe_change(Change(lit.atom, lit.positive), report.spellings) for lit in task.goal)
+
+
+def _unachievable_text(report) -> str:
+    """The goal atoms no skill of the robot makes true, in the paper's words."""
+    return ", ".join(describe_change(Change(lit.atom, lit.positive), report.spellings)
+                     for lit in report.unachievable_goals)
+
+
+def _no_excuse_reason(report, task: Problem) -> str:
+    """Why no excuse exists, in one line: the goal atoms no skill makes true, or no change that helps."""
+    if report.unachievable_goals:
+        return (f"no excuse exists: no skill of the robot makes {_unachievable_text(report)} true, so a new "
+                "skill that does must be demonstrated")
+    return f"no excuse exists: no change of the world's state lets the robot's skills reach {_goal_text(report, task)}"
+
+
+def _new_skill_request(k: int, robot: Domain, task: Problem, report) -> Round:
+    """A round for a task without an excuse: no skill of the robot makes some goal atoms true, so the request is
+    those atoms (a demonstration of a new skill that makes them), and the why says so."""
+    request = [Change(lit.atom, lit.positive) for lit in report.unachievable_goals]
+    return Round(k, [], request, [describe_change(c, report.spellings) for c in request],
+                 _why(report, robot, task, []), [], [])
+
+
+def _no_demonstration(demonstrator: Demonstrator, state: frozenset[Atom], rnd: Round, task: Problem,
+                      report) -> tuple[str, str]:
+    """(status, reason) of a session whose demonstrator gave no demonstration: ``no-excuse`` when the round
+    asked for a new skill (no excuse exists), ``no-demonstration`` otherwise; the reason says why none came."""
+    why_none = getattr(demonstrator, "why_none", None)
+    why = why_none(state, rnd.request, task) if why_none is not None else "the demonstrator gave no demonstration"
+    if not rnd.excuse:
+        return "no-excuse", f"{_no_excuse_reason(report, task)}; {why}"
+    return "no-demonstration", why
+
+
+def _why_not_original(taught: Domain, problem: Problem, learned: list[str], options: ExcuseOptions,
+                      deadline: float | None) -> str:
+    """Why a session that reached the goal only through the demonstration is not solved, in one line: what the
+    taught robot lacks to plan the task from its initial state (a learned skill that can never apply, else its
+    excuse there, else the goal atoms no skill of it makes true)."""
+    from guided_lfd.errors import GuidedLfdError
+
+    head = (f"the task was reached only through the demonstration: the taught robot cannot plan {problem.name} "
+            "from its initial state")
+    try:
+        lacks = _what_it_lacks(taught, problem, learned, options, deadline)
+    except GuidedLfdError:  # the time limit, or a task too large: the reason without its detail
+        lacks = None
+    return f"{head} ({lacks})" if lacks else head
+
+
+def _what_it_lacks(taught: Domain, problem: Problem, learned: list[str], options: ExcuseOptions,
+                   deadline: float | None) -> str | None:
+    """See :func:`_why_not_original`: the detail, or None when nothing more can be said."""
+    from guided_lfd.grounding import bits, ground
+
+    ground_task = ground(taught, problem, deadline=deadline)
+    reached, _ = _relaxed_reach(ground_task)
+    true_somewhere = {ground_task.atoms[i].predicate for i in bits(reached)}
+    for schema in taught.actions:
+        if schema.name not in learned:
+            continue
+        for lit in schema.precondition:
+            if lit.positive and lit.atom.predicate != "=" and lit.atom.predicate not in true_somewhere:
+                return f"its learned {schema.name} needs {lit.atom}, which nothing makes true from there"
+    report = find_excuses(taught, problem, replace(options, time_limit=_left(deadline)))
+    if report.excuse is not None:
+        return "it still needs: " + "; ".join(describe_change(c, report.spellings) for c in report.excuse.changes)
+    if report.unachievable_goals:
+        return f"no skill of it makes {_unachievable_text(report)} true"
+    return None
+
+
 def _could_make(act, change: Change, objects: dict[str, str], subtypes: dict[str, set[str]]) -> bool:
     """Whether ``act`` has an effect that makes ``change`` (its predicate, with arguments its parameters' types
     admit): a drawer's ``open`` is not made by opening cupboard doors."""
@@ -373,9 +596,11 @@ def _could_make(act, change: Change, objects: dict[str, str], subtypes: dict[str
 
 
 def _learn_round(rnd: Round, folder: Path, out: Path, robot: Domain, task: Problem,
-                 given: tuple[Path, Path]) -> tuple[Domain, frozenset[Atom]]:
-    """Segment the demonstration, learn its skills, merge them into the robot; (new domain, state it left)."""
-    from guided_lfd.demonstration.learn import ground_actions, learn_domain
+                 given: tuple[Path, Path], human: Domain | None = None) -> tuple[Domain, frozenset[Atom]]:
+    """Segment the demonstration, learn its skills (in the robot's hand facts, named after the ``human``
+    model's actions), merge them into the robot; (new domain, state it left).  A skill that could never run
+    beside the robot's is a MismatchError."""
+    from guided_lfd.demonstration.learn import check_usable, document_vocabulary, ground_actions, learn_domain
     from guided_lfd.demonstration.segment import segment, segments_document
     from guided_lfd.demonstration.trace import load_demonstration
     from guided_lfd.merge import merge_domains
@@ -388,20 +613,24 @@ def _learn_round(rnd: Round, folder: Path, out: Path, robot: Domain, task: Probl
     write_text(folder / "segments.json", json_document("segments", doc))
     from guided_lfd.evaluate import usefulness
 
-    demonstrated = ground_actions(doc, str(trace))
+    vocabulary = document_vocabulary(doc, robot, human, source=str(trace))
+    rnd.vocabulary = f"{vocabulary.describe()} (from {vocabulary.origin})"
+    demonstrated = ground_actions(doc, str(trace), vocabulary=vocabulary)
     rnd.demonstration_length = len(demonstrated)
     rnd.new_actions = usefulness(demonstrated, robot, doc.get("objects", {})).useful
-    learned = learn_domain([(str(trace), doc)], name=f"learned-round-{rnd.index}", context=robot)
+    learned = learn_domain([(str(trace), doc)], name=f"learned-round-{rnd.index}", context=robot, human=human,
+                           skip_known=True)
     write_text(folder / "learned.pddl", domain_to_pddl(learned, header=f"Learned from {trace}"))
     merged = merge_domains([robot, learned], name=robot.name).domain
     known = {a.name for a in robot.actions}
     rnd.learned_actions = [a.name for a in merged.actions if a.name not in known]
+    check_usable(merged, robot, set(rnd.learned_actions), str(trace))
     write_text(folder / "robot.pddl", domain_to_pddl(merged, header=f"The robot's domain after round {rnd.index}"))
     write_text(out / "robot.pddl", domain_to_pddl(merged, header=f"The robot's domain after round {rnd.index}"))
     rnd.files.update(trace=str(trace), state=str(states), segments=str(folder / "segments.json"),
                      learned=str(folder / "learned.pddl"), robot=str(folder / "robot.pddl"))
     _check_start(demo, task, trace)
-    state = _state_after(demo, task, merged)
+    state = _state_after(demo, task, merged, vocabulary)
     rnd.unmet = [c for c in rnd.request if (c.atom in state) != c.added]
     rnd.request_met = not rnd.unmet
     return merged, state
@@ -432,20 +661,25 @@ def _check_start(demo, task: Problem, trace: Path) -> None:
                             "state)", Location(str(trace)))
 
 
-def _state_after(demo, task: Problem, robot: Domain) -> frozenset[Atom]:
-    """The world as the demonstration left it: the trace's fluents at its end, the rest as it was."""
+def _state_after(demo, task: Problem, robot: Domain, vocabulary: HandVocabulary = KITCHEN) -> frozenset[Atom]:
+    """The world as the demonstration left it: the trace's fluents at its end, the hand facts (in the robot's
+    ``vocabulary``) as the trace's last frames say, the rest as it was."""
     end = float(demo.frames["time"].max())
     observed = demo.state_at(end)
     traced = _traced_predicates(demo)
-    state = {a for a in task.init if a.predicate not in traced and a.predicate not in HAND_PREDICATES}
+    state = {a for a in task.init if a.predicate not in traced and a.predicate not in vocabulary.predicates}
     state |= set(observed)
-    held = {str(v).strip().lower() for v in demo.frames.groupby("hand")["in_hand"].last() if str(v).strip()
-            and str(v) != "nan"}
-    if "in_hand" in robot.predicates:
-        state |= {Atom("in_hand", (obj,)) for obj in held}
-    if "hand_free" in robot.predicates and not held:
-        state.add(Atom("hand_free"))
-    return frozenset(state)
+    last = demo.frames.groupby("hand")["in_hand"].last()
+    held = {str(hand): str(v).strip().lower() for hand, v in last.items() if str(v).strip() and str(v) != "nan"}
+    if vocabulary.by_arm:
+        for hand in ("left", "right"):
+            state |= vocabulary.fluents(hand, held.get(hand, ""))
+    else:  # one hand in the robot's words: it holds what either trace hand holds, free when neither holds
+        for obj in held.values():
+            state |= vocabulary.fluents("right", obj)
+        if not held:
+            state |= vocabulary.fluents("right", "")
+    return frozenset(a for a in state if a.predicate in robot.predicates or a.predicate not in vocabulary.predicates)
 
 
 def _replan(robot: Domain, task: Problem, deadline: float | None = None) -> list[PlanStep] | None:

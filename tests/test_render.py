@@ -258,13 +258,19 @@ def test_undrawable_actions_accepts_hand_manipulation(plan, odd):
     assert undrawable_actions(plan, human) == odd
 
 
-def test_undrawable_actions_names_walking():
-    """Walking through a door changes where the walker is: not the hand, not the door it names first."""
-    from guided_lfd.demonstration.render import undrawable_actions
+def test_every_action_with_objects_is_drawable_walking_and_keys_too():
+    """Walking through a door or turning a key is drawn as the hand working on the action's objects (issue #23);
+    only an action without objects leaves the hand nothing to act on."""
+    from guided_lfd.demonstration.render import script_for_plan, undrawable_actions
     from guided_lfd.pddl.reader import parse_domain
 
     human = parse_domain("tests/data/teach/rooms-human.pddl")
-    assert undrawable_actions([("walk", ("d1", "hall", "kitchen"))], human) == {"walk"}
-    # Turning a key changes the door, not the key the action names first.
-    assert undrawable_actions([("unlock", ("k1", "d1", "hall", "kitchen"))], human) == {"unlock"}
-    assert undrawable_actions([("pick", ("k1", "hall"))], human) == set()  # the key itself moves
+    assert undrawable_actions([("walk", ("d1", "hall", "kitchen")), ("unlock", ("k1", "d1", "hall", "kitchen")),
+                               ("pick", ("k1", "hall"))], human) == set()
+    assert undrawable_actions([("wait", ())], human) == {"wait"}
+    state = {Atom("at", ("hall",)), Atom("connects", ("d1", "hall", "kitchen")), Atom("unlocked", ("d1",))}
+    steps = script_for_plan([("walk", ("d1", "hall", "kitchen"))], human, state)
+    acting = [s for s in steps if s.activity != "Idle"]
+    # The walker leaves the hall: the hand works on the first object the changes are about (not the door).
+    assert [(s.activity, s.obj) for s in acting] == [("Reach", "hall"), ("Push", "hall"), ("Release", "")]
+    assert acting[1].changes == [(Atom("at", ("kitchen",)), True), (Atom("at", ("hall",)), False)]

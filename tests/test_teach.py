@@ -17,11 +17,12 @@ HUMAN = {k: str(DOMAINS / f"kitchen-{k}" / "human.pddl") for k in (1, 2)}
 
 #: session.json's documented keys and their types (README: JSON formats, guided-lfd/teach).
 SESSION_KEYS = {"format": str, "format_version": int, "robot": str, "problem": str, "solved": bool, "status": str,
-                "rounds": list, "plan": (list, type(None)), "plans_original_task": (bool, type(None)), "robot_domain": str}
+                "rounds": list, "plan": (list, type(None)), "plans_original_task": (bool, type(None)), "robot_domain": str,
+                "reason": (str, type(None))}
 ROUND_KEYS = {"round": int, "excuse": list, "request": list, "request_text": list, "why": list, "keep": list,
               "keep_text": list, "demonstration_length": (int, type(None)), "new_actions": (int, type(None)), "learned_actions": list,
               "request_met": (bool, type(None)), "unmet": list, "solvable_after": (bool, type(None)), "files": dict,
-              "preference": (str, type(None)), "error": (str, type(None))}
+              "preference": (str, type(None)), "error": (str, type(None)), "vocabulary": (str, type(None))}
 
 
 def _check_schema(doc: dict) -> None:
@@ -36,7 +37,7 @@ def _check_schema(doc: dict) -> None:
 
 
 @pytest.mark.parametrize("k,asked,learned", [(1, ["+(open pinkdrawer)"], ["open_drawer"]),
-                                               (2, ["+(clear pinkdrawer)"], ["push_obstacle"])])
+                                               (2, ["+(clear pinkdrawer)"], ["move_chair"])])
 def test_simulated_teaching_solves_each_kitchen_in_one_round(k, asked, learned, runner, app, tmp_path):
     robot, problem = kitchen(k)
     result = runner.invoke(app, ["teach", robot, problem, "--simulate", HUMAN[k], "-o", str(tmp_path), "--json",
@@ -84,7 +85,7 @@ def test_only_the_part_of_the_excuse_that_suffices_is_requested(runner, app, tmp
     (rnd,) = doc["rounds"]
     assert rnd["excuse"] == ["+(clear pinkdrawer)", "+(open pinkdrawer)"]
     assert (rnd["request"], rnd["request_text"]) == (["+(open pinkdrawer)"], ["Open PinkDrawer"])
-    assert rnd["request_met"] and set(rnd["learned_actions"]) == {"push_obstacle", "open_drawer"}
+    assert rnd["request_met"] and set(rnd["learned_actions"]) == {"move_chair", "open_drawer"}
     assert doc["solved"] and doc["plans_original_task"]  # the learned robot plans the original task
     assert "the minimal excuse is +(clear pinkdrawer) +(open pinkdrawer)" in (tmp_path / "session.md").read_text()
     # Without the redundancy step, the whole excuse is asked for.
@@ -163,11 +164,19 @@ def test_the_preferred_excuse_has_the_shortest_predicted_demonstration(runner, a
     assert runner.invoke(app, [*base, "--prefer", "demonstration"]).exit_code == 37  # needs --human
 
 
-def test_simulating_a_human_whose_skills_are_not_hand_manipulation_is_refused_in_one_line(runner, app, tmp_path):
+def test_a_human_who_walks_and_unlocks_doors_is_simulated_and_taught_without_hand_facts(runner, app, tmp_path):
+    """Walking and turning a key are drawn as the hand working on the action's objects (issue #23): the rooms
+    world has no hand facts, so the learned skills have none, and the taught robot plans the task itself."""
     robot, problem, human = (str(ROOMS / f"rooms-{n}.pddl") for n in ("robot", "problem", "human"))
-    result = runner.invoke(app, ["teach", robot, problem, "--simulate", human, "-o", str(tmp_path)])
-    assert result.exit_code == 33 and "--simulate renders hand manipulation" in result.stderr
-
+    result = runner.invoke(app, ["teach", robot, problem, "--simulate", human, "-o", str(tmp_path), "--json"])
+    assert result.exit_code == 0, result.output
+    doc = json.loads(result.stdout)
+    assert doc["status"] == "solved" and doc["plans_original_task"]
+    (rnd,) = doc["rounds"]
+    assert set(rnd["learned_actions"]) == {"pick", "unlock"} and rnd["vocabulary"].startswith("none")
+    assert "round 1: hand facts: none" in result.stderr
+    learned = (tmp_path / "round-1" / "learned.pddl").read_text()
+    assert "hand_free" not in learned and "in_hand" not in learned
 
 
 def test_slack_widens_the_excuses_and_the_preference_may_pick_a_costlier_one(runner, app):

@@ -129,21 +129,23 @@ def proven_implications(domain: Domain, states: Iterable[frozenset[Atom]], invar
                   key=lambda i: (i.premise, i.conclusion, i.positions))
 
 
-def _held(states: list[frozenset[Atom]]) -> list[tuple[str, frozenset[Atom]]]:
-    """(object, state) for every object held in a state."""
-    return [(a.args[0], s) for s in states for a in s if a.predicate == GRASPED and len(a.args) == 1]
+def _held(states: list[frozenset[Atom]], grasped: frozenset[str] = frozenset({GRASPED})
+          ) -> list[tuple[str, frozenset[Atom]]]:
+    """(object, state) for every object held in a state (the held object is a ``grasped`` fact's last argument)."""
+    return [(a.args[-1], s) for s in states for a in s if a.predicate in grasped and 1 <= len(a.args) <= 2]
 
 
 def grasp_affordances(domain: Domain, states: list[frozenset[Atom]],
-                      held: list[tuple[str, frozenset[Atom]]] | None = None) -> set[str]:
+                      held: list[tuple[str, frozenset[Atom]]] | None = None,
+                      grasped: frozenset[str] = frozenset({GRASPED})) -> set[str]:
     """One-argument predicates no action changes that every object held in a state has there (``graspable``).
 
     ``held``: :func:`_held` of ``states``, when the caller has it already.
     """
     changed = {a.predicate for act in domain.actions for a in (*act.add, *act.delete)}
-    held = _held(states) if held is None else held
+    held = _held(states, grasped) if held is None else held
     candidates = {l.atom.predicate for act in domain.actions for l in act.precondition
-                  if l.positive and len(l.atom.args) == 1} - changed - {GRASPED}
+                  if l.positive and len(l.atom.args) == 1} - changed - set(grasped)
     return {p for p in candidates if held and all(Atom(p, (x,)) in s for x, s in held)}
 
 
@@ -155,26 +157,27 @@ def held_types(domain: Domain, states: list[frozenset[Atom]], objects: dict[str,
 
 
 def drop_implied_preconditions(domain: Domain, names: set[str], states: Iterable[frozenset[Atom]],
-                               invariants: list, objects: dict[str, str] | None = None) -> Domain:
+                               invariants: list, objects: dict[str, str] | None = None,
+                               grasped: frozenset[str] = frozenset({GRASPED})) -> Domain:
     """``domain`` with the actions in ``names`` rid of positive preconditions the module's two rules make
-    redundant (``objects``: every demonstrated object's type)."""
+    redundant (``objects``: every demonstrated object's type; ``grasped``: the hand's held predicates)."""
     observed = list(states)
-    implications = proven_implications(domain, observed, invariants)
-    held = _held(observed)  # walked once for both rules
-    affordances = grasp_affordances(domain, observed, held)
+    implications = proven_implications(domain, observed, invariants, grasped)
+    held = _held(observed, grasped)  # walked once for both rules
+    affordances = grasp_affordances(domain, observed, held, grasped)
     graspable_types = held_types(domain, observed, objects or {}, held)
     actions: list[ActionSchema] = []
     for action in domain.actions:
         if action.name in names:
-            action = _simplified(action, implications, affordances, graspable_types)
+            action = _simplified(action, implications, affordances, graspable_types, grasped)
         actions.append(action)
     return replace(domain, actions=actions)
 
 
 def _simplified(action: ActionSchema, implications: list[Implication], affordances: set[str],
-                graspable_types: set[str]) -> ActionSchema:
+                graspable_types: set[str], held_predicates: frozenset[str] = frozenset({GRASPED})) -> ActionSchema:
     types = dict(action.params)
-    grasped = {a.args[0] for a in action.add if a.predicate == GRASPED and len(a.args) == 1}
+    grasped = {a.args[-1] for a in action.add if a.predicate in held_predicates and 1 <= len(a.args) <= 2}
     # An affordance goes only where it is not what this skill grasps, on objects of a kind the hand holds
     # (the block below); a skill on something never held (pushing the chair) keeps it.
     kept = [l for l in action.precondition

@@ -9,7 +9,8 @@ holds) is a demonstrated action:
   every fluent true before the segment that mentions an object the hand
   interacts with (the handled object, the target, what it holds, and every
   object whose fluents change), changed or not (``clear`` of the drawer),
-  plus the hand's state (``in_hand``/``hand_free``), and fluents about
+  plus the hand's state (``in_hand``/``hand_free``, or the robot's own hand
+  facts, see :mod:`guided_lfd.demonstration.vocabulary`), and fluents about
   objects a static relation ties to those (the cupboard's open door, by
   ``door_of``) where a fluent about them that varies holds;
 * effects are the changes over the segment to fluents of the objects the
@@ -25,7 +26,11 @@ holds) is a demonstrated action:
   hand is in no drawer), see :mod:`guided_lfd.demonstration.mutex`;
 * positive preconditions holding implies (the held block is ``clear``) are
   dropped, and a grasp affordance (``graspable``) is kept only on the object
-  the skill grasps, see :mod:`guided_lfd.demonstration.implied`.
+  the skill grasps, see :mod:`guided_lfd.demonstration.implied`;
+* with a human model, a skill whose effects are a human action's is named
+  after it, parameters in its order (:mod:`guided_lfd.demonstration.naming`);
+  with ``skip_known``, a demonstrated step one of the robot's own actions
+  makes (same changes) teaches nothing and is not learned again.
 """
 
 from __future__ import annotations
@@ -35,7 +40,7 @@ from dataclasses import dataclass, replace
 from guided_lfd.demonstration.generalise import generalise
 from guided_lfd.demonstration.implied import drop_implied_preconditions
 from guided_lfd.demonstration.mutex import drop_implied_negative_preconditions, proven_invariants
-from guided_lfd.demonstration.trace import HAND_PREDICATES
+from guided_lfd.demonstration.vocabulary import KITCHEN, HandVocabulary, bind_arms, infer_vocabulary
 from guided_lfd.errors import Location, MergeError, TraceError
 from guided_lfd.pddl.model import ActionSchema, Atom, Domain, Literal, Predicate, common_supertype
 
@@ -57,8 +62,18 @@ class DemonstratedAction:
     end: float = 0.0
 
 
-def _hand_fluents(held: str) -> set[Atom]:
-    return {Atom("in_hand", (held,))} if held else {Atom("hand_free")}
+def document_vocabulary(document: dict, *domains: Domain | None, source: str = "segments") -> HandVocabulary:
+    """The hand facts of a segments document: as its state file declared them, else read off the first of
+    ``domains`` that shows them (the robot's, then the human's), else the kitchens' ``in_hand``/``hand_free``.
+    A domain whose grasping actions are ambiguous, or arms the trace's hands cannot be tied to, is a TraceError."""
+    declared = document.get("vocabulary")
+    if declared is not None:
+        return HandVocabulary.from_dict(declared, f"the vocabulary of {source}")
+    try:
+        found = infer_vocabulary(*domains)
+        return KITCHEN if found is None else bind_arms(found, document.get("objects", {}))
+    except ValueError as exc:
+        raise TraceError(str(exc), Location(source)) from None
 
 
 def skill_segments(segments: list[dict]) -> list[dict]:
@@ -88,13 +103,16 @@ def skill_segments(segments: list[dict]) -> list[dict]:
     return out
 
 
-def static_predicates(documents: list[tuple[str, dict]]) -> set[str]:
-    """Predicates whose facts are the same in every state each document shows (``door_of``, ``graspable``)."""
+def static_predicates(documents: list[tuple[str, dict]],
+                      vocabularies: dict[str, HandVocabulary] | None = None) -> set[str]:
+    """Predicates whose facts are the same in every state each document shows (``door_of``, ``graspable``);
+    ``vocabularies``: each source's hand facts (default: the kitchens'), never static."""
     seen: set[str] = set()
     changed: set[str] = set()
     for source, doc in documents:
+        hand = (vocabularies or {}).get(source, KITCHEN).predicates
         states = [doc.get("initial", [])] + [s[k] for s in doc.get("segments", []) for k in ("before", "after")]
-        parsed = [{a for a in (_atom(x, source) for x in fluents) if a.predicate not in HAND_PREDICATES}
+        parsed = [{a for a in (_atom(x, source) for x in fluents) if a.predicate not in hand}
                   for fluents in states]
         first = parsed[0]
         for state in parsed:
@@ -114,19 +132,23 @@ def _tied(before: set[Atom], roles: set[str], interest: set[str], static: set[st
                                    for a in before)}
 
 
-def ground_actions(document: dict, source: str = "segments", static: set[str] | None = None
-                   ) -> list[DemonstratedAction]:
+def ground_actions(document: dict, source: str = "segments", static: set[str] | None = None,
+                   vocabulary: HandVocabulary | None = None) -> list[DemonstratedAction]:
     """The demonstrated actions of one ``guided-lfd/segments`` document (``static``: the predicates that never
-    change, by default in this document)."""
+    change, by default in this document; ``vocabulary``: the hand facts, by default the document's own or the
+    kitchens')."""
     types: dict[str, str] = document.get("objects", {})
-    static = static_predicates([(source, document)]) if static is None else static
+    vocabulary = vocabulary or document_vocabulary(document, source=source)
+    hand = vocabulary.predicates
+    static = static_predicates([(source, document)], {source: vocabulary}) if static is None else static
     out: list[DemonstratedAction] = []
-    for seg in skill_segments(document.get("segments", [])):
+    skills = skill_segments(document.get("segments", []))
+    for seg in skills:
         # The hand's fluents come from the trace, never from the environment state.
-        before = {a for a in (_atom(x, source) for x in seg["before"]) if a.predicate not in HAND_PREDICATES}
-        after = {a for a in (_atom(x, source) for x in seg["after"]) if a.predicate not in HAND_PREDICATES}
-        hand_before = _hand_fluents(seg.get("held_before", ""))
-        hand_after = _hand_fluents(seg.get("held_after", ""))
+        before = {a for a in (_atom(x, source) for x in seg["before"]) if a.predicate not in hand}
+        after = {a for a in (_atom(x, source) for x in seg["after"]) if a.predicate not in hand}
+        hand_before = vocabulary.fluents(seg["hand"], seg.get("held_before", ""))
+        hand_after = vocabulary.fluents(seg["hand"], seg.get("held_after", ""))
         roles = [o for o in (seg.get("object", ""), seg.get("target", "")) if o]
         handled = set(roles) | {o for o in (seg.get("held_before", ""), seg.get("held_after", "")) if o}
         # Only changes to what the hand handles, or to objects a changed fluent
@@ -134,8 +156,13 @@ def ground_actions(document: dict, source: str = "segments", static: set[str] | 
         # the other hand may change something at the same time.
         changed = (after - before) | (before - after)
         linked = handled | {x for a in changed if set(a.args) & handled for x in a.args}
-        env_add = {a for a in after - before if set(a.args) & linked}
-        env_del = {a for a in before - after if set(a.args) & linked}
+        if not _other_hand_acting(seg, skills):
+            # One hand at work: every change the segmenter gave it is its own (walking from the hall to the
+            # kitchen: the hand works on the hall, the walker arrives in the kitchen).
+            linked |= {x for a in changed for x in a.args}
+        # A fact without arguments (the power is on) was given to this segment by the segmenter: its effect.
+        env_add = {a for a in after - before if not a.args or set(a.args) & linked}
+        env_del = {a for a in before - after if not a.args or set(a.args) & linked}
         add = env_add | (hand_after - hand_before)
         delete = env_del | (hand_before - hand_after)
         if not add and not delete:
@@ -155,6 +182,14 @@ def ground_actions(document: dict, source: str = "segments", static: set[str] | 
                                       f"{source} segment {seg['index']} ({seg['activity']} {' '.join(roles)})",
                                       float(seg.get("start", 0.0)), float(seg.get("end", 0.0))))
     return out
+
+
+def _other_hand_acting(seg: dict, skills: list[dict]) -> bool:
+    """Whether a segment of the other hand that is not Idle overlaps ``seg`` in time."""
+    start, end = float(seg.get("start", 0.0)), float(seg.get("end", 0.0))
+    return any(other["hand"] != seg["hand"] and other["activity"] not in SKIPPED
+               and float(other.get("start", 0.0)) <= end and start <= float(other.get("end", 0.0))
+               for other in skills)
 
 
 def _atom(text: str, source: str) -> Atom:
@@ -184,7 +219,7 @@ def lift(action: DemonstratedAction, types: dict[str, str]) -> ActionSchema:
 
 
 def learn_domain(documents: list[tuple[str, dict]], prior: Domain | None = None, name: str = "learned",
-                 context: Domain | None = None) -> Domain:
+                 context: Domain | None = None, human: Domain | None = None, skip_known: bool = False) -> Domain:
     """A domain of the skills demonstrated in ``documents`` (source, segments document).
 
     With ``prior``, its type hierarchy generalises repeats and the result is
@@ -194,10 +229,25 @@ def learn_domain(documents: list[tuple[str, dict]], prior: Domain | None = None,
     result is the learned skills alone, simplified only where that holds beside
     the context's actions too (a robot action could break an invariant the
     learned skills alone keep).
+
+    The hand's facts are each document's declared vocabulary, else the
+    robot's (``prior`` or ``context``, then ``human``: the predicates their
+    grasping actions toggle), else ``in_hand``/``hand_free``.  With ``human``,
+    skills are named after the human actions with the same effects.  With
+    ``skip_known``, steps the robot (``prior`` or ``context``) already makes
+    are not learned.
     """
-    types, lifted, spans = _lifted_demonstrations(documents)
+    robot = prior if prior is not None else context
+    vocabularies = {source: document_vocabulary(doc, robot, human, source=source) for source, doc in documents}
+    known = robot if skip_known else None
+    types, lifted, spans = _lifted_demonstrations(documents, vocabularies, known)
     notes: list[str] = []
     learned = generalise(lifted, prior.types if prior is not None else None, notes, spans)
+    if human is not None:
+        from guided_lfd.demonstration.naming import name_after
+
+        learned = name_after(learned, human)
+    grasped = {v.held for v in vocabularies.values() if v.held} or {"in_hand"}
     predicates = _predicates_of(learned)
     type_decl: dict[str, str | None] = {"object": None}
     for t in sorted(set(types.values())):
@@ -208,17 +258,20 @@ def learn_domain(documents: list[tuple[str, dict]], prior: Domain | None = None,
         if context is not None:
             frame = replace(context, types={**type_decl, **context.types},
                             predicates={**predicates, **context.predicates})
-        learned = _simplified(documents, learned, types, frame, context.actions if context is not None else [])
+        learned = _simplified(documents, learned, types, frame, context.actions if context is not None else [],
+                              vocabularies, grasped)
         simplified = Domain(name=name, requirements=reqs, types=type_decl, constants={}, predicates=predicates,
                             actions=learned, path="<learned>")
     else:
-        simplified = _learned_into_prior(documents, prior, name, types, type_decl, predicates, learned)
+        simplified = _learned_into_prior(documents, prior, name, types, type_decl, predicates, learned,
+                                         vocabularies, grasped)
     # Demonstrations left out or reconciled are reported with the domain (the CLI prints them).
     return replace(simplified, warnings=(*simplified.warnings, *notes))
 
 
 def _simplified(documents: list[tuple[str, dict]], learned: list[ActionSchema], types: dict[str, str],
-                frame: Domain, around: list[ActionSchema]) -> list[ActionSchema]:
+                frame: Domain, around: list[ActionSchema], vocabularies: dict[str, HandVocabulary] | None = None,
+                grasped: set[str] | None = None) -> list[ActionSchema]:
     """The learned skills with implied preconditions dropped, proven on ``frame`` holding them and ``around``.
 
     Mutexes and implications are proven on the whole domain (the robot's actions too): an action that
@@ -228,21 +281,25 @@ def _simplified(documents: list[tuple[str, dict]], learned: list[ActionSchema], 
     reqs = tuple(dict.fromkeys([*frame.requirements, ":negative-preconditions"]))
     combined = replace(frame, requirements=reqs, path="<learned>",
                        actions=[*around, *(replace(a, name=f"{a.name}__learned") for a in learned)])
-    states = observed_states(documents)
+    states = observed_states(documents, vocabularies)
     invariants = proven_invariants(combined, types, states)
     simplified = drop_implied_negative_preconditions(combined, set(provisional), invariants)
-    simplified = drop_implied_preconditions(simplified, set(provisional), states, invariants, types)
+    simplified = drop_implied_preconditions(simplified, set(provisional), states, invariants, types,
+                                            frozenset(grasped or {"in_hand"}))
     return [replace(a, name=provisional[a.name]) for a in simplified.actions if a.name in provisional]
 
 
-def _lifted_demonstrations(documents: list[tuple[str, dict]]
-                           ) -> tuple[dict[str, str], list[ActionSchema], dict[str, str]]:
+def _lifted_demonstrations(documents: list[tuple[str, dict]], vocabularies: dict[str, HandVocabulary] | None = None,
+                           known: Domain | None = None) -> tuple[dict[str, str], list[ActionSchema], dict[str, str]]:
     """Every object's type, every demonstrated action lifted and the time span of each (by origin);
-    a predicate used with two arities is an error."""
+    a predicate used with two arities is an error.  Steps an action of ``known`` makes are left out."""
+    from guided_lfd.evaluate import known_skill
+
+    vocabularies = vocabularies or {}
     types: dict[str, str] = {}
     lifted: list[ActionSchema] = []
     spans: dict[str, str] = {}
-    static = static_predicates(documents)
+    static = static_predicates(documents, vocabularies)
     arity: dict[str, tuple[int, str]] = {}
     for source, doc in documents:
         for fluents in [doc.get("initial", [])] + [s[k] for s in doc.get("segments", []) for k in ("before", "after")]:
@@ -252,7 +309,9 @@ def _lifted_demonstrations(documents: list[tuple[str, dict]]
                     raise TraceError(f"{atom.predicate} has {len(atom.args)} argument(s) here and {n} in {where}; "
                                      "expected the same number", Location(source))
         types.update(doc.get("objects", {}))
-        for action in ground_actions(doc, source, static):
+        for action in ground_actions(doc, source, static, vocabularies.get(source)):
+            if known is not None and known_skill(action, known, doc.get("objects", {})) is not None:
+                continue  # the robot's own skill: nothing to learn
             lifted.append(lift(action, doc.get("objects", {})))
             spans[action.source] = f", {action.start:.2f}-{action.end:.2f} s"
     return types, lifted, spans
@@ -277,7 +336,8 @@ def _predicates_of(actions: list[ActionSchema]) -> dict[str, Predicate]:
 
 def _learned_into_prior(documents: list[tuple[str, dict]], prior: Domain, name: str, types: dict[str, str],
                         type_decl: dict[str, str | None], predicates: dict[str, Predicate],
-                        learned: list[ActionSchema]) -> Domain:
+                        learned: list[ActionSchema], vocabularies: dict[str, HandVocabulary] | None = None,
+                        grasped: set[str] | None = None) -> Domain:
     """The learned skills simplified with invariants proven on the prior and them, then merged into the prior."""
     sources = ", ".join(dict.fromkeys(source for source, _ in documents))
     clash = sorted((set(types.values()) - {"object"}) & set(prior.predicates) | set(predicates) & set(prior.types))
@@ -288,7 +348,7 @@ def _learned_into_prior(documents: list[tuple[str, dict]], prior: Domain, name: 
 
     reqs = tuple(dict.fromkeys([*prior.requirements, ":negative-preconditions"]))
     learned = _simplified(documents, learned, types, replace(prior, predicates={**predicates, **prior.predicates}),
-                          prior.actions)
+                          prior.actions, vocabularies, grasped)
     alone = Domain(name=name, requirements=reqs, types=type_decl, constants={}, predicates=predicates,
                    actions=learned, path="<learned>")
     # The same rules as `guided-lfd merge`: equal skills once, clashes renamed.
@@ -303,14 +363,48 @@ def _learned_into_prior(documents: list[tuple[str, dict]], prior: Domain, name: 
     return replace(merged, path="<learned>")
 
 
-def observed_states(documents: list[tuple[str, dict]]) -> list[frozenset[Atom]]:
-    """Every state the demonstrations show, as the learner sees it (the acting hand's fluents included)."""
+def observed_states(documents: list[tuple[str, dict]],
+                    vocabularies: dict[str, HandVocabulary] | None = None) -> list[frozenset[Atom]]:
+    """Every state the demonstrations show, as the learner sees it (the acting hand's fluents included;
+    ``vocabularies``: each source's hand facts, by default the document's own or the kitchens')."""
     states: list[frozenset[Atom]] = []
     for source, doc in documents:
+        vocabulary = (vocabularies or {}).get(source) or document_vocabulary(doc, source=source)
         states.append(frozenset(_atom(x, source) for x in doc.get("initial", [])))
         for seg in skill_segments(doc.get("segments", [])):
             for fluents, held in ((seg["before"], seg.get("held_before", "")),
                                   (seg["after"], seg.get("held_after", ""))):
-                env = {a for a in (_atom(x, source) for x in fluents) if a.predicate not in HAND_PREDICATES}
-                states.append(frozenset(env | _hand_fluents(held)))
+                env = {a for a in (_atom(x, source) for x in fluents) if a.predicate not in vocabulary.predicates}
+                states.append(frozenset(env | vocabulary.fluents(seg["hand"], held)))
     return states
+
+
+def check_usable(merged: Domain, robot: Domain, learned: set[str], where: str) -> None:
+    """MismatchError when a skill in ``learned`` (names in ``merged``) can never run beside ``robot``'s: a
+    precondition on a predicate ``robot`` does not declare and no usable action makes true (``hand_free``
+    where the robot says ``hand-empty``), or a parameter of a type ``robot`` lacks.  ``where``: the
+    demonstrations, for the message."""
+    from guided_lfd.errors import MismatchError
+
+    usable = set(robot.predicates) | {a.predicate for act in robot.actions for a in act.add}
+    pending = [a for a in merged.actions if a.name in learned]
+    for action in pending:
+        odd = [t for _, t in action.params if t != "object" and t not in robot.types]
+        if odd:
+            raise MismatchError(f"learned skill {action.name} acts on objects of type {odd[0]}, a type "
+                                f"{robot.path} does not have (expected demonstrations of the robot's world)",
+                                Location(where))
+    grew = True
+    while grew:  # a learned skill may make true what another one needs
+        grew = False
+        for action in list(pending):
+            if all(l.atom.predicate in usable for l in action.precondition if l.positive and l.atom.predicate != "="):
+                usable |= {a.predicate for a in action.add}
+                pending.remove(action)
+                grew = True
+    for action in pending:
+        missing = sorted(l.atom.predicate for l in action.precondition
+                         if l.positive and l.atom.predicate != "=" and l.atom.predicate not in usable)
+        raise MismatchError(f"learned skill {action.name} needs ({missing[0]} ...), a predicate {robot.path} "
+                            "never makes true: the skill could never run (expected demonstrations in the robot's "
+                            "vocabulary; declare the hand facts with vocabulary(held=...) rows)", Location(where))

@@ -22,6 +22,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from guided_lfd.demonstration.trace import HAND_PREDICATES
+from guided_lfd.demonstration.vocabulary import KITCHEN, HandVocabulary, infer_vocabulary
 from guided_lfd.pddl.model import Atom
 
 Vec = tuple[float, float, float]
@@ -39,7 +40,7 @@ class Step:
     the other hand is doing (both hands at once).
     """
 
-    activity: str  # Idle, Reach, Take, Put, Release, Open, Close, Push
+    activity: str  # Idle, Reach, Take, Put, Release, Open, Close, Push, Operate
     obj: str = ""
     target: str = ""
     duration: float = 1.0
@@ -97,11 +98,14 @@ def schedule(steps: list[Step]) -> list[tuple[float, float]]:
 
 
 def render(steps: list[Step], scene: Scene, initial: set[Atom], rate_hz: float = 90.0,
-           noise: Noise | None = None) -> Rendering:
+           noise: Noise | None = None, vocabulary: HandVocabulary | None = None) -> Rendering:
     """Render ``steps`` (scheduled as :func:`schedule` says) into trace, state and label CSVs.
 
     A hand without a step of its own waits where it is: holding an object
-    still, which the activity model calls Take, or idle.
+    still, which the activity model calls Take, or idle.  ``vocabulary``: the
+    hand facts of the world's domain; other than the kitchens', the state
+    file declares them (``vocabulary(...)`` rows) and leaves them out of its
+    fluents.
     """
     noise = noise or Noise()
     rng = np.random.default_rng(noise.seed)
@@ -143,7 +147,7 @@ def render(steps: list[Step], scene: Scene, initial: set[Atom], rate_hz: float =
     rows: list[tuple] = []  # (time, hand, pos, grip, in_hand, act_on, label)
     for hand, track in tracks.items():
         rows += [(float(dt * k), hand, *track[k]) for k in range(end)]
-    return Rendering(_trace_csv(rows, scene, noise, rng), _state_csv(scene, initial, events),
+    return Rendering(_trace_csv(rows, scene, noise, rng), _state_csv(scene, initial, events, vocabulary),
                      _labels_csv(rows), steps)
 
 
@@ -160,17 +164,24 @@ def _motion(step: Step, hand: str, start: np.ndarray, s: np.ndarray, n: int, sce
         grip, in_hand, act_on = True, step.obj, step.obj
         held[hand] = step.obj
     elif step.activity == "Put":
-        goal = np.array(scene.positions[step.target]) + np.array([0.0, 0.0, 0.05])
-        path = minimum_jerk(start, goal, s)
+        # Onto the target, or (none named: put down on the table) a little aside and down.
+        if step.target:
+            path = minimum_jerk(start, np.array(scene.positions[step.target]) + np.array([0.0, 0.0, 0.05]), s)
+        else:
+            # With no target for the detector to name, the hand keeps lowering the object until it lets go
+            # (at a steady speed: slowing to a stop would read as holding it still).
+            path = start + np.array([0.2, 0.1, -0.15])[None, :] * s[:, None]
         grip, in_hand, act_on = True, step.obj, step.target
     elif step.activity == "Release":
         path = minimum_jerk(start, np.array(scene.rest[hand]), s)
         in_hand, act_on = "", ""
         held[hand] = ""
-    elif step.activity in ("Open", "Close"):
-        direction = np.array(scene.pull) * (1 if step.activity == "Open" else -1)
+    elif step.activity in ("Open", "Close", "Operate"):
+        # Operate: the hand works a control it holds (a switch, a valve), as far as a drawer handle goes.
+        direction = np.array(scene.pull) * (-1 if step.activity == "Close" else 1)
         path = minimum_jerk(start, start + direction, s)
         grip, act_on = True, step.obj
+        label = "Manipulate" if step.activity == "Operate" else label
     elif step.activity == "Push":
         # Pushed to where it goes, or (no place named: "push it aside") sideways off what it blocks.
         goal = (np.array(scene.positions[step.target]) + np.array([0.0, -0.4, 0.0]) if step.target
@@ -221,14 +232,21 @@ def _fluent(atom: Atom, scene: Scene) -> str:
     return f"{atom.predicate}({','.join(_name(scene, a) for a in atom.args)})"
 
 
-def _state_csv(scene: Scene, initial: set[Atom], events) -> str:
+def _state_csv(scene: Scene, initial: set[Atom], events, vocabulary: HandVocabulary | None = None) -> str:
     buf = io.StringIO()
     writer = csv.writer(buf, lineterminator="\n")
     writer.writerow(["time", "fluent", "value"])
     for obj in sorted(scene.types):
         writer.writerow(["0", f"object({_name(scene, obj)},{scene.types[obj]})", "true"])
+    hand = set(HAND_PREDICATES)
+    if vocabulary is not None and vocabulary != KITCHEN:  # the kitchens' is the format's default: no rows
+        hand = set(vocabulary.predicates)
+        rows = [f"held={vocabulary.held}", f"free={vocabulary.free}"] if hand else ["none"]
+        rows += [f"{h}={_name(scene, arm)}" for h, arm in vocabulary.hands]
+        for row in rows:
+            writer.writerow(["0", f"vocabulary({row.replace('=None', '=none')})", "true"])
     for atom in sorted(initial):
-        if atom.predicate in HAND_PREDICATES:
+        if atom.predicate in hand:
             continue  # the hand's state is in the trace (in_hand), not the environment
         writer.writerow(["0", _fluent(atom, scene), "true"])
     for time, atom, value in sorted(events, key=lambda e: (e[0], e[1])):
@@ -257,66 +275,95 @@ def frame_f1(truth: list[str], predicted: list[str]) -> float:
 
 
 def undrawable_actions(plan: list[tuple[str, tuple[str, ...]]], domain) -> set[str]:
-    """Names of the plan's actions :func:`script_for_plan` cannot draw as hand activities.
+    """Names of the plan's actions :func:`script_for_plan` cannot draw as hand activities: those without
+    objects (the hand has nothing to act on).  Every other action is drawn (see :func:`script_for_plan`)."""
+    return {name for name, args in plan if not args}
 
-    It draws an action by what it changes: the hand state (take, put), ``open``
-    (open, close), or else the hand pushes the action's first object, which
-    must then be among what it changes (walking through a door or turning a
-    key is none of these).
-    """
-    schemas = {a.name: a for a in domain.actions}
-    odd = set()
-    for name, args in plan:
-        schema = schemas[name]
-        binding = {v: a for (v, _), a in zip(schema.params, args)}
-        effects = (*schema.add, *schema.delete)
-        changed = [a.substitute(binding) for a in effects if a.predicate not in HAND_PREDICATES]
-        manipulates = any(a.predicate in HAND_PREDICATES for a in effects) or any(a.predicate == "open" for a in changed)
-        if not manipulates and not any(args[:1] and args[0] in a.args for a in changed):
-            odd.add(name)
-    return odd
+
+def plan_vocabulary(domain, objects: dict[str, str] | None = None) -> HandVocabulary:
+    """The hand facts of ``domain`` as its grasping actions show them (no hand facts when none does), the arms
+    tied to the trace's hands by ``objects``' names where the facts take the arm."""
+    from guided_lfd.demonstration.vocabulary import NO_HAND, bind_arms
+
+    found = infer_vocabulary(domain)
+    if found is None:
+        return NO_HAND
+    return bind_arms(found, objects or {}) if found.by_arm else found
 
 
 def script_for_plan(plan: list[tuple[str, tuple[str, ...]]], domain, state: set[Atom],
-                    pause: float = 0.4) -> list[Step]:
+                    pause: float = 0.4, vocabulary: HandVocabulary | None = None) -> list[Step]:
     """Hand activities that demonstrate a plan of ``domain`` from ``state``.
 
     Each action becomes the activities a person performs for it, read off
-    its effects: making ``in_hand`` true is Reach + Take; giving up
-    ``in_hand`` is Put + Release; changing ``open`` is Reach + Open/Close +
-    Release; moving an object the hand does not hold (the chair) is Reach +
-    Push + Release.  Fluent changes are attached to the activity that causes
-    them.  Idle pauses separate the actions.
+    its effects (``vocabulary``: the domain's hand facts, by default read off
+    its grasping actions): making the held fact true is Reach + Take; giving
+    it up is Put + Release; changing ``open`` is Reach + Open/Close +
+    Release.  Any other action is the hand working on the action's first
+    object its changes are about (the door, the switch, the room left): with
+    a free hand Reach + Push (the chair pushed away) + Release, or Reach +
+    Operate + Release when no change is about that object; with the hand
+    holding something (a tool, a carried cup), the held object moved to that
+    object (a Put without a Release), then held still.  Fluent changes are
+    attached to the activity that causes them.  Idle pauses separate the
+    actions.  With arms as objects, an action's arm says which hand acts.
     """
+    vocabulary = vocabulary or plan_vocabulary(domain)
+    hand_predicates = vocabulary.predicates
     schemas = {a.name: a for a in domain.actions}
     current = set(state)
+    held = {"right": "", "left": ""}
+    for atom in state:
+        if vocabulary.held_object(atom) is not None:
+            held[vocabulary.hand_of(atom)] = vocabulary.held_object(atom) or ""
     steps: list[Step] = [Step("Idle", duration=pause)]
     for name, args in plan:
         schema = schemas[name]
         binding = {v: a for (v, _), a in zip(schema.params, args)}
         adds = {a.substitute(binding) for a in schema.add}
         dels = {a.substitute(binding) for a in schema.delete}
-        env = [(a, True) for a in sorted(adds - current) if a.predicate not in HAND_PREDICATES]
-        env += [(a, False) for a in sorted(dels & current) if a.predicate not in HAND_PREDICATES]
-        taken = [a.args[0] for a in adds if a.predicate == "in_hand"]
-        given = [a.args[0] for a in dels if a.predicate == "in_hand"]
+        env = [(a, True) for a in sorted(adds - current) if a.predicate not in hand_predicates]
+        env += [(a, False) for a in sorted(dels & current) if a.predicate not in hand_predicates]
+        taken = sorted(a for a in adds if vocabulary.held_object(a) is not None)
+        given = sorted(a for a in dels if vocabulary.held_object(a) is not None)
         opened = [a for a, _ in env if a.predicate == "open"]
+        arms = [vocabulary.hand_of(Atom("_", (x,))) for x in args if x in dict(vocabulary.hands).values()]
+        hand = arms[0] if arms else "right"
         if taken:
-            steps += [Step("Reach", taken[0], duration=1.0), Step("Take", taken[0], duration=0.5, changes=env)]
+            obj, hand = vocabulary.held_object(taken[0]) or "", vocabulary.hand_of(taken[0])
+            steps += [Step("Reach", obj, duration=1.0, hand=hand),
+                      Step("Take", obj, duration=0.5, changes=env, hand=hand)]
+            held[hand] = obj
         elif given:
-            target = next((x for a, _ in env for x in a.args if x != given[0]), "")
-            steps += [Step("Put", given[0], target, duration=1.2), Step("Release", duration=0.6, changes=env)]
+            obj, hand = vocabulary.held_object(given[0]) or "", vocabulary.hand_of(given[0])
+            target = next((x for a, _ in env for x in a.args if x != obj), "")
+            steps += [Step("Put", obj, target, duration=1.2, hand=hand),
+                      Step("Release", duration=0.6, changes=env, hand=hand)]
+            held[hand] = ""
         elif opened:
             obj = opened[0].args[0]
             kind = "Open" if (opened[0], True) in env else "Close"
-            steps += [Step("Reach", obj, duration=1.0), Step(kind, obj, duration=0.8, changes=env),
-                      Step("Release", duration=0.6)]
+            steps += [Step("Reach", obj, duration=1.0, hand=hand), Step(kind, obj, duration=0.8, changes=env, hand=hand),
+                      Step("Release", duration=0.6, hand=hand)]
         else:
-            moved = args[0]
-            target = next((a.args[-1] for a, value in env if value and moved in a.args), "")
-            steps += [Step("Reach", moved, duration=1.0), Step("Push", moved, target, duration=1.4, changes=env),
-                      Step("Release", duration=0.6)]
+            about = {x for a, _ in env for x in a.args}
+            arm_objects = set(dict(vocabulary.hands).values())
+            candidates = [x for x in args if x not in arm_objects]
+            moved = next((x for x in candidates if x in about), candidates[0] if candidates else args[0])
+            if held[hand]:
+                # The hand holds a tool or what it carries: it brings it to the object and keeps it.
+                steps += [Step("Put", held[hand], moved, duration=1.2, changes=env, hand=hand),
+                          Step("Idle", duration=pause, hand=hand)]
+            elif moved in about:
+                target = next((a.args[-1] for a, value in env if value and moved in a.args), "")
+                steps += [Step("Reach", moved, duration=1.0, hand=hand),
+                          Step("Push", moved, target, duration=1.4, changes=env, hand=hand),
+                          Step("Release", duration=0.6, hand=hand)]
+            else:
+                steps += [Step("Reach", moved, duration=1.0, hand=hand),
+                          Step("Operate", moved, duration=0.8, changes=env, hand=hand),
+                          Step("Release", duration=0.6, hand=hand)]
         current = (current - dels) | adds
-        if not taken:  # no pause while carrying something
-            steps.append(Step("Idle", duration=pause))
+        if not taken and not (held[hand] and not given and not opened and steps[-1].activity == "Idle"):
+            steps.append(Step("Idle", duration=pause, hand=hand))
     return steps

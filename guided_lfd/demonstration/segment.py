@@ -360,7 +360,7 @@ def segments_document(demo: Demonstration, segments: list[Segment], state_path: 
     def atoms(xs):
         return [str(a) for a in sorted(xs)]
 
-    return {
+    doc = {
         "trace": demo.path,
         "state": state_path,
         "objects": dict(sorted(demo.objects.items())),
@@ -375,6 +375,9 @@ def segments_document(demo: Demonstration, segments: list[Segment], state_path: 
             for s in segments
         ],
     }
+    if demo.vocabulary is not None:  # only where the state file declared it: older documents stay as they were
+        doc["vocabulary"] = demo.vocabulary.to_dict()
+    return doc
 
 
 def segments_csv(segments: list[Segment]) -> str:

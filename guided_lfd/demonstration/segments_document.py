@@ -53,10 +53,31 @@ def document_defect(doc: dict) -> tuple[tuple, str] | None:
         found = _segment_defect(("segments", i), seg, arity)
         if found:
             return found
-    clash = sorted(set(objects.values()) & (set(arity) | set(HAND_PREDICATES)))
+    found, hand = _vocabulary_defect(doc.get("vocabulary"), objects)
+    if found:
+        return found
+    clash = sorted(set(objects.values()) & (set(arity) | hand))
     if clash:
         return ("objects",), f"type '{clash[0]}' is also a predicate; expected distinct names"
     return None
+
+
+def _vocabulary_defect(value, objects: dict) -> tuple[tuple[tuple, str] | None, set[str]]:
+    """(the first defect of a ``vocabulary`` binding, or None; the hand predicates it binds)."""
+    if value is None:
+        return None, set(HAND_PREDICATES)
+    if not isinstance(value, dict):
+        return (("vocabulary",), f"expected an object with held, free and hands, got {_show(value)}"), set()
+    for key in ("held", "free"):
+        name = value.get(key)
+        why = None if name is None else "a string" if not isinstance(name, str) else pddl_name_defect(name)
+        if why:
+            return (("vocabulary", key), f"expected a predicate name or null, {why}, got {_show(name)}"), set()
+    hands = value.get("hands") or {}
+    if not isinstance(hands, dict) or any(h not in ("left", "right") or a not in objects for h, a in hands.items()):
+        return (("vocabulary", "hands"), "expected {\"left\"|\"right\": an object of the document}, got "
+                f"{_show(hands)}"), set()
+    return None, {p for p in (value.get("held"), value.get("free")) if p}
 
 
 def _show(value) -> str:

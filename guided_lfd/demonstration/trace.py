@@ -31,8 +31,11 @@ Fluents are written ``pred(Arg,...)``: ``inside(A,B)``, ``on_top(A,B)``,
 ``clear(X)``, ``open(X)``, ``graspable(X)``, ``blocking(C,F)``, ...
 Predicates and types end up in a learned PDDL domain, so they are PDDL names
 (an ASCII letter, then letters, digits, ``-``, ``_``; no keyword, and no type
-named like a predicate); ``in_hand`` and ``hand_free`` come from the trace,
-never from this file.  A fluent has one value at a time and one arity, and
+named like a predicate).  The hand's facts come from the trace, never from
+this file: ``in_hand`` and ``hand_free`` unless rows
+``vocabulary(held=holding)``, ``vocabulary(free=hand-empty)`` (and, for
+arms that are objects, ``vocabulary(right=rarm)``) or ``vocabulary(none)``
+name the robot's own (see :mod:`guided_lfd.demonstration.vocabulary`).  A fluent has one value at a time and one arity, and
 every change falls within the trace's frames (up to :data:`EFFECT_DELAY_S`
 after the last one): no hand can have caused it otherwise.
 """
@@ -50,6 +53,7 @@ import pandas as pd
 from guided_lfd.errors import Location, TraceError
 from guided_lfd.pddl.model import PDDL_NAME, PDDL_RESERVED, Atom, pddl_name_defect
 from guided_lfd.pddl.source import read_text
+from guided_lfd.demonstration.vocabulary import HandVocabulary, parse_vocabulary_row, vocabulary_of
 
 TRACE_COLUMNS = ("time", "hand", "x", "y", "z", "grip", "in_hand", "act_on")
 STATE_COLUMNS = ("time", "fluent", "value")
@@ -79,6 +83,7 @@ class Demonstration:
     events: list[tuple[float, Atom, bool]] = field(default_factory=list)
     spellings: dict[str, str] = field(default_factory=dict)
     path: str = "<trace>"
+    vocabulary: HandVocabulary | None = None  # declared by the state file's vocabulary rows, if any
 
     def state_at(self, t: float) -> frozenset[Atom]:
         """The true fluents at time ``t`` (changes at exactly ``t`` included)."""
@@ -158,9 +163,9 @@ def parse_fluent(text: str) -> Atom:
     return Atom(match.group(1).lower(), args)
 
 
-def load_state(path: str, span: tuple[float, float] | None = None,
-               ) -> tuple[dict[str, str], frozenset[Atom], list[tuple[float, Atom, bool]], dict[str, str]]:
-    """Objects, initial fluents, later changes and spellings from a state CSV.
+def load_state(path: str, span: tuple[float, float] | None = None) -> tuple[
+        dict[str, str], frozenset[Atom], list[tuple[float, Atom, bool]], dict[str, str], HandVocabulary | None]:
+    """Objects, initial fluents, later changes, spellings and the declared hand vocabulary from a state CSV.
 
     With ``span`` (the trace's first and last frame times), a change must fall
     within it (up to :data:`EFFECT_DELAY_S` after the last frame): no hand can
@@ -168,11 +173,24 @@ def load_state(path: str, span: tuple[float, float] | None = None,
     """
     frame = _csv(read_text(path, "an environment state CSV (time,fluent,value)"), path, STATE_COLUMNS)
     times = _times(frame, path)
-    objects, spellings, type_row, rows = _state_rows(frame, times, path)
+    objects, spellings, type_row, rows, declared = _state_rows(frame, times, path)
     if not objects:
         raise TraceError("no object(Name,type) rows: the scene's objects must be declared", Location(path, 1))
+    vocabulary = vocabulary_of([v for _, v in declared], f"the vocabulary rows of {path}") if declared else None
+    hand = vocabulary.predicates if vocabulary is not None else frozenset(HAND_PREDICATES)
+    for i, _, atom, _ in rows:
+        if atom.predicate in hand:
+            raise TraceError(f"column 'fluent': {atom.predicate} is the hand's state, read from the trace's "
+                             "in_hand column; expected an environment fluent", _where(path, frame, i, "fluent"))
+    for i, (key, value) in declared:
+        if value is not None and key in ("held", "free") and pddl_name_defect(value):
+            raise TraceError(f"column 'fluent': vocabulary {key}={value}: expected {pddl_name_defect(value)}",
+                             _where(path, frame, i, "fluent"))
+        if value is not None and key in ("left", "right") and value not in objects:
+            raise TraceError(f"column 'fluent': vocabulary {key}={value}: object '{value}' is never declared "
+                             f"(add an object({value},type) row)", _where(path, frame, i, "fluent"))
     arity = _check_fluents(frame, path, objects, rows)
-    clash = sorted(set(objects.values()) & (set(arity) | set(HAND_PREDICATES)))
+    clash = sorted(set(objects.values()) & (set(arity) | set(hand)))
     if clash:
         raise TraceError(f"column 'fluent': type '{clash[0]}' is also a predicate; expected distinct names",
                          _where(path, frame, type_row[clash[0]], "fluent"))
@@ -181,19 +199,30 @@ def load_state(path: str, span: tuple[float, float] | None = None,
         _check_span(frame, path, rows, start, span)
     initial = frozenset(a for _, t, a, v in rows if t == start and v)
     events = sorted(((t, a, v) for _, t, a, v in rows if t > start), key=lambda e: e[0])
-    return objects, initial, events, spellings
+    return objects, initial, events, spellings, vocabulary
 
 
-def _state_rows(frame: pd.DataFrame, times: np.ndarray, path: str,
-                ) -> tuple[dict[str, str], dict[str, str], dict[str, int], list[tuple[int, float, Atom, bool]]]:
+def _state_rows(frame: pd.DataFrame, times: np.ndarray, path: str) -> tuple[
+        dict[str, str], dict[str, str], dict[str, int], list[tuple[int, float, Atom, bool]],
+        list[tuple[int, tuple[str, str | None]]]]:
     """Read every row of a state CSV: the declared objects, their spellings, the first row declaring each type,
-    and the fluent rows as (row, time, atom, value); TraceError on a row that is not one of those."""
+    the fluent rows as (row, time, atom, value) and the vocabulary rows as (row, (key, value)); TraceError on a
+    row that is not one of those."""
     objects: dict[str, str] = {}
     spellings: dict[str, str] = {}
     type_row: dict[str, int] = {}  # the first row declaring an object of each type
     rows: list[tuple[int, float, Atom, bool]] = []
+    declared: list[tuple[int, tuple[str, str | None]]] = []
     for i, (t, text, value) in enumerate(zip(times, frame["fluent"], frame["value"])):
         raw = text.strip()
+        if raw.lower().startswith("vocabulary(") and raw.endswith(")"):
+            try:
+                declared.append((i, parse_vocabulary_row(raw[len("vocabulary("):-1])))
+            except ValueError:
+                raise TraceError("column 'fluent': expected vocabulary(held=PREDICATE), vocabulary(free=PREDICATE), "
+                                 f"vocabulary(left=OBJECT), vocabulary(right=OBJECT) or vocabulary(none), got '{raw}'",
+                                 _where(path, frame, i, "fluent")) from None
+            continue
         try:
             atom = parse_fluent(raw)
         except ValueError:
@@ -209,11 +238,8 @@ def _state_rows(frame: pd.DataFrame, times: np.ndarray, path: str,
         if why:
             raise TraceError(f"column 'fluent': predicate '{atom.predicate}': expected {why}",
                              _where(path, frame, i, "fluent"))
-        if atom.predicate in HAND_PREDICATES:
-            raise TraceError(f"column 'fluent': {atom.predicate} is the hand's state, read from the trace's "
-                             "in_hand column; expected an environment fluent", _where(path, frame, i, "fluent"))
         rows.append((i, float(t), atom, flag in _TRUE))
-    return objects, spellings, type_row, rows
+    return objects, spellings, type_row, rows, declared
 
 
 def _declare_object(frame: pd.DataFrame, path: str, i: int, raw: str, atom: Atom, objects: dict[str, str],
@@ -274,7 +300,7 @@ def load_demonstration(trace_path: str, state_path: str | None = None) -> Demons
     frame = _csv(read_text(trace_path, "a hand trace CSV (time,hand,x,y,z,grip,in_hand,act_on)"),
                  trace_path, TRACE_COLUMNS)
     times = _times(frame, trace_path)
-    objects, initial, events, spellings = load_state(state_path, (float(times.min()), float(times.max())))
+    objects, initial, events, spellings, vocabulary = load_state(state_path, (float(times.min()), float(times.max())))
     for axis in ("x", "y", "z"):
         frame[axis] = _numbers(frame, trace_path, axis)
     frame["time"] = times
@@ -312,7 +338,7 @@ def load_demonstration(trace_path: str, state_path: str | None = None) -> Demons
                                  f"({times[idx[back[0]]]:g} s, then {times[row]:g} s)",
                                  _where(trace_path, frame, row, "time"))
     frame["hand_move"] = hand_move(frame)
-    return Demonstration(frame, objects, initial, events, spellings, trace_path)
+    return Demonstration(frame, objects, initial, events, spellings, trace_path, vocabulary)
 
 
 def hand_move(frame: pd.DataFrame) -> np.ndarray:
