@@ -400,6 +400,7 @@ def teach(robot: Domain, problem: Problem, demonstrator: Demonstrator, out: Path
     if human is not None:
         options = replace(options, fixed_from=human, all_minimal=options.all_minimal or prefer)
     state, current, rounds = problem.init, robot, []
+    history: list[tuple[str, dict]] = []  # every round's demonstration: skills are learned from all of them
     status, final_plan, error, reason = "max-rounds", None, None, None
     try:
         for k in range(1, max_rounds + 1):
@@ -426,7 +427,7 @@ def teach(robot: Domain, problem: Problem, demonstrator: Demonstrator, out: Path
                 if given is None:
                     status, reason = _no_demonstration(demonstrator, state, rnd, task, report)
                     break
-                current, state = _learn_round(rnd, folder, out, current, task, given, human)
+                current, state = _learn_round(rnd, folder, out, current, task, given, human, robot, history)
             except SearchTimeout:
                 raise
             except GuidedLfdError as exc:  # the demonstration's fault: the session so far stays
@@ -596,10 +597,15 @@ def _could_make(act, change: Change, objects: dict[str, str], subtypes: dict[str
 
 
 def _learn_round(rnd: Round, folder: Path, out: Path, robot: Domain, task: Problem,
-                 given: tuple[Path, Path], human: Domain | None = None) -> tuple[Domain, frozenset[Atom]]:
+                 given: tuple[Path, Path], human: Domain | None = None, original: Domain | None = None,
+                 history: list[tuple[str, dict]] | None = None) -> tuple[Domain, frozenset[Atom]]:
     """Segment the demonstration, learn its skills (in the robot's hand facts, named after the ``human``
     model's actions), merge them into the robot; (new domain, state it left).  A skill that could never run
-    beside the robot's is a MismatchError."""
+    beside the robot's is a MismatchError.
+
+    With the ``original`` robot and the ``history`` of earlier rounds' demonstrations, the skills are learned
+    from all of them and merged into the original: a skill shown again from another situation (unstacking off
+    a block, not the table) is generalised, not learned twice."""
     from guided_lfd.demonstration.learn import check_usable, document_vocabulary, ground_actions, learn_domain
     from guided_lfd.demonstration.segment import segment, segments_document
     from guided_lfd.demonstration.trace import load_demonstration
@@ -618,13 +624,16 @@ def _learn_round(rnd: Round, folder: Path, out: Path, robot: Domain, task: Probl
     demonstrated = ground_actions(doc, str(trace), vocabulary=vocabulary)
     rnd.demonstration_length = len(demonstrated)
     rnd.new_actions = usefulness(demonstrated, robot, doc.get("objects", {})).useful
-    learned = learn_domain([(str(trace), doc)], name=f"learned-round-{rnd.index}", context=robot, human=human,
-                           skip_known=True)
+    base = original if original is not None else robot
+    documents = [*(history or []), (str(trace), doc)]
+    learned = learn_domain(documents, name=f"learned-round-{rnd.index}", context=base, human=human, skip_known=True)
     write_text(folder / "learned.pddl", domain_to_pddl(learned, header=f"Learned from {trace}"))
-    merged = merge_domains([robot, learned], name=robot.name).domain
-    known = {a.name for a in robot.actions}
-    rnd.learned_actions = [a.name for a in merged.actions if a.name not in known]
-    check_usable(merged, robot, set(rnd.learned_actions), str(trace))
+    merged = merge_domains([base, learned], name=robot.name).domain
+    # New skills, and skills this demonstration generalised (the same name, another body).
+    known = {a.name: (a.params, a.precondition, a.add, a.delete) for a in robot.actions}
+    rnd.learned_actions = [a.name for a in merged.actions
+                           if known.get(a.name) != (a.params, a.precondition, a.add, a.delete)]
+    check_usable(merged, base, {a.name for a in merged.actions} - {a.name for a in base.actions}, str(trace))
     write_text(folder / "robot.pddl", domain_to_pddl(merged, header=f"The robot's domain after round {rnd.index}"))
     write_text(out / "robot.pddl", domain_to_pddl(merged, header=f"The robot's domain after round {rnd.index}"))
     rnd.files.update(trace=str(trace), state=str(states), segments=str(folder / "segments.json"),
@@ -633,6 +642,8 @@ def _learn_round(rnd: Round, folder: Path, out: Path, robot: Domain, task: Probl
     state = _state_after(demo, task, merged, vocabulary)
     rnd.unmet = [c for c in rnd.request if (c.atom in state) != c.added]
     rnd.request_met = not rnd.unmet
+    if history is not None:
+        history.append((str(trace), doc))
     return merged, state
 
 

@@ -105,6 +105,28 @@ def learning_quality(learned: Domain, reference: Domain) -> dict[str, float | li
             "eff_precision": ratio(etp, etp + efp), "eff_recall": ratio(etp, etp + efn), "matched": matched}
 
 
+def skill_quality(learned: list[ActionSchema], reference: Domain) -> dict[str, float]:
+    """Pooled precision and recall of ``learned`` skills against ``reference``'s actions: each skill against the
+    action of its name (skills named after a human model's action), else the best-matching one; a skill no
+    action matches counts its effects as wrong."""
+    totals = [0] * 6
+    for action in learned:
+        same = [a for a in reference.actions if a.name == action.name]
+        scores = [s for s in (compare_actions(action, ref) for ref in same or reference.actions) if s is not None]
+        if not scores:
+            totals[4] += len(action.add) + len(action.delete)
+            continue
+        best = max(scores, key=lambda s: (s[3] - s[4] - s[5], s[0] - s[1] - s[2]))
+        totals = [a + b for a, b in zip(totals, best)]
+    tp, fp, fn, etp, efp, efn = totals
+
+    def ratio(a: int, b: int) -> float:
+        return round(a / b, 3) if b else 1.0
+
+    return {"pre_precision": ratio(tp, tp + fp), "pre_recall": ratio(tp, tp + fn),
+            "eff_precision": ratio(etp, etp + efp), "eff_recall": ratio(etp, etp + efn)}
+
+
 @dataclass
 class QualityReport:
     """Segmentation of every shipped demonstration and learning per kitchen."""

@@ -111,7 +111,12 @@ def render(steps: list[Step], scene: Scene, initial: set[Atom], rate_hz: float =
     rng = np.random.default_rng(noise.seed)
     dt = 1.0 / rate_hz
     hand_pos = {h: np.array(p, dtype=float) for h, p in scene.rest.items()}
+    # What each hand holds as the demonstration starts (the last round may have ended holding something).
+    binding = vocabulary or KITCHEN
     held: dict[str, str] = {"right": "", "left": ""}
+    for atom in sorted(initial):
+        if binding.held_object(atom) is not None:
+            held[binding.hand_of(atom)] = binding.held_object(atom) or ""
     # Per hand, frame index -> (pos, grip, in_hand, act_on, label).
     tracks: dict[str, dict[int, tuple]] = {"right": {}, "left": {}}
     events: list[tuple[float, Atom, bool]] = []
