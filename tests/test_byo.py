@@ -125,3 +125,15 @@ def test_rendering_the_demonstrations_again_gives_the_committed_files(tmp_path):
         assert trace.read_bytes() == committed.read_bytes()
         state = trace.with_name(trace.stem + ".state.csv")
         assert state.read_bytes() == committed.with_name(state.name).read_bytes()
+
+
+def test_a_fact_a_skill_changes_is_no_static_relation_though_the_demonstration_never_changes_it(runner, app, tmp_path):
+    """The breaker feeding the switch is up throughout the demonstration; the human model resets breakers, so
+    whether it is up is a condition of turning the switch on (it used to be taken for the world's structure)."""
+    folder = BYO / "switches"
+    result = runner.invoke(app, ["teach", str(folder / "robot.pddl"), str(folder / "problem-breaker-up.pddl"),
+                                 "--simulate", str(folder / "human.pddl"), "-o", str(tmp_path), "--quiet"])
+    assert result.exit_code == 0, result.output
+    taught = parse_domain(str(tmp_path / "robot.pddl"))
+    human = parse_domain(str(folder / "human.pddl"))
+    assert set(taught.action("turn-on").precondition) == set(human.action("turn-on").precondition)

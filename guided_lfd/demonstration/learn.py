@@ -240,7 +240,10 @@ def learn_domain(documents: list[tuple[str, dict]], prior: Domain | None = None,
     robot = prior if prior is not None else context
     vocabularies = {source: document_vocabulary(doc, robot, human, source=source) for source, doc in documents}
     known = robot if skip_known else None
-    types, lifted, spans = _lifted_demonstrations(documents, vocabularies, known)
+    # What an action of the robot or the human changes is no static relation, even where the demonstrations
+    # never change it (the breaker that feeds a switch was up throughout: whether it is up still matters).
+    dynamic = set().union(*(d.fluent_predicates() for d in (robot, human) if d is not None))
+    types, lifted, spans = _lifted_demonstrations(documents, vocabularies, known, dynamic)
     notes: list[str] = []
     learned = generalise(lifted, prior.types if prior is not None else None, notes, spans)
     if human is not None:
@@ -290,16 +293,18 @@ def _simplified(documents: list[tuple[str, dict]], learned: list[ActionSchema], 
 
 
 def _lifted_demonstrations(documents: list[tuple[str, dict]], vocabularies: dict[str, HandVocabulary] | None = None,
-                           known: Domain | None = None) -> tuple[dict[str, str], list[ActionSchema], dict[str, str]]:
+                           known: Domain | None = None, dynamic: set[str] | None = None,
+                           ) -> tuple[dict[str, str], list[ActionSchema], dict[str, str]]:
     """Every object's type, every demonstrated action lifted and the time span of each (by origin);
-    a predicate used with two arities is an error.  Steps an action of ``known`` makes are left out."""
+    a predicate used with two arities is an error.  Steps an action of ``known`` makes are left out;
+    predicates in ``dynamic`` (changed by some action of the domains at hand) are never static."""
     from guided_lfd.evaluate import known_skill
 
     vocabularies = vocabularies or {}
     types: dict[str, str] = {}
     lifted: list[ActionSchema] = []
     spans: dict[str, str] = {}
-    static = static_predicates(documents, vocabularies)
+    static = static_predicates(documents, vocabularies) - (dynamic or set())
     arity: dict[str, tuple[int, str]] = {}
     for source, doc in documents:
         for fluents in [doc.get("initial", [])] + [s[k] for s in doc.get("segments", []) for k in ("before", "after")]:
