@@ -139,7 +139,7 @@ def teach(
     _check_session(session, [robot, problem, simulate, human_model, *(str(d) for d in demo or [])])
     robot_domain, task = parse_task(robot, problem)
     ui.reading_warnings(robot_domain)
-    human = SimulatedHuman(parse_domain(simulate)) if simulate else None
+    human = SimulatedHuman(parse_domain(simulate), robot=robot_domain) if simulate else None
     model = parse_domain(human_model) if human_model else human.human if human else None
     if slack and not prefer:
         raise errors.OptionError(f"--slack {slack}: needs --prefer demonstration")

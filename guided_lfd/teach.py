@@ -292,6 +292,7 @@ class SimulatedHuman:
     human: Domain
     rate_hz: float = 90.0
     seed: int = 0
+    robot: Domain | None = None  # whose hand facts the trace declares (else the human model's)
 
     def demonstrate(self, folder: Path, state: frozenset[Atom], request: list[Change],
                     problem: Problem) -> tuple[Path, Path] | None:
@@ -302,9 +303,11 @@ class SimulatedHuman:
         plan = optimal_plan(self.human, replace(problem, init=state), goal=excuse_goal(request))
         if not plan:
             return None
-        # The trace's state file declares the world's hand facts (none for a world without a hand).
+        _check_drawable([], None, plan, self.human)
+        # The trace's state file declares the world's hand facts (none for a world without a hand): the robot's
+        # where its grasping actions show them, else the human model's.
         try:
-            vocabulary = plan_vocabulary(self.human, {**self.human.constants, **problem.objects})
+            vocabulary = plan_vocabulary(self.human, {**self.human.constants, **problem.objects}, self.robot)
         except ValueError as exc:
             from guided_lfd.errors import UnsupportedFeatureError
 
@@ -339,6 +342,10 @@ def _check_drawable(script, scene, plan: list[PlanStep], human: Domain) -> None:
 
     odd = undrawable_actions([(step.action, step.args) for step in plan], human)
     missing = [s.obj for s in script if s.activity not in ("Idle", "Release") and s.obj not in scene.positions]
+    if odd:
+        raise UnsupportedFeatureError(
+            f"--simulate draws every action as the hand working on its objects: the human's plan uses "
+            f"{', '.join(sorted(odd))}, which has none (give --demo traces)", human.locate(sorted(odd)[0], ":action"))
     if odd or missing:
         actions = sorted(odd) or sorted({s.action for s in plan})
         raise UnsupportedFeatureError(
@@ -606,7 +613,8 @@ def _learn_round(rnd: Round, folder: Path, out: Path, robot: Domain, task: Probl
     With the ``original`` robot and the ``history`` of earlier rounds' demonstrations, the skills are learned
     from all of them and merged into the original: a skill shown again from another situation (unstacking off
     a block, not the table) is generalised, not learned twice."""
-    from guided_lfd.demonstration.learn import check_usable, document_vocabulary, ground_actions, learn_domain
+    from guided_lfd.demonstration.learn import (check_usable, document_vocabulary, ground_actions, learn_domain,
+                                                robot_declarations)
     from guided_lfd.demonstration.segment import segment, segments_document
     from guided_lfd.demonstration.trace import load_demonstration
     from guided_lfd.merge import merge_domains
@@ -617,16 +625,20 @@ def _learn_round(rnd: Round, folder: Path, out: Path, robot: Domain, task: Probl
     doc = segments_document(demo, acting, str(states))
     doc["trace"] = str(trace)
     write_text(folder / "segments.json", json_document("segments", doc))
+    rnd.files.update(trace=str(trace), state=str(states), segments=str(folder / "segments.json"))
     from guided_lfd.evaluate import usefulness
 
-    vocabulary = document_vocabulary(doc, robot, human, source=str(trace))
+    _check_start(demo, task, trace)  # a demonstration of another world is refused before anything is learned
+    base = original if original is not None else robot
+    vocabulary = document_vocabulary(doc, base, human, source=str(trace))
     rnd.vocabulary = f"{vocabulary.describe()} (from {vocabulary.origin})"
     demonstrated = ground_actions(doc, str(trace), vocabulary=vocabulary)
     rnd.demonstration_length = len(demonstrated)
     rnd.new_actions = usefulness(demonstrated, robot, doc.get("objects", {})).useful
-    base = original if original is not None else robot
     documents = [*(history or []), (str(trace), doc)]
     learned = learn_domain(documents, name=f"learned-round-{rnd.index}", context=base, human=human, skip_known=True)
+    # The robot's declaration of a predicate stands: merging a learned one would widen its argument types.
+    learned = replace(learned, predicates=robot_declarations(learned.predicates, base))
     write_text(folder / "learned.pddl", domain_to_pddl(learned, header=f"Learned from {trace}"))
     merged = merge_domains([base, learned], name=robot.name).domain
     # New skills, and skills this demonstration generalised (the same name, another body).
@@ -636,9 +648,7 @@ def _learn_round(rnd: Round, folder: Path, out: Path, robot: Domain, task: Probl
     check_usable(merged, base, {a.name for a in merged.actions} - {a.name for a in base.actions}, str(trace))
     write_text(folder / "robot.pddl", domain_to_pddl(merged, header=f"The robot's domain after round {rnd.index}"))
     write_text(out / "robot.pddl", domain_to_pddl(merged, header=f"The robot's domain after round {rnd.index}"))
-    rnd.files.update(trace=str(trace), state=str(states), segments=str(folder / "segments.json"),
-                     learned=str(folder / "learned.pddl"), robot=str(folder / "robot.pddl"))
-    _check_start(demo, task, trace)
+    rnd.files.update(learned=str(folder / "learned.pddl"), robot=str(folder / "robot.pddl"))
     state = _state_after(demo, task, merged, vocabulary)
     rnd.unmet = [c for c in rnd.request if (c.atom in state) != c.added]
     rnd.request_met = not rnd.unmet

@@ -77,7 +77,16 @@ def test_a_state_file_declares_the_vocabulary(tmp_path):
 @pytest.mark.parametrize("rows, message", [
     (["0,vocabulary(held=holding),true\n", "0,holding(B1),true\n"], r"demo.state.csv:4:2: .*holding is the hand's state"),
     (["0,vocabulary(grip=holding),true\n"], r"demo.state.csv:3:2: .*expected vocabulary\(held=PREDICATE\)"),
-    (["0,vocabulary(right=arm9),true\n"], r"demo.state.csv:3:2: .*object 'arm9' is never declared"),
+    (["0,vocabulary(held=grasped),true\n", "0,vocabulary(free=free),true\n", "0,vocabulary(right=arm9),true\n"],
+     r"demo.state.csv:5:2: .*object 'arm9' is never declared"),
+    (["0,vocabulary(held=holding),true\n", "0,vocabulary(held=grabbed),true\n"],
+     r"demo.state.csv:4:2: .*held is bound twice \(holding, then grabbed\)"),
+    (["0,vocabulary(held=holding),true\n", "0,vocabulary(none),true\n"], r"demo.state.csv:4:2: .*vocabulary\(none\) beside"),
+    (["0,vocabulary(held=handempty),true\n", "0,vocabulary(free=handempty),true\n"],
+     r"demo.state.csv:4:2: .*held and free are both handempty"),
+    (["0,vocabulary(right=b1),true\n"], r"demo.state.csv:3:2: .*arms bound without held or free"),
+    (["0,vocabulary(held=holding),maybe\n"], r"demo.state.csv:3:3: .*a vocabulary row is a declaration; expected true"),
+    (["0,clear(B1),true\n", "0.1,vocabulary(none),true\n"], r"demo.state.csv:4:1: .*a vocabulary row at 0.1 s"),
     (["0,in_hand(B1),true\n"], r"in_hand is the hand's state"),  # undeclared: the kitchens' hand facts
 ])
 def test_the_hand_facts_are_never_environment_fluents(tmp_path, rows, message):

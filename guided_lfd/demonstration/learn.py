@@ -60,6 +60,7 @@ class DemonstratedAction:
     source: str
     start: float = 0.0  # the segment's time span in its trace (s)
     end: float = 0.0
+    state: frozenset[Atom] = frozenset()  # the world just before it, the acting hand's facts included
 
 
 def document_vocabulary(document: dict, *domains: Domain | None, source: str = "segments") -> HandVocabulary:
@@ -67,13 +68,35 @@ def document_vocabulary(document: dict, *domains: Domain | None, source: str = "
     ``domains`` that shows them (the robot's, then the human's), else the kitchens' ``in_hand``/``hand_free``.
     A domain whose grasping actions are ambiguous, or arms the trace's hands cannot be tied to, is a TraceError."""
     declared = document.get("vocabulary")
-    if declared is not None:
-        return HandVocabulary.from_dict(declared, f"the vocabulary of {source}")
     try:
         found = infer_vocabulary(*domains)
+    except ValueError as exc:
+        if declared is None:
+            raise TraceError(str(exc), Location(source)) from None
+        found = None  # the demonstration says which
+    if declared is not None:
+        vocabulary = HandVocabulary.from_dict(declared, f"the vocabulary of {source}")
+        _check_declared(vocabulary, found, document.get("objects", {}), source)
+        return vocabulary
+    try:
         return KITCHEN if found is None else bind_arms(found, document.get("objects", {}))
     except ValueError as exc:
         raise TraceError(str(exc), Location(source)) from None
+
+
+def _check_declared(declared: HandVocabulary, found: HandVocabulary | None, objects: dict[str, str],
+                    source: str) -> None:
+    """A declared binding must be the robot's own where its grasping actions show it (``found``): the same
+    predicates, arms of the robot's arm type.  TraceError otherwise."""
+    if found is None:
+        return
+    if (declared.held, declared.free) != (found.held, found.free) or declared.by_arm != found.by_arm:
+        raise TraceError(f"the demonstration declares the hand facts {declared.describe()}, but {found.origin} "
+                         f"use held={found.held}, free={found.free}; expected the robot's own", Location(source))
+    odd = [arm for _, arm in declared.hands if found.arm_type and objects.get(arm) != found.arm_type]
+    if odd:
+        raise TraceError(f"the demonstration declares {odd[0]} ({objects.get(odd[0], 'undeclared')}) an arm, but "
+                         f"the robot's arms are of type {found.arm_type}; expected one of its arms", Location(source))
 
 
 def skill_segments(segments: list[dict]) -> list[dict]:
@@ -147,6 +170,10 @@ def ground_actions(document: dict, source: str = "segments", static: set[str] | 
         # The hand's fluents come from the trace, never from the environment state.
         before = {a for a in (_atom(x, source) for x in seg["before"]) if a.predicate not in hand}
         after = {a for a in (_atom(x, source) for x in seg["after"]) if a.predicate not in hand}
+        if vocabulary.by_arm and vocabulary.arm(seg["hand"]) is None and (seg.get("held_before") or seg.get("held_after")):
+            raise TraceError(f"segment {seg['index']}: the {seg['hand']} hand holds {seg.get('held_before') or seg.get('held_after')}, "
+                             f"but the vocabulary names no arm for it (only {vocabulary.describe()}); expected a "
+                             f"vocabulary({seg['hand']}=ARM) row", Location(source))
         hand_before = vocabulary.fluents(seg["hand"], seg.get("held_before", ""))
         hand_after = vocabulary.fluents(seg["hand"], seg.get("held_after", ""))
         roles = [o for o in (seg.get("object", ""), seg.get("target", "")) if o]
@@ -180,8 +207,55 @@ def ground_actions(document: dict, source: str = "segments", static: set[str] | 
         name = "_".join([seg["activity"].lower(), *(types.get(o, "object") for o in roles)])
         out.append(DemonstratedAction(name, objects, frozenset(pre), frozenset(add), frozenset(delete),
                                       f"{source} segment {seg['index']} ({seg['activity']} {' '.join(roles)})",
-                                      float(seg.get("start", 0.0)), float(seg.get("end", 0.0))))
+                                      float(seg.get("start", 0.0)), float(seg.get("end", 0.0)),
+                                      frozenset(before | hand_before)))
     return out
+
+
+#: Bindings of an action's precondition-only parameters tried at most when checking that it could run.
+MAX_BINDINGS = 10_000
+
+
+def robot_could(step: DemonstratedAction, robot: Domain, types: dict[str, str]) -> bool:
+    """Whether an action of ``robot`` makes exactly ``step``'s changes and could have run where the step did
+    (its precondition holds in ``step.state`` for some binding).  A step the robot makes only under a
+    stronger precondition (opening the box with a full hand) teaches it something."""
+    import itertools
+
+    subtypes = robot.subtypes()
+    objects = sorted(types)
+    changed = sorted({o for a in (*step.add, *step.delete) for o in a.args})
+
+    def admits(var_type: str, obj: str) -> bool:
+        return types.get(obj, "object") in subtypes.get(var_type, {var_type})
+
+    for schema in robot.actions:
+        if len(schema.add) != len(step.add) or len(schema.delete) != len(step.delete):
+            continue
+        ptype = dict(schema.params)
+        in_effects = [v for v, _ in schema.params if any(v in a.args for a in (*schema.add, *schema.delete))]
+        rest = [v for v, _ in schema.params if v not in in_effects]
+        for combo in itertools.product(changed, repeat=len(in_effects)):
+            if not all(admits(ptype[v], o) for v, o in zip(in_effects, combo)):
+                continue
+            binding = dict(zip(in_effects, combo))
+            if ({a.substitute(binding) for a in schema.add} != set(step.add)
+                    or {a.substitute(binding) for a in schema.delete} != set(step.delete)):
+                continue
+            options = [[o for o in objects if admits(ptype[v], o)] for v in rest]
+            for k, others in enumerate(itertools.product(*options)):
+                if k >= MAX_BINDINGS:
+                    break
+                full = {**binding, **dict(zip(rest, others))}
+                if all(_holds(lit.substitute(full), step.state) for lit in schema.precondition):
+                    return True
+    return False
+
+
+def _holds(literal: Literal, state: frozenset[Atom]) -> bool:
+    if literal.atom.predicate == "=":
+        return (literal.atom.args[0] == literal.atom.args[1]) == literal.positive
+    return (literal.atom in state) == literal.positive
 
 
 def _other_hand_acting(seg: dict, skills: list[dict]) -> bool:
@@ -252,6 +326,8 @@ def learn_domain(documents: list[tuple[str, dict]], prior: Domain | None = None,
         learned = name_after(learned, human)
     grasped = {v.held for v in vocabularies.values() if v.held} or {"in_hand"}
     predicates = _predicates_of(learned)
+    if prior is not None:  # the prior's own declaration of a predicate stands (a learned one would widen it)
+        predicates = robot_declarations(predicates, prior)
     type_decl: dict[str, str | None] = {"object": None}
     for t in sorted(set(types.values())):
         type_decl[t] = "object"
@@ -298,8 +374,6 @@ def _lifted_demonstrations(documents: list[tuple[str, dict]], vocabularies: dict
     """Every object's type, every demonstrated action lifted and the time span of each (by origin);
     a predicate used with two arities is an error.  Steps an action of ``known`` makes are left out;
     predicates in ``dynamic`` (changed by some action of the domains at hand) are never static."""
-    from guided_lfd.evaluate import known_skill
-
     vocabularies = vocabularies or {}
     types: dict[str, str] = {}
     lifted: list[ActionSchema] = []
@@ -315,11 +389,18 @@ def _lifted_demonstrations(documents: list[tuple[str, dict]], vocabularies: dict
                                      "expected the same number", Location(source))
         types.update(doc.get("objects", {}))
         for action in ground_actions(doc, source, static, vocabularies.get(source)):
-            if known is not None and known_skill(action, known, doc.get("objects", {})) is not None:
-                continue  # the robot's own skill: nothing to learn
+            if known is not None and robot_could(action, known, doc.get("objects", {})):
+                continue  # the robot's own skill, which it could have run there: nothing to learn
             lifted.append(lift(action, doc.get("objects", {})))
             spans[action.source] = f", {action.start:.2f}-{action.end:.2f} s"
     return types, lifted, spans
+
+
+def robot_declarations(predicates: dict[str, Predicate], robot: Domain) -> dict[str, Predicate]:
+    """``predicates`` with the robot's own declaration where it has one of the same arity (a learned one would
+    widen its argument types in a merge; another arity is left for the merge to refuse)."""
+    return {name: robot.predicates[name] if name in robot.predicates
+            and len(robot.predicates[name].params) == len(p.params) else p for name, p in predicates.items()}
 
 
 def _predicates_of(actions: list[ActionSchema]) -> dict[str, Predicate]:
@@ -412,4 +493,5 @@ def check_usable(merged: Domain, robot: Domain, learned: set[str], where: str) -
                          if l.positive and l.atom.predicate != "=" and l.atom.predicate not in usable)
         raise MismatchError(f"learned skill {action.name} needs ({missing[0]} ...), a predicate {robot.path} "
                             "never makes true: the skill could never run (expected demonstrations in the robot's "
-                            "vocabulary; declare the hand facts with vocabulary(held=...) rows)", Location(where))
+                            "vocabulary; declare the hand facts with vocabulary(held=...) rows, or "
+                            "vocabulary(none) for a world without them)", Location(where))

@@ -18,11 +18,13 @@ __all__ = ["name_after", "human_counterpart"]
 
 
 def human_counterpart(skill: ActionSchema, human: Domain) -> tuple[ActionSchema, dict[str, str]] | None:
-    """The first human action whose effects ``skill``'s are under a renaming its types admit, with the renaming
-    (skill variable -> human variable); None when no action matches."""
+    """The human action whose effects ``skill``'s are under a renaming its types admit, with the renaming
+    (skill variable -> human variable); among several (kicking a door open, unlocking it), the one whose
+    precondition agrees best with the skill's; None when no action matches."""
     subtypes = human.subtypes()
     types = dict(skill.params)
-    for action in human.actions:
+    found: list[tuple[int, int, ActionSchema, dict[str, str]]] = []
+    for k, action in enumerate(human.actions):
         if _shape(action) != _shape(skill):
             continue
         mapping = aligned(action, skill)
@@ -31,8 +33,13 @@ def human_counterpart(skill: ActionSchema, human: Domain) -> tuple[ActionSchema,
         theirs = dict(action.params)
         if all(types[v] in subtypes.get(theirs[h], {theirs[h]}) or theirs[h] in subtypes.get(types[v], {types[v]})
                for v, h in mapping.items() if h in theirs):
-            return action, mapping
-    return None
+            mine = {l.substitute(mapping) for l in skill.precondition}
+            agree = len(mine & set(action.precondition)) - len(set(action.precondition) - mine)
+            found.append((agree, -k, action, mapping))
+    if not found:
+        return None
+    _, _, action, mapping = max(found, key=lambda f: (f[0], f[1]))
+    return action, mapping
 
 
 def name_after(skills: list[ActionSchema], human: Domain) -> list[ActionSchema]:

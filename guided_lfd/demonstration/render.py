@@ -285,15 +285,43 @@ def undrawable_actions(plan: list[tuple[str, tuple[str, ...]]], domain) -> set[s
     return {name for name, args in plan if not args}
 
 
-def plan_vocabulary(domain, objects: dict[str, str] | None = None) -> HandVocabulary:
-    """The hand facts of ``domain`` as its grasping actions show them (no hand facts when none does), the arms
-    tied to the trace's hands by ``objects``' names where the facts take the arm."""
+def plan_vocabulary(domain, objects: dict[str, str] | None = None, robot=None) -> HandVocabulary:
+    """The hand facts a simulated demonstration of ``domain``'s plans declares: ``robot``'s where its grasping
+    actions show them, else ``domain``'s (no hand facts when neither shows any); arms tied to the trace's
+    hands by ``objects``' names, or in name order where the names do not tell (the simulated demonstrator
+    uses whichever hand it is told).  ValueError when the hand facts are ambiguous or the arms more than two."""
     from guided_lfd.demonstration.vocabulary import NO_HAND, bind_arms
 
-    found = infer_vocabulary(domain)
+    found = None
+    if robot is not None:
+        try:
+            found = infer_vocabulary(robot)
+        except ValueError:
+            found = None  # the human model's may still tell
+    found = found or infer_vocabulary(domain)
     if found is None:
         return NO_HAND
-    return bind_arms(found, objects or {}) if found.by_arm else found
+    return bind_arms(found, objects or {}, choose=True) if found.by_arm else found
+
+
+def _work_on(args: tuple[str, ...], env: list[tuple[Atom, bool]], held: str, hand: str,
+             vocabulary: HandVocabulary, pause: float) -> list[Step]:
+    """The steps of an action that neither takes nor puts down: the hand works on the first of ``args`` (not an
+    arm, not what it holds) that the changes ``env`` are about.  Holding ``held`` (a tool, a carried cup), it
+    brings that to the object and keeps it (opening a box with a cup in hand does not put the cup down); free,
+    it pushes the object (the chair pushed away) or, no change being about it, operates it."""
+    about = {x for a, _ in env for x in a.args}
+    arm_objects = set(dict(vocabulary.hands).values())
+    candidates = [x for x in args if x not in arm_objects and x != held] or list(args)
+    moved = next((x for x in candidates if x in about), candidates[0])
+    if held:
+        return [Step("Put", held, moved, duration=1.2, changes=env, hand=hand), Step("Idle", duration=pause, hand=hand)]
+    if moved in about:
+        target = next((a.args[-1] for a, value in env if value and moved in a.args), "")
+        return [Step("Reach", moved, duration=1.0, hand=hand),
+                Step("Push", moved, target, duration=1.4, changes=env, hand=hand), Step("Release", duration=0.6, hand=hand)]
+    return [Step("Reach", moved, duration=1.0, hand=hand), Step("Operate", moved, duration=0.8, changes=env, hand=hand),
+            Step("Release", duration=0.6, hand=hand)]
 
 
 def script_for_plan(plan: list[tuple[str, tuple[str, ...]]], domain, state: set[Atom],
@@ -331,9 +359,11 @@ def script_for_plan(plan: list[tuple[str, tuple[str, ...]]], domain, state: set[
         env += [(a, False) for a in sorted(dels & current) if a.predicate not in hand_predicates]
         taken = sorted(a for a in adds if vocabulary.held_object(a) is not None)
         given = sorted(a for a in dels if vocabulary.held_object(a) is not None)
-        opened = [a for a, _ in env if a.predicate == "open"]
+        opened = [a for a, _ in env if a.predicate == "open" and a.args]
         arms = [vocabulary.hand_of(Atom("_", (x,))) for x in args if x in dict(vocabulary.hands).values()]
         hand = arms[0] if arms else "right"
+        if not args and not taken and not given:
+            continue  # nothing for the hand to act on (undrawable_actions names it)
         if taken:
             obj, hand = vocabulary.held_object(taken[0]) or "", vocabulary.hand_of(taken[0])
             steps += [Step("Reach", obj, duration=1.0, hand=hand),
@@ -345,30 +375,16 @@ def script_for_plan(plan: list[tuple[str, tuple[str, ...]]], domain, state: set[
             steps += [Step("Put", obj, target, duration=1.2, hand=hand),
                       Step("Release", duration=0.6, changes=env, hand=hand)]
             held[hand] = ""
+        elif held[hand] and args:
+            steps += _work_on(args, env, held[hand], hand, vocabulary, pause)
         elif opened:
             obj = opened[0].args[0]
             kind = "Open" if (opened[0], True) in env else "Close"
             steps += [Step("Reach", obj, duration=1.0, hand=hand), Step(kind, obj, duration=0.8, changes=env, hand=hand),
                       Step("Release", duration=0.6, hand=hand)]
         else:
-            about = {x for a, _ in env for x in a.args}
-            arm_objects = set(dict(vocabulary.hands).values())
-            candidates = [x for x in args if x not in arm_objects]
-            moved = next((x for x in candidates if x in about), candidates[0] if candidates else args[0])
-            if held[hand]:
-                # The hand holds a tool or what it carries: it brings it to the object and keeps it.
-                steps += [Step("Put", held[hand], moved, duration=1.2, changes=env, hand=hand),
-                          Step("Idle", duration=pause, hand=hand)]
-            elif moved in about:
-                target = next((a.args[-1] for a, value in env if value and moved in a.args), "")
-                steps += [Step("Reach", moved, duration=1.0, hand=hand),
-                          Step("Push", moved, target, duration=1.4, changes=env, hand=hand),
-                          Step("Release", duration=0.6, hand=hand)]
-            else:
-                steps += [Step("Reach", moved, duration=1.0, hand=hand),
-                          Step("Operate", moved, duration=0.8, changes=env, hand=hand),
-                          Step("Release", duration=0.6, hand=hand)]
+            steps += _work_on(args, env, "", hand, vocabulary, pause)
         current = (current - dels) | adds
-        if not taken and not (held[hand] and not given and not opened and steps[-1].activity == "Idle"):
+        if not taken and steps[-1].activity != "Idle":
             steps.append(Step("Idle", duration=pause, hand=hand))
     return steps

@@ -26,7 +26,8 @@ Both hands may act at once.  Every change of the environment state is
 attributed to the hand that caused it: to the segment, among the segments
 of each hand in progress at that moment, that handles the objects the change
 is about (a change and the changes at the same instant that share objects
-with it go together: the chair leaves the drawer, the drawer is clear).
+with it go together: the chair leaves the drawer, the drawer is clear); a
+change about no object goes to a hand that acts, not to one holding still.
 Each segment carries the fluents just before it acts and, after it, the same
 fluents with only its own changes applied.
 """
@@ -250,7 +251,9 @@ def _attribute(demo: Demonstration, per_hand: dict[str, list[Segment]]) -> dict[
         for event in _linked(changes):
             candidates = [_by_contact(segs, k, event) for segs, k in positions]
             objects = {a for atom, _ in event for a in atom.args}
-            scored = [(len(objects & _handled(s)), s.activity != "Idle") for s in candidates]
+            # A change about no object at all (the light is on) is not the doing of a hand holding still.
+            scored = [(len(objects & _handled(s)), s.activity != "Idle", bool(objects) or s.activity != "Take")
+                      for s in candidates]
             best = max(scored)
             for seg, score in zip(candidates, scored):
                 if score == best:

@@ -73,11 +73,20 @@ def _vocabulary_defect(value, objects: dict) -> tuple[tuple[tuple, str] | None, 
         why = None if name is None else "a string" if not isinstance(name, str) else pddl_name_defect(name)
         if why:
             return (("vocabulary", key), f"expected a predicate name or null, {why}, got {_show(name)}"), set()
-    hands = value.get("hands") or {}
-    if not isinstance(hands, dict) or any(h not in ("left", "right") or a not in objects for h, a in hands.items()):
+    hands = value.get("hands", {})
+    if hands is None:
+        hands = {}
+    if not isinstance(hands, dict) or any(h not in ("left", "right") or not isinstance(a, str) or a not in objects
+                                          for h, a in hands.items()):
         return (("vocabulary", "hands"), "expected {\"left\"|\"right\": an object of the document}, got "
                 f"{_show(hands)}"), set()
-    return None, {p for p in (value.get("held"), value.get("free")) if p}
+    from guided_lfd.demonstration.vocabulary import vocabulary_defect
+
+    rows = [(k, value[k].lower() if isinstance(value.get(k), str) else None) for k in ("held", "free") if k in value]
+    why = vocabulary_defect([*rows, *hands.items()])
+    if why:
+        return (("vocabulary",), why), set()
+    return None, {p.lower() for p in (value.get("held"), value.get("free")) if p}
 
 
 def _show(value) -> str:

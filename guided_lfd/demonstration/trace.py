@@ -176,7 +176,7 @@ def load_state(path: str, span: tuple[float, float] | None = None) -> tuple[
     objects, spellings, type_row, rows, declared = _state_rows(frame, times, path)
     if not objects:
         raise TraceError("no object(Name,type) rows: the scene's objects must be declared", Location(path, 1))
-    vocabulary = vocabulary_of([v for _, v in declared], f"the vocabulary rows of {path}") if declared else None
+    vocabulary = _declared_vocabulary(frame, path, declared)
     hand = vocabulary.predicates if vocabulary is not None else frozenset(HAND_PREDICATES)
     for i, _, atom, _ in rows:
         if atom.predicate in hand:
@@ -194,12 +194,33 @@ def load_state(path: str, span: tuple[float, float] | None = None) -> tuple[
     if clash:
         raise TraceError(f"column 'fluent': type '{clash[0]}' is also a predicate; expected distinct names",
                          _where(path, frame, type_row[clash[0]], "fluent"))
-    start = min((t for _, t, _, _ in rows), default=0.0)
+    # Vocabulary rows stand at the start too: a world whose only initial facts are the hand's has no fluent row.
+    start = min([t for _, t, _, _ in rows] + [float(times[i]) for i, _ in declared], default=0.0)
+    late = [i for i, _ in declared if float(times[i]) > start]
+    if late:
+        raise TraceError(f"column 'time': a vocabulary row at {float(times[late[0]]):g} s; expected it with the "
+                         f"initial state, at {start:g} s", _where(path, frame, late[0], "time"))
     if span is not None:
         _check_span(frame, path, rows, start, span)
     initial = frozenset(a for _, t, a, v in rows if t == start and v)
     events = sorted(((t, a, v) for _, t, a, v in rows if t > start), key=lambda e: e[0])
     return objects, initial, events, spellings, vocabulary
+
+
+def _declared_vocabulary(frame: pd.DataFrame, path: str,
+                         declared: list[tuple[int, tuple[str, str | None]]]) -> HandVocabulary | None:
+    """The hand facts the ``vocabulary`` rows declare (None without any); TraceError at the first row that
+    is not true or contradicts the ones before it."""
+    from guided_lfd.demonstration.vocabulary import vocabulary_defect
+
+    for k, (i, _) in enumerate(declared):
+        if frame["value"].iloc[i].strip().lower() not in _TRUE:
+            raise TraceError(f"column 'value': a vocabulary row is a declaration; expected true, got "
+                             f"'{frame['value'].iloc[i].strip()}'", _where(path, frame, i, "value"))
+        why = vocabulary_defect([v for _, v in declared[:k + 1]], complete=k == len(declared) - 1)
+        if why:
+            raise TraceError(f"column 'fluent': {why}", _where(path, frame, i, "fluent"))
+    return vocabulary_of([v for _, v in declared], f"the vocabulary rows of {path}") if declared else None
 
 
 def _state_rows(frame: pd.DataFrame, times: np.ndarray, path: str) -> tuple[

@@ -28,7 +28,7 @@ from dataclasses import dataclass, field, replace
 
 from guided_lfd.pddl.model import Atom, Domain
 
-__all__ = ["HandVocabulary", "KITCHEN", "NO_HAND", "infer_vocabulary", "vocabulary_of", "parse_vocabulary_row", "bind_arms",
+__all__ = ["HandVocabulary", "KITCHEN", "NO_HAND", "infer_vocabulary", "vocabulary_of", "parse_vocabulary_row", "bind_arms", "vocabulary_defect", "ARM_WORDS",
            "VOCABULARY_KEYS"]
 
 #: The keys a ``vocabulary(key=value)`` row may bind.
@@ -95,7 +95,12 @@ class HandVocabulary:
     def from_dict(cls, data: dict, origin: str = "the segments document") -> "HandVocabulary":
         """The inverse of :meth:`to_dict`."""
         hands = tuple(sorted((data.get("hands") or {}).items()))
-        return cls(data.get("held"), data.get("free"), hands, origin, by_arm=bool(hands))
+
+        def name(key: str) -> str | None:
+            value = data.get(key)
+            return value.lower() if isinstance(value, str) else None  # names are case-insensitive, as in PDDL
+
+        return cls(name("held"), name("free"), hands, origin, by_arm=bool(hands))
 
 
 KITCHEN = HandVocabulary()
@@ -117,7 +122,11 @@ def parse_vocabulary_row(inside: str) -> tuple[str, str | None]:
 
 
 def vocabulary_of(rows: list[tuple[str, str | None]], origin: str) -> HandVocabulary:
-    """The binding declared by a state file's ``vocabulary`` rows (keys not given: none)."""
+    """The binding declared by a state file's ``vocabulary`` rows (keys not given: none); ValueError for rows
+    that contradict each other (see :func:`vocabulary_defect`)."""
+    why = vocabulary_defect(rows)
+    if why:
+        raise ValueError(why)
     bound = dict(rows)
     if "none" in bound:
         return HandVocabulary(None, None, origin=origin)
@@ -125,10 +134,34 @@ def vocabulary_of(rows: list[tuple[str, str | None]], origin: str) -> HandVocabu
     return HandVocabulary(bound.get("held"), bound.get("free"), hands, origin, by_arm=bool(hands))  # type: ignore[arg-type]
 
 
-def _toggles(domain: Domain) -> list[tuple[str, str, bool]]:
-    """(held, free, by_arm) predicate pairs ``domain``'s actions toggle against each other: one action adds a
-    ``held`` fact and deletes a ``free`` one, another deletes a ``held`` fact and adds a ``free`` one (with the
-    same arm, where ``free`` takes one), and none adds or deletes both."""
+def vocabulary_defect(rows: list[tuple[str, str | None]], complete: bool = True) -> str | None:
+    """What makes a list of vocabulary bindings (in row order) contradictory, or None: a key bound twice,
+    ``none`` beside other bindings, one predicate for both held and free, one arm for both hands, and (when
+    the list is ``complete``) arms without a held or free predicate to apply to."""
+    seen: dict[str, str | None] = {}
+    for key, value in rows:
+        if key in seen:
+            return f"{key} is bound twice ({seen[key] or 'none'}, then {value or 'none'}); expected one binding"
+        if ("none" in seen) != (key == "none") and seen:
+            return "vocabulary(none) beside other vocabulary rows; expected either"
+        seen[key] = value
+        if seen.get("held") and seen.get("held") == seen.get("free"):
+            return f"held and free are both {value}; expected two predicates"
+        if seen.get("left") and seen.get("left") == seen.get("right"):
+            return f"left and right are both {value}; expected two arms"
+    if complete and (seen.get("left") or seen.get("right")) and not (seen.get("held") or seen.get("free")):
+        return "arms bound without held or free predicates for them; expected vocabulary(held=...) too"
+    return None
+
+
+#: Words that name a robot's arm in a type (``arm``, ``gripper``...): an arm-indexed hand fact is only read off
+#: a domain whose arms' type says so (a car parked in a spot toggles like an arm holding a cup).
+ARM_WORDS = ("arm", "hand", "gripper", "manipulator", "effector")
+
+
+def _pairs(domain: Domain) -> tuple[set[tuple[str, str, bool]], set[tuple[str, str, bool]]]:
+    """(grasp, release): (held, free, by_arm) pairs some action toggles one way (adds a held fact and deletes a
+    free one, with the same arm where free takes one), and the other way."""
     grasp: set[tuple[str, str, bool]] = set()
     release: set[tuple[str, str, bool]] = set()
     for action in domain.actions:
@@ -139,56 +172,99 @@ def _toggles(domain: Domain) -> list[tuple[str, str, bool]]:
                         side.add((h.predicate, f.predicate, False))
                     elif len(h.args) == 2 and len(f.args) == 1 and h.args[0] == f.args[0]:
                         side.add((h.predicate, f.predicate, True))
-    def together(action, h: str, f: str, by_arm: bool) -> bool:
-        # An action that makes both true (put-down: the table's block clear, the hand empty) or both false
-        # shows they are no hand state and its opposite.
-        for side in (action.add, action.delete):
-            for a in side:
-                for b in side:
-                    if a.predicate == h and b.predicate == f and (not by_arm or a.args[:1] == b.args[:1]):
-                        return True
-        return False
+    return grasp, release
 
-    return sorted(p for p in grasp & release if not any(together(a, *p) for a in domain.actions))
+
+def _together(action, h: str, f: str, by_arm: bool) -> bool:
+    """Whether ``action`` makes a held and a free fact (of one arm) both true or both false: they are then no
+    hand state and its opposite (put-down makes the table's block clear and the hand empty)."""
+    for side in (action.add, action.delete):
+        for a in side:
+            for b in side:
+                if a.predicate == h and b.predicate == f and (not by_arm or a.args[:1] == b.args[:1]):
+                    return True
+    return False
+
+
+def _strict(domain: Domain, h: str, f: str) -> bool:
+    """Whether every action that changes ``h`` or ``f`` changes the other the opposite way: a hand state and
+    its opposite always move together (in a blocksworld where a held block stays clear, unstacking makes the
+    block below clear and the hand busy, but putting down makes the hand empty without a clear fact going)."""
+    for action in domain.actions:
+        adds = {a.predicate for a in action.add}
+        dels = {a.predicate for a in action.delete}
+        if (h in adds) != (f in dels) or (h in dels) != (f in adds):
+            return False
+    return True
+
+
+def _arm_type(domain: Domain, free: str) -> str | None:
+    predicate = domain.predicates.get(free)
+    return predicate.params[0][1] if predicate is not None and predicate.params else None
+
+
+def _toggles(domain: Domain) -> list[tuple[str, str, bool]]:
+    """The (held, free, by_arm) pairs that are ``domain``'s hand facts, best evidence first: pairs its actions
+    toggle both ways, else (a robot that lacks its putting or taking skill) one way; never a pair one action
+    makes both true or both false; arm-indexed ones only on a type named like an arm (:data:`ARM_WORDS`);
+    among several, those that always change together (:func:`_strict`)."""
+    grasp, release = _pairs(domain)
+
+    def fit(pairs: set[tuple[str, str, bool]]) -> list[tuple[str, str, bool]]:
+        out = sorted(p for p in pairs if not any(_together(a, *p) for a in domain.actions))
+        out = [p for p in out if not p[2] or any(w in (_arm_type(domain, p[1]) or "") for w in ARM_WORDS)]
+        # A hand without arm objects first: putting an item on a surface also "toggles" (on_top ?i ?s)
+        # against (in_hand ?i), which reads like an arm-indexed pair.
+        out = [p for p in out if not p[2]] or out
+        return [p for p in out if _strict(domain, p[0], p[1])] or out if len(out) > 1 else out
+
+    return fit(grasp & release) or fit(grasp | release)
 
 
 def infer_vocabulary(*domains: Domain | None) -> HandVocabulary | None:
-    """The hand facts of the first of ``domains`` whose grasping actions show them unambiguously (see
-    :func:`_toggles`), None when none shows any; ValueError naming the candidates when one shows several."""
+    """The hand facts of the first of ``domains`` whose grasping actions show them (see :func:`_toggles`), None
+    when none shows any; ValueError naming the candidates when one shows several."""
     for domain in domains:
         if domain is None:
             continue
         pairs = _toggles(domain)
-        # A hand without arm objects first: putting an item on a surface also "toggles" (on_top ?i ?s)
-        # against (in_hand ?i), which reads like an arm-indexed pair.
-        pairs = [p for p in pairs if not p[2]] or pairs
         if len(pairs) > 1:
             shown = "; ".join(f"held={h}, free={f}" for h, f, _ in pairs)
             raise ValueError(f"{domain.path}: its grasping actions toggle more than one pair of hand facts ({shown}); "
                              "declare the demonstration's with vocabulary(held=...) and vocabulary(free=...) rows")
         if pairs:
             held, free, by_arm = pairs[0]
-            predicate = domain.predicates.get(free)
-            arm_type = predicate.params[0][1] if by_arm and predicate is not None and predicate.params else None
+            arm_type = _arm_type(domain, free) if by_arm else None
             return HandVocabulary(held, free, (), f"the grasping actions of {domain.path}", by_arm, arm_type)
     return None
 
 
-def bind_arms(vocabulary: HandVocabulary, objects: dict[str, str], arm_type: str | None = None) -> HandVocabulary:
-    """Tie an arm-indexed binding to the trace's hands by the arms' names (``left_arm``, ``rarm``...): an arm
-    named with ``left``/``l`` is the left hand, ``right``/``r`` the right; a single arm is the right hand.
-    ValueError when the names do not tell."""
+def _side(name: str) -> str | None:
+    """``left``/``right`` where an arm's name says which (``left-arm``, ``robot_right``, ``arm-l``, ``rarm``)."""
+    words = [w for w in name.replace("_", "-").split("-") if w]
+    for side in ("left", "right"):
+        if any(w == side or w == side[0] or w.startswith(side) or w.endswith(side) for w in words):
+            return side
+    if len(words) == 1 and words[0][:1] in "lr" and any(w in words[0][1:] for w in ARM_WORDS):
+        return "left" if words[0][0] == "l" else "right"  # larm, rgripper
+    return None
+
+
+def bind_arms(vocabulary: HandVocabulary, objects: dict[str, str], arm_type: str | None = None,
+              choose: bool = False) -> HandVocabulary:
+    """Tie an arm-indexed binding to the trace's hands by the arms' names (``left-arm``, ``rarm``, ``arm-r``); a
+    single arm is the right hand.  With ``choose`` (a simulated demonstrator, who can use either hand), two
+    arms the names do not tell apart are the left and right in name order.  ValueError otherwise."""
     if not vocabulary.by_arm or vocabulary.hands:
         return vocabulary
     arm_type = arm_type or vocabulary.arm_type
     arms = sorted(o for o, t in objects.items() if arm_type is None or t == arm_type)
     if len(arms) == 1:
-        hands = (("right", arms[0]),)
-    else:
-        left = [a for a in arms if "left" in a or a.startswith("l")]
-        right = [a for a in arms if "right" in a or a.startswith("r")]
-        if len(arms) != 2 or len(left) != 1 or len(right) != 1 or left == right:
-            raise ValueError(f"cannot tell which of the arms ({', '.join(arms) or 'none'}) is the left and which the "
-                             "right hand; declare them with vocabulary(left=...) and vocabulary(right=...) rows")
-        hands = (("left", left[0]), ("right", right[0]))
-    return replace(vocabulary, hands=hands)
+        return replace(vocabulary, hands=(("right", arms[0]),))
+    sides = {a: _side(a) for a in arms}
+    if len(arms) == 2 and sorted(sides.values(), key=str) == ["left", "right"]:
+        return replace(vocabulary, hands=tuple(sorted((side, a) for a, side in sides.items())))  # type: ignore[misc]
+    if len(arms) == 2 and choose:
+        return replace(vocabulary, hands=(("left", arms[0]), ("right", arms[1])))
+    raise ValueError(f"cannot tell which of the arms ({', '.join(arms) or 'none'}) is the left and which the "
+                     "right hand; declare them with vocabulary(left=...) and vocabulary(right=...) rows")

@@ -30,7 +30,7 @@ def render_domain(folder: Path, out: Path) -> list[Path]:
     human = parse_domain(str(folder / "human.pddl"))
     written = []
     with tempfile.TemporaryDirectory() as tmp:
-        session = teach(robot, problem, SimulatedHuman(human), Path(tmp) / "session", human=human)
+        session = teach(robot, problem, SimulatedHuman(human, robot=robot), Path(tmp) / "session", human=human)
         for rnd in session.rounds:
             trace = out / f"demo-round-{rnd.index}.csv"
             shutil.copyfile(rnd.files["trace"], trace)

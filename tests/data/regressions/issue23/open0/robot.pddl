@@ -1,0 +1,8 @@
+(define (domain open0)
+  (:requirements :strips :typing :negative-preconditions)
+  (:types switch lamp)
+  (:predicates (open) (lit ?l - lamp) (wired ?s - switch ?l - lamp))
+  (:action light :parameters (?s - switch ?l - lamp)
+    :precondition (and (open) (wired ?s ?l))
+    :effect (lit ?l))
+)

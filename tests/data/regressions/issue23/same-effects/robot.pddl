@@ -1,0 +1,8 @@
+(define (domain doors)
+  (:requirements :strips :typing :negative-preconditions)
+  (:types door room)
+  (:predicates (at ?r - room) (door-open ?d - door) (connects ?d - door ?a ?b - room) (has-key))
+  (:action go :parameters (?d - door ?a ?b - room)
+    :precondition (and (at ?a) (door-open ?d) (connects ?d ?a ?b))
+    :effect (and (at ?b) (not (at ?a))))
+)

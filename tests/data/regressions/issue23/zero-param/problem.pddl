@@ -1,0 +1,3 @@
+(define (problem zero-1) (:domain zero)
+  (:init)
+  (:goal (and (lamp-on) (fan-on))))
