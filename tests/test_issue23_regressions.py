@@ -143,3 +143,21 @@ def test_a_demonstration_of_another_world_is_refused_before_anything_is_learned(
                                  str(BYO / "blocksworld" / "problem.pddl"), "--demo", str(demo), "-o",
                                  str(tmp_path / "session")])
     assert result.exit_code == 34 and "has object(s) the task does not" in result.stderr
+
+
+def test_a_skill_that_could_never_run_beside_the_robots_is_refused_not_learned(runner, app, tmp_path):
+    """Issue #23's first failure class through the command line: a trace without vocabulary rows, a robot whose
+    hand facts cannot be read off it; the skills learned in the kitchens' hand facts need (hand_free), which the
+    robot never makes true: exit 34 naming the skill and the predicate, nothing written."""
+    trace = tmp_path / "demo.csv"
+    shutil.copyfile(BYO / "blocksworld" / "demo-round-1.csv", trace)
+    rows = (BYO / "blocksworld" / "demo-round-1.state.csv").read_text().splitlines(keepends=True)
+    (tmp_path / "demo.state.csv").write_text("".join(r for r in rows if "vocabulary(" not in r))
+    segmented = runner.invoke(app, ["segment", str(trace)])
+    assert segmented.exit_code == 0, segmented.output
+    out = tmp_path / "learned.pddl"
+    result = runner.invoke(app, ["learn-domain", "-", "--prior", str(CASES / "painter-robot.pddl"), "-o", str(out)],
+                           input=segmented.stdout)
+    assert result.exit_code == 34, result.output
+    assert "learned skill take_block needs (hand_free ...), a predicate" in result.stderr
+    assert "never makes true" in result.stderr and not out.exists()
