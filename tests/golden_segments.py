@@ -1,0 +1,82 @@
+"""Every shipped and test trace's segments, for the golden comparison of tests/test_segment_golden.py (issue #30).
+
+    python tests/golden_segments.py        # rewrites tests/data/golden/segments.jsonl
+
+One JSON line per trace: its path (relative to the project) and every
+segment as ``guided-lfd segment`` finds it (hand, activity, times, objects,
+what the hand held, fluents added and deleted).  Regenerate only when a
+change to the segmenter is meant to change segments, and say why.
+"""
+
+from __future__ import annotations
+
+import json
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+GOLDEN = ROOT / "tests" / "data" / "golden" / "segments.jsonl"
+
+
+def traces() -> list[Path]:
+    """Every trace CSV with a state file beside it, under data/ and tests/data/."""
+    found = [p.with_name(p.name[: -len(".state.csv")] + ".csv")
+             for base in (ROOT / "data", ROOT / "tests" / "data") for p in base.rglob("*.state.csv")]
+    return sorted(p for p in found if p.is_file())
+
+
+def household_renders(folder: Path, max_items: int = 8) -> list[tuple[str, Path]]:
+    """The household series' whole tasks up to ``max_items`` items, demonstrated by the human model and
+    rendered as ``teach --simulate`` renders them: (name, trace)."""
+    from dataclasses import replace
+
+    from guided_lfd import household
+    from guided_lfd.evaluate import excuse_goal
+    from guided_lfd.excuse.change import Change
+    from guided_lfd.pddl.reader import parse_domain, parse_task
+    from guided_lfd.teach import SimulatedHuman
+
+    (folder / "human.pddl").write_text(household.domain_pddl())
+    human = parse_domain(str(folder / "human.pddl"))
+    out = []
+    for rooms, items, drawers, cupboards, goals in household.SERIES:
+        if items > max_items:
+            continue
+        house = household.House(rooms, items, drawers, cupboards, goals, "no-open")
+        (folder / f"{house.name}.pddl").write_text(household.problem_pddl(house))
+        _, task = parse_task(str(folder / "human.pddl"), str(folder / f"{house.name}.pddl"))
+        where = folder / house.name
+        where.mkdir()
+        goal = [Change(lit.atom, lit.positive) for lit in task.goal]
+        given = SimulatedHuman(human).demonstrate(where, task.init, goal, replace(task))
+        out.append((f"household:{house.name}", given[0]))
+    return out
+
+
+def segments_of(trace: Path) -> list[list]:
+    """The trace's segments as plain lists (rounded times, sorted fluents)."""
+    from guided_lfd.demonstration.segment import segment
+    from guided_lfd.demonstration.trace import load_demonstration
+
+    return [[s.hand, s.activity, round(s.start, 4), round(s.end, 4), s.object, s.target, s.held_before,
+             s.held_after, sorted(map(str, s.added)), sorted(map(str, s.deleted))]
+            for s in segment(load_demonstration(str(trace)))]
+
+
+def main() -> int:
+    """Write the golden file."""
+    import tempfile
+
+    sys.path.insert(0, str(ROOT))
+    lines = [json.dumps({"trace": str(t.relative_to(ROOT)), "segments": segments_of(t)}, separators=(",", ":"))
+             for t in traces()]
+    with tempfile.TemporaryDirectory() as tmp:
+        lines += [json.dumps({"trace": name, "segments": segments_of(t)}, separators=(",", ":"))
+                  for name, t in household_renders(Path(tmp))]
+    GOLDEN.write_text("\n".join(lines) + "\n")
+    print(f"{len(lines)} traces -> {GOLDEN.relative_to(ROOT)}")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
