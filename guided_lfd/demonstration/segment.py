@@ -94,7 +94,7 @@ def frame_labels(frames, objects: dict[str, str]) -> np.ndarray:
     in_hand = frames["in_hand"].to_numpy()
     # Carrying toward somewhere: the hand acts on an object other than the one it holds.
     toward = targeted & (target != in_hand)
-    onto_item = toward & np.array([objects.get(t, "") == objects.get(h, "#") for t, h in zip(target, in_hand)])
+    onto_item = toward & (_types(target, objects, "") == _types(in_hand, objects, "#"))
     labels = np.full(len(frames), "Idle", dtype=object)
     labels[~held & ~grip & targeted] = "Reach"
     labels[~held & ~grip & ~targeted & moving] = "Release"
@@ -109,59 +109,139 @@ def frame_labels(frames, objects: dict[str, str]) -> np.ndarray:
     return labels
 
 
+def _types(names: np.ndarray, objects: dict[str, str], missing: str) -> np.ndarray:
+    """Each name's object type (``missing`` for an undeclared one), looked up once per distinct name."""
+    import pandas as pd
+
+    codes, uniques = pd.factorize(names, sort=False)
+    kinds = np.array([objects.get(u, missing) for u in uniques] + [missing], dtype=object)
+    return kinds[codes]  # code -1 (no value) takes the last entry
+
+
 def _runs(times: np.ndarray, labels: np.ndarray) -> list[list]:
     """[label, first index, last index] runs, split by label changes and long gaps."""
-    runs: list[list] = []
-    for i, label in enumerate(labels):
-        if runs and runs[-1][0] == label and times[i] - times[runs[-1][2]] <= MAX_GAP_S:
-            runs[-1][2] = i
+    if len(labels) == 0:
+        return []
+    cut = np.flatnonzero((labels[1:] != labels[:-1]) | (np.diff(times) > MAX_GAP_S)) + 1
+    starts = np.concatenate(([0], cut))
+    ends = np.concatenate((cut - 1, [len(labels) - 1]))
+    return [[labels[s], int(s), int(e)] for s, e in zip(starts, ends)]
+
+
+class _RunList:
+    """Runs as a doubly linked list (label, first and last frame of each), for debouncing in linear time."""
+
+    def __init__(self, times: np.ndarray, runs: list[list]) -> None:
+        n = len(runs)
+        self.times = times
+        self.frame = float(np.median(np.diff(times))) if len(times) > 1 else 0.0
+        self.label = [r[0] for r in runs]
+        self.first = [r[1] for r in runs]
+        self.last = [r[2] for r in runs]
+        self.prev = list(range(-1, n - 1))
+        self.nxt = [*range(1, n), -1] if n else []
+        self.alive = [True] * n
+        self.count = n
+
+    def length(self, k: int) -> float:
+        """How long run ``k`` lasts: until the next frame, after a few dropped frames longer than one frame
+        period (clock rounding does not count: only a gap of more than one and a half periods; a longer
+        dropout counts three periods at most: what happened in it is unknown)."""
+        times, last, frame = self.times, self.last[k], self.frame
+        step = float(times[last + 1] - times[last]) if last + 1 < len(times) else frame
+        return float(times[last] - times[self.first[k]]) + (min(step, 3 * frame) if step > 1.5 * frame else frame)
+
+    def noise(self, k: int) -> bool:
+        """Whether run ``k`` is jitter to absorb (see the module docstring)."""
+        size = self.length(k)
+        if size < JITTER_S:
+            return True
+        if self.prev[k] == -1 or self.nxt[k] == -1:
+            return size < MIN_SEGMENT_S  # cut off by the trace's start or end
+        return size < MIN_SEGMENT_S and self.label[self.prev[k]] == self.label[self.nxt[k]]
+
+    def remove(self, k: int) -> None:
+        """Unlink run ``k``."""
+        p, q = self.prev[k], self.nxt[k]
+        if p != -1:
+            self.nxt[p] = q
+        if q != -1:
+            self.prev[q] = p
+        self.alive[k] = False
+        self.count -= 1
+
+    def order(self) -> list[int]:
+        """The live runs, first to last."""
+        k = next((i for i, a in enumerate(self.alive) if a and self.prev[i] == -1), -1)
+        out = []
+        while k != -1:
+            out.append(k)
+            k = self.nxt[k]
+        return out
+
+    def join_all(self) -> None:
+        """Join every two neighbours with the same label (the left one stays)."""
+        for k in self.order():
+            if not self.alive[k]:
+                continue
+            q = self.nxt[k]
+            while q != -1 and self.label[q] == self.label[k]:
+                self.last[k] = self.last[q]
+                self.remove(q)
+                q = self.nxt[k]
+
+    def keyed(self, k: int) -> tuple[float, int, int]:
+        """The heap entry of run ``k``: shortest first, then the earliest (the rule's order)."""
+        return self.length(k), self.first[k], k
+
+    def absorb(self, k: int) -> list[int]:
+        """Merge noise run ``k`` into a neighbour (the start's or the end's into its only one, else the longer,
+        the left on a tie), join its neighbours if they now touch with one label; the runs whose key or noise
+        may have changed."""
+        p, q = self.prev[k], self.nxt[k]
+        if p == -1:
+            self.first[q] = self.first[k]
+        elif q == -1 or self.length(p) >= self.length(q):
+            self.last[p] = self.last[k]
         else:
-            runs.append([label, i, i])
-    return runs
+            self.first[q] = self.first[k]
+        self.remove(k)
+        touched = [x for x in (p, q) if x != -1]
+        if p != -1 and q != -1 and self.label[p] == self.label[q]:
+            self.last[p] = self.last[q]
+            after = self.nxt[q]
+            self.remove(q)
+            touched = [p] + ([after] if after != -1 else [])
+        return touched
 
 
 def _debounce(times: np.ndarray, runs: list[list]) -> list[list]:
-    """Absorb jitter runs into their neighbours, shortest first (see the module docstring)."""
-    frame = float(np.median(np.diff(times))) if len(times) > 1 else 0.0
+    """Absorb jitter runs into their neighbours, shortest first (see the module docstring).
 
-    def length(r: list) -> float:
-        # A run lasts until the next frame: after a few dropped frames, longer than one frame period
-        # (clock rounding does not count: only a gap of more than one and a half periods; a longer
-        # dropout counts three periods at most: what happened in it is unknown).
-        step = float(times[r[2] + 1] - times[r[2]]) if r[2] + 1 < len(times) else frame
-        return float(times[r[2]] - times[r[1]]) + (min(step, 3 * frame) if step > 1.5 * frame else frame)
+    The noise runs wait in a heap keyed by (length, first frame), the rule's order; a merge changes only the
+    runs beside it, which are keyed again: linear in the runs up to the heap's logarithm."""
+    import heapq
 
-    def noise(k: int) -> bool:
-        n = length(runs[k])
-        if n < JITTER_S:
-            return True
-        if k == 0 or k == len(runs) - 1:
-            return n < MIN_SEGMENT_S  # cut off by the trace's start or end
-        return n < MIN_SEGMENT_S and runs[k - 1][0] == runs[k + 1][0]
-
-    while len(runs) > 1:
-        candidates = [k for k in range(len(runs)) if noise(k)]
-        if not candidates:
-            break
-        k = min(candidates, key=lambda j: (length(runs[j]), j))
-        if k == 0:
-            runs[1][1] = runs[0][1]
-            del runs[0]
-        elif k == len(runs) - 1 or length(runs[k - 1]) >= length(runs[k + 1]):
-            runs[k - 1][2] = runs[k][2]
-            del runs[k]
-        else:
-            runs[k + 1][1] = runs[k][1]
-            del runs[k]
-        # Neighbours with the same label now touch: join them.
-        merged: list[list] = []
-        for r in runs:
-            if merged and merged[-1][0] == r[0]:
-                merged[-1][2] = r[2]
-            else:
-                merged.append(r)
-        runs = merged
-    return runs
+    rl = _RunList(times, runs)
+    heap = [rl.keyed(k) for k in range(len(runs)) if rl.noise(k)]
+    heapq.heapify(heap)
+    merged_once = False
+    while rl.count > 1 and heap:
+        size, start, k = heapq.heappop(heap)
+        if not rl.alive[k] or rl.first[k] != start or rl.length(k) != size or not rl.noise(k):
+            continue  # stale: the run changed since (a fresh entry is in the heap if it is noise now)
+        touched = rl.absorb(k)
+        if not merged_once:
+            # The first merge also joins the runs a long gap split (the rule as it has always run).
+            merged_once = True
+            rl.join_all()
+            heap = [rl.keyed(x) for x in rl.order() if rl.noise(x)]
+            heapq.heapify(heap)
+            continue
+        for x in touched:
+            if rl.alive[x] and rl.noise(x):
+                heapq.heappush(heap, rl.keyed(x))
+    return [[rl.label[k], rl.first[k], rl.last[k]] for k in rl.order()]
 
 
 def _lagged_reaches(times: np.ndarray, runs: list[list]) -> list[list]:
@@ -184,17 +264,13 @@ def _late_transports(times: np.ndarray, labels: np.ndarray, onset: np.ndarray) -
     """Moving frames that end a Take and run into a Put or Stack within :data:`DETECTOR_LATENCY_S`
     are that transport's start (the detector still named the held object); longer, they are
     motion while holding (tremor, adjusting the grasp) and stay the Take's."""
-    k = 0
-    while k < len(labels):
-        if not (onset[k] and labels[k] == "Take"):
-            k += 1
-            continue
-        j = k
-        while j < len(labels) and onset[j] and labels[j] == "Take":
-            j += 1
+    moving_take = onset & (labels == "Take")
+    # Each run of such frames: where it starts (the frame before is not one) and the first frame after it.
+    starts = np.flatnonzero(moving_take & ~np.concatenate(([False], moving_take[:-1])))
+    ends = np.flatnonzero(moving_take & ~np.concatenate((moving_take[1:], [False]))) + 1
+    for k, j in zip(starts, ends):
         if j < len(labels) and labels[j] in ("Put", "Stack") and times[j] - times[k] <= DETECTOR_LATENCY_S + 1e-9:
             labels[k:j] = labels[j]
-        k = j
     return labels
 
 
@@ -287,14 +363,19 @@ def _linked(changes: list[tuple[Atom, bool]]) -> list[list[tuple[Atom, bool]]]:
     return groups
 
 
-def _state_before(demo: Demonstration, t: float) -> set[Atom]:
-    """The true fluents just before ``t`` (changes at ``t`` excluded)."""
+def _states_at(demo: Demonstration, queries: list[tuple[float, bool, int]]) -> dict[int, frozenset[Atom]]:
+    """The true fluents for each query (time, strictly before it?, key): the changes before the time, and
+    at it unless strictly before; by key.  One sweep over the changes in time order."""
     state = set(demo.initial)
-    for when, atom, value in demo.events:
-        if when >= t:
-            break
-        (state.add if value else state.discard)(atom)
-    return state
+    out: dict[int, frozenset[Atom]] = {}
+    events, i = demo.events, 0
+    for t, strict, key in sorted(queries, key=lambda q: (q[0], not q[1])):
+        while i < len(events) and (events[i][0] < t or (not strict and events[i][0] == t)):
+            _, atom, value = events[i]
+            (state.add if value else state.discard)(atom)
+            i += 1
+        out[key] = frozenset(state)
+    return out
 
 
 def segment(demo: Demonstration) -> list[Segment]:
@@ -302,15 +383,22 @@ def segment(demo: Demonstration) -> list[Segment]:
     labels = frame_labels(demo.frames, demo.objects)
     per_hand = {hand: _hand_segments(demo, labels, hand) for hand in ("left", "right")}
     caused = _attribute(demo, per_hand)
+    # The world just before each segment acts: at its first own change, or where its effect window opens
+    # (the other hand's changes until then included); one sweep over the changes answers every segment.
+    queries: list[tuple[float, bool, int]] = []
+    for segs in per_hand.values():
+        for k, seg in enumerate(segs):
+            own = caused[id(seg)]
+            if own:
+                queries.append((min(c[0] for c in own), True, id(seg)))
+            elif k:
+                queries.append((seg.start + EFFECT_DELAY_S, False, id(seg)))
+    states = _states_at(demo, queries)
     out: list[Segment] = []
     for segs in per_hand.values():
         for k, seg in enumerate(segs):
             own = sorted(caused[id(seg)], key=lambda c: c[0])
-            # The world just before the segment acts: at its first own change,
-            # or where its effect window opens (the other hand's changes until
-            # then included).
-            when = own[0][0] if own else (seg.start + EFFECT_DELAY_S if k else float("-inf"))
-            before = _state_before(demo, when) if own else demo.state_at(when) if k else set(demo.initial)
+            before = states.get(id(seg), demo.initial)
             after = set(before)
             for _, atom, value in own:
                 (after.add if value else after.discard)(atom)

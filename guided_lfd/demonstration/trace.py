@@ -101,7 +101,17 @@ def default_state_path(trace_path: str) -> str:
     return str(p.with_name(p.stem + ".state.csv"))
 
 
-def _csv(text: str, path: str, columns: tuple[str, ...]) -> pd.DataFrame:
+def _csv(text: str, path: str, columns: tuple[str, ...], numeric: tuple[str, ...] = ()) -> pd.DataFrame:
+    """The CSV ``text`` as strings, ``numeric`` columns as floats (pandas' own parser: the fast path); a file
+    whose numeric columns do not all parse is read as strings, for the checks to say where and what."""
+    if numeric:
+        try:
+            frame = pd.read_csv(io.StringIO(text), dtype={c: str for c in columns if c not in numeric}
+                                | {c: np.float64 for c in numeric}, keep_default_na=False, skipinitialspace=True)
+        except (ValueError, TypeError, pd.errors.ParserError, pd.errors.EmptyDataError):
+            frame = None
+        if frame is not None and _all_parsed(frame, columns, numeric):
+            return frame
     try:
         frame = pd.read_csv(io.StringIO(text), dtype=str, keep_default_na=False, skipinitialspace=True)
     except pd.errors.ParserError as exc:
@@ -124,12 +134,25 @@ def _csv(text: str, path: str, columns: tuple[str, ...]) -> pd.DataFrame:
     return frame
 
 
+def _all_parsed(frame: pd.DataFrame, columns: tuple[str, ...], numeric: tuple[str, ...]) -> bool:
+    """Whether the fast read of a trace needs no check to say where it is wrong: every column there, rows,
+    every number finite, no time negative (the string path's checks quote such values as written)."""
+    frame.columns = [c.strip() for c in frame.columns]
+    if frame.empty or any(c not in frame.columns for c in columns):
+        return False
+    if any(frame[c].dtype.kind != "f" or not np.isfinite(frame[c].to_numpy()).all() for c in numeric):
+        return False
+    return "time" not in numeric or not (frame["time"].to_numpy() < 0).any()
+
+
 def _where(path: str, frame: pd.DataFrame, row: int, column: str) -> Location:
     # CSV line = data row + 2 (header is line 1); column is 1-based.
     return Location(path, row + 2, list(frame.columns).index(column) + 1)
 
 
 def _numbers(frame: pd.DataFrame, path: str, column: str) -> np.ndarray:
+    if frame[column].dtype.kind == "f":  # parsed already, every value finite (see _csv)
+        return frame[column].to_numpy(dtype=float)
     values = pd.to_numeric(frame[column].str.strip(), errors="coerce").to_numpy(dtype=float)
     bad = np.flatnonzero(~np.isfinite(values))
     if bad.size:
@@ -319,36 +342,37 @@ def load_demonstration(trace_path: str, state_path: str | None = None) -> Demons
     """Read and check a trace and its state file; adds the derived ``hand_move`` column."""
     state_path = state_path or default_state_path(trace_path)
     frame = _csv(read_text(trace_path, "a hand trace CSV (time,hand,x,y,z,grip,in_hand,act_on)"),
-                 trace_path, TRACE_COLUMNS)
+                 trace_path, TRACE_COLUMNS, numeric=("time", "x", "y", "z"))
     times = _times(frame, trace_path)
     objects, initial, events, spellings, vocabulary = load_state(state_path, (float(times.min()), float(times.max())))
     for axis in ("x", "y", "z"):
         frame[axis] = _numbers(frame, trace_path, axis)
     frame["time"] = times
-    hands = frame["hand"].str.strip().str.lower()
-    bad = np.flatnonzero(~hands.isin(HANDS).to_numpy())
+    codes, hands = _factorised(frame["hand"])
+    bad = np.flatnonzero(~np.isin(codes, [i for i, h in enumerate(hands) if h in HANDS]))
     if bad.size:
         row = int(bad[0])
         raise TraceError(f"column 'hand': expected left or right, got '{frame['hand'].iloc[row]}'",
                          _where(trace_path, frame, row, "hand"))
-    frame["hand"] = hands
-    grip = frame["grip"].str.strip().str.lower().map({"open": False, "0": False, "closed": True, "1": True})
-    bad = np.flatnonzero(grip.isna().to_numpy())
+    frame["hand"] = hands[codes]
+    codes, grips = _factorised(frame["grip"])
+    closed = {"open": False, "0": False, "closed": True, "1": True}
+    bad = np.flatnonzero(~np.isin(codes, [i for i, g in enumerate(grips) if g in closed]))
     if bad.size:
         row = int(bad[0])
         raise TraceError(f"column 'grip': expected open or closed, got '{frame['grip'].iloc[row]}'",
                          _where(trace_path, frame, row, "grip"))
-    frame["grip_closed"] = grip.astype(bool)
+    frame["grip_closed"] = np.array([closed.get(g, False) for g in grips], dtype=bool)[codes]
     for column in ("in_hand", "act_on"):
-        names = frame[column].str.strip().str.lower()
-        unknown = np.flatnonzero(((names != "") & ~names.isin(list(objects))).to_numpy())
+        codes, names = _factorised(frame[column])
+        unknown = np.flatnonzero(~np.isin(codes, [i for i, n in enumerate(names) if n == "" or n in objects]))
         if unknown.size:
             row = int(unknown[0])
             raise TraceError(
                 f"column '{column}': object '{frame[column].iloc[row].strip()}' is never declared in {Path(state_path).name}",
                 _where(trace_path, frame, row, column),
             )
-        frame[column] = names
+        frame[column] = names[codes]
     for hand in HANDS:
         idx = np.flatnonzero((frame["hand"] == hand).to_numpy())
         if idx.size > 1:
@@ -360,6 +384,13 @@ def load_demonstration(trace_path: str, state_path: str | None = None) -> Demons
                                  _where(trace_path, frame, row, "time"))
     frame["hand_move"] = hand_move(frame)
     return Demonstration(frame, objects, initial, events, spellings, trace_path, vocabulary)
+
+
+def _factorised(column: pd.Series) -> tuple[np.ndarray, np.ndarray]:
+    """(codes, values): each row's value stripped and lower-cased is ``values[codes[row]]``; the string work
+    is done once per distinct value, not once per frame."""
+    codes, uniques = pd.factorize(column, sort=False)
+    return codes, np.array([str(u).strip().lower() for u in uniques] or [""], dtype=object)
 
 
 def hand_move(frame: pd.DataFrame) -> np.ndarray:
