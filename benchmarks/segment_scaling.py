@@ -6,7 +6,8 @@
 Kitchen I's ``P1-complete`` demonstration (1,710 rows, both hands, 20 s) is
 repeated end to end (times shifted; at the start of each copy the state file
 puts the world back as it was at the start, so every copy acts on the same
-scene), 1 to 600 times: up to 1,026,000 rows, 1.8 hours of recording.  For
+scene), 1 to 600 times: up to 1,026,000 rows, 1.8 hours of recording; the
+sizes double from 102,600 rows on.  For
 each size, in one run, one process after the other, nothing else beside it:
 
 * ``guided-lfd segment TRACE --csv`` (the segments as CSV rows, streamed),
@@ -35,7 +36,7 @@ from guided_lfd.benchmark import cli_command  # noqa: E402
 
 SOURCE = ROOT / "data" / "demos" / "kitchen-1" / "P1-complete.csv"
 OUT = ROOT / "benchmarks" / "segment_results"
-COPIES = (1, 10, 60, 120, 300, 600)
+COPIES = (1, 10, 60, 120, 240, 480, 600)
 FIELDS = ["copies", "rows", "recording_min", "segments", "segment_s", "segment_mb", "pipe_s", "pipe_mb",
           "learn_s", "learn_mb", "read_csv_s", "read_csv_mb", "segment_over_read_csv"]
 
@@ -90,7 +91,9 @@ def measure(cmd: list[str], stdin: Path | None = None, stdout: Path | None = Non
 def run(copies: int, folder: Path) -> dict:
     """One size's row."""
     trace, state = make(copies, folder)
-    rows = sum(1 for _ in trace.open()) - 1
+    with trace.open() as lines:
+        rows = sum(1 for _ in lines) - 1
+    last = float(trace.read_text()[-200:].strip().splitlines()[-1].split(",")[0])
     segments_csv, document = folder / "out.csv", folder / "segments.json"
     read_s, read_mb = measure([sys.executable, "-c", "import sys, pandas; pandas.read_csv(sys.argv[1])", str(trace)])
     seg_s, seg_mb = measure([*cli_command(), "segment", str(trace), "--csv", "--quiet"], stdout=segments_csv)
@@ -99,7 +102,7 @@ def run(copies: int, folder: Path) -> dict:
     measure([*cli_command(), "segment", str(trace), "--quiet", "-o", str(document)])
     learn_s, learn_mb = measure([*cli_command(), "learn-domain", str(document), "--quiet"])
     segments = sum(1 for _ in segments_csv.open()) - 1
-    return {"copies": copies, "rows": rows, "recording_min": round(copies * 20.0 / 60, 1), "segments": segments,
+    return {"copies": copies, "rows": rows, "recording_min": round(last / 60, 1), "segments": segments,
             "segment_s": round(seg_s, 2), "segment_mb": round(seg_mb), "pipe_s": round(pipe_s, 2),
             "pipe_mb": round(pipe_mb), "learn_s": round(learn_s, 2), "learn_mb": round(learn_mb),
             "read_csv_s": round(read_s, 2), "read_csv_mb": round(read_mb),

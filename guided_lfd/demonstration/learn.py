@@ -166,6 +166,7 @@ def ground_actions(document: dict, source: str = "segments", static: set[str] | 
     static = static_predicates([(source, document)], {source: vocabulary}) if static is None else static
     out: list[DemonstratedAction] = []
     skills = skill_segments(document.get("segments", []))
+    acting = _Acting(skills)
     for seg in skills:
         # The hand's fluents come from the trace, never from the environment state.
         before = {a for a in (_atom(x, source) for x in seg["before"]) if a.predicate not in hand}
@@ -183,7 +184,7 @@ def ground_actions(document: dict, source: str = "segments", static: set[str] | 
         # the other hand may change something at the same time.
         changed = (after - before) | (before - after)
         linked = handled | {x for a in changed if set(a.args) & handled for x in a.args}
-        if not _other_hand_acting(seg, skills):
+        if not acting.overlaps(seg):
             # One hand at work: every change the segmenter gave it is its own (walking from the hall to the
             # kitchen: the hand works on the hall, the walker arrives in the kitchen).
             linked |= {x for a in changed for x in a.args}
@@ -258,12 +259,33 @@ def _holds(literal: Literal, state: frozenset[Atom]) -> bool:
     return (literal.atom in state) == literal.positive
 
 
-def _other_hand_acting(seg: dict, skills: list[dict]) -> bool:
-    """Whether a segment of the other hand that is not Idle overlaps ``seg`` in time."""
-    start, end = float(seg.get("start", 0.0)), float(seg.get("end", 0.0))
-    return any(other["hand"] != seg["hand"] and other["activity"] not in SKIPPED
-               and float(other.get("start", 0.0)) <= end and start <= float(other.get("end", 0.0))
-               for other in skills)
+class _Acting:
+    """Each hand's segments that are not Idle, as intervals sorted by start, to ask in logarithmic time
+    whether the other hand was at work during a segment (hours of demonstration have tens of thousands)."""
+
+    def __init__(self, skills: list[dict]) -> None:
+        import itertools
+
+        self.starts: dict[str, list[float]] = {}
+        self.reach: dict[str, list[float]] = {}  # the latest end among the intervals up to each one
+        for hand in {s["hand"] for s in skills}:
+            spans = sorted((float(s.get("start", 0.0)), float(s.get("end", 0.0))) for s in skills
+                           if s["hand"] == hand and s["activity"] not in SKIPPED)
+            self.starts[hand] = [a for a, _ in spans]
+            self.reach[hand] = list(itertools.accumulate((b for _, b in spans), max))
+
+    def overlaps(self, seg: dict) -> bool:
+        """Whether a segment of another hand that is not Idle overlaps ``seg`` in time."""
+        import bisect
+
+        start, end = float(seg.get("start", 0.0)), float(seg.get("end", 0.0))
+        for hand, starts in self.starts.items():
+            if hand == seg["hand"]:
+                continue
+            i = bisect.bisect_right(starts, end)  # intervals starting no later than seg ends
+            if i and self.reach[hand][i - 1] >= start:
+                return True
+        return False
 
 
 def _atom(text: str, source: str) -> Atom:
