@@ -225,7 +225,7 @@ app = typer.Typer(
     epilog="Run 'guided-lfd COMMAND -h' for a command's arguments, an example and its exit codes.",
     context_settings=CONTEXT_SETTINGS,
     no_args_is_help=True,
-    # typer's --install-completion / --show-completion: costs no start-up (measured, see README).
+    # typer's --install-completion / --show-completion: costs no start-up (measured, see docs/benchmarks.md).
     add_completion=True,
     pretty_exceptions_enable=False,
     # click's plain formatter: help is the same plain text on a terminal, a pipe or CliRunner

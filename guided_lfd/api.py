@@ -1,7 +1,7 @@
 """The library's front door: read a task, plan, validate (excuses: :mod:`guided_lfd.excuse.engine`).
 
-A robot program imports these from :mod:`guided_lfd` (see the README's
-"Using guided-lfd from Python"); the command line is a thin layer over the
+A robot program imports these from :mod:`guided_lfd` (see
+``docs/python.md``); the command line is a thin layer over the
 same calls, so a program gets exactly what ``guided-lfd`` prints.
 """
 

@@ -62,7 +62,7 @@ EXIT_BAD_OPTION = 37
 EXIT_OUTPUT = 40
 EXIT_INTERRUPTED = 130
 
-#: Exit code -> short meaning; the README table and a test are generated from it.
+#: Exit code -> short meaning; docs/exit-codes.md's table and a test are generated from it.
 EXIT_CODES: dict[int, str] = {
     EXIT_OK: "success",
     EXIT_INTERNAL: "internal error (a bug)",

@@ -4,7 +4,7 @@ Every subcommand's help is read through typer's CliRunner (no terminal):
 its usage line names the arguments by their metavars, every option that
 takes a value shows one, the help ends with an example that runs and the
 exit codes the command can give, each a documented one
-(guided_lfd/errors.py's EXIT_CODES, the README's table).
+(guided_lfd/errors.py's EXIT_CODES, docs/exit-codes.md's table).
 """
 
 from __future__ import annotations
@@ -20,7 +20,7 @@ import pytest
 from conftest import ROOT
 from guided_lfd.errors import EXIT_CODES, EXIT_INTERNAL, EXIT_INTERRUPTED, EXIT_OK, EXIT_USAGE
 
-#: Each subcommand's usage line, in the README's (the paper's) words.
+#: Each subcommand's usage line, in the words of docs/commands.md (the paper's).
 USAGES = {
     "excuse": "guided-lfd excuse [OPTIONS] DOMAIN PROBLEM",
     "plan": "guided-lfd plan [OPTIONS] DOMAIN PROBLEM",
@@ -62,8 +62,8 @@ def _section(text: str, title: str) -> list[str]:
 
 
 def _readme_exit_codes() -> set[int]:
-    readme = (ROOT / "README.md").read_text()
-    table = readme.split("\n## Exit codes\n", 1)[1].split("\n## ", 1)[0]
+    readme = (ROOT / "docs" / "exit-codes.md").read_text()
+    table = readme.split("# Exit codes\n", 1)[1].split("\n## ", 1)[0]
     return {int(m.group(1)) for m in re.finditer(r"^\| (\d+) \|", table, re.MULTILINE)}
 
 
@@ -150,7 +150,7 @@ def test_help_ends_with_an_example_and_the_documented_exit_codes(name, runner, a
         assert match, line
         code, meaning = int(match.group(1)), match.group(2)
         assert code in EXIT_CODES, f"{name} -h names exit code {code}, not in guided_lfd.errors.EXIT_CODES"
-        assert code in readme, f"{name} -h names exit code {code}, not in the README's table"
+        assert code in readme, f"{name} -h names exit code {code}, not in docs/exit-codes.md's table"
         if code != EXIT_OK:
             assert meaning == EXIT_CODES[code]
         seen.append(code)

@@ -1,4 +1,4 @@
-"""The library a robot program imports: the README's example runs, and it gives the command line's documents."""
+"""The library a robot program imports: docs/python.md's example runs, and it gives the command line's documents."""
 
 from __future__ import annotations
 
@@ -15,8 +15,7 @@ from guided_lfd import ExcuseOptions, GuidedLfdError, find_excuses, plan, read_t
 
 
 def test_the_readme_example_runs():
-    readme = (ROOT / "README.md").read_text()
-    section = readme.split("## Using guided-lfd from Python", 1)[1]
+    section = (ROOT / "docs" / "python.md").read_text()
     code = re.search(r"```python\n(.*?)```", section, re.S).group(1)
     out = fresh_interpreter(code)
     assert out.splitlines()[:2] == ["excuse-found", "+(clear pinkdrawer)"]

@@ -91,9 +91,9 @@ def test_exit_codes_are_distinct_and_documented():
 def test_readme_documents_every_exit_code():
     from conftest import ROOT
 
-    readme = (ROOT / "README.md").read_text()
+    readme = (ROOT / "docs" / "exit-codes.md").read_text()
     for code in errors.EXIT_CODES:
-        assert f"\n| {code} |" in readme, f"exit code {code} missing from README"
+        assert f"\n| {code} |" in readme, f"exit code {code} missing from docs/exit-codes.md"
 
 
 def _keywords_in_capitals(text: str) -> str:

@@ -4,11 +4,10 @@ the same activities, boundaries, objects and fluents, whatever the segmenter's a
 from __future__ import annotations
 
 import json
-from pathlib import Path
 
 import pytest
 
-from golden_segments import GOLDEN, ROOT, household_renders, segments_of, traces
+from golden_segments import GOLDEN, ROOT, segments_of, traces
 
 RECORDED = {d["trace"]: d["segments"] for d in map(json.loads, GOLDEN.read_text().splitlines())}
 
@@ -18,13 +17,6 @@ def test_the_golden_file_covers_every_trace():
     assert len(RECORDED) >= 100
 
 
-@pytest.mark.parametrize("name", sorted(n for n in RECORDED if not n.startswith("household:")))
+@pytest.mark.parametrize("name", sorted(RECORDED))
 def test_a_trace_segments_as_recorded(name):
     assert segments_of(ROOT / name) == RECORDED[name]
-
-
-def test_the_household_renders_segment_as_recorded(tmp_path: Path):
-    rendered = household_renders(tmp_path)
-    assert rendered
-    for name, trace in rendered:
-        assert segments_of(trace) == RECORDED[name], name

@@ -447,7 +447,7 @@ def _name_manipulation(obj: str, before: frozenset[Atom], after: frozenset[Atom]
 
 
 def segments_document(demo: Demonstration, segments: list[Segment], state_path: str) -> dict:
-    """The ``guided-lfd/segments`` JSON body (see README)."""
+    """The ``guided-lfd/segments`` JSON body (see docs/formats.md)."""
     def atoms(xs):
         return [str(a) for a in sorted(xs)]
 

@@ -56,7 +56,7 @@ def _excuse_dict(e: Excuse, spellings: dict[str, str]) -> dict[str, Any]:
 
 
 def excuse_document(report: ExcuseReport, domain: str, problem: str, spellings: dict[str, str]) -> dict[str, Any]:
-    """The body of the ``guided-lfd/excuse`` JSON document (see the README's JSON formats)."""
+    """The body of the ``guided-lfd/excuse`` JSON document (see docs/formats.md)."""
     first = report.excuse
     return {
         "domain": domain,

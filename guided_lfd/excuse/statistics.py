@@ -14,7 +14,7 @@ class ExcuseStatistics:
 
     A field is None until the run gets there (a run that timed out while
     grounding has only ``phase`` and ``time_s``); :meth:`to_dict` leaves
-    those out, in the order the README documents.
+    those out, in the order docs/formats.md documents.
     """
 
     ground_atoms: int | None = None

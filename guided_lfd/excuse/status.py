@@ -24,7 +24,7 @@ class ExcuseStatus(StrEnum):
 
     @property
     def exit_code(self) -> int:
-        """The command line's exit code for this outcome (the README's table)."""
+        """The command line's exit code for this outcome (docs/exit-codes.md)."""
         return _EXIT_CODES[self]
 
 
