@@ -87,11 +87,11 @@ class Segment:
 def frame_labels(frames, objects: dict[str, str]) -> np.ndarray:
     """The decision tree, applied to every frame (``frames`` from :func:`load_demonstration`)."""
     moving = frames["hand_move"].to_numpy(dtype=bool)
-    held = (frames["in_hand"] != "").to_numpy()
-    target = frames["act_on"].to_numpy()
+    in_hand = frames["in_hand"].to_numpy(dtype=object)
+    held = in_hand != ""
+    target = frames["act_on"].to_numpy(dtype=object)
     targeted = target != ""
     grip = frames["grip_closed"].to_numpy(dtype=bool)
-    in_hand = frames["in_hand"].to_numpy()
     # Carrying toward somewhere: the hand acts on an object other than the one it holds.
     toward = targeted & (target != in_hand)
     onto_item = toward & (_types(target, objects, "") == _types(in_hand, objects, "#"))
@@ -277,16 +277,15 @@ def _late_transports(times: np.ndarray, labels: np.ndarray, onset: np.ndarray) -
 def _hand_segments(demo: Demonstration, labels: np.ndarray, hand: str) -> list[Segment]:
     """One hand's segments, without fluents yet."""
     frames = demo.frames
-    idx = np.flatnonzero((frames["hand"] == hand).to_numpy())
+    idx = np.flatnonzero(frames["hand"].to_numpy(dtype=object) == hand)
     if idx.size == 0:
         return []
     times = frames["time"].to_numpy()[idx]
-    onset = (frames["hand_move"].to_numpy(dtype=bool) & (frames["in_hand"] != "").to_numpy()
-             & (frames["act_on"] == frames["in_hand"]).to_numpy())[idx]
+    all_held, all_target = frames["in_hand"].to_numpy(dtype=object)[idx], frames["act_on"].to_numpy(dtype=object)[idx]
+    onset = frames["hand_move"].to_numpy(dtype=bool)[idx] & (all_held != "") & (all_target == all_held)
     hand_labels = _late_transports(times, labels[idx].copy(), onset)
     runs = _debounce(times, _lagged_reaches(times, _runs(times, hand_labels)))
-    held = frames["in_hand"].to_numpy()[idx]
-    target = frames["act_on"].to_numpy()[idx]
+    held, target = all_held, all_target
     out = []
     for label, first, last in runs:
         obj, tgt = _roles(label, held[first:last + 1], target[first:last + 1])
@@ -413,11 +412,11 @@ def segment(demo: Demonstration) -> list[Segment]:
 
 
 def _most_common(values) -> str:
-    vals = [v for v in values if v]
-    if not vals:
-        return ""
-    names, counts = np.unique(np.array(vals, dtype=object).astype(str), return_counts=True)
-    return str(names[int(np.argmax(counts))])
+    from collections import Counter
+
+    counts = Counter(str(v) for v in values if v)
+    # The most frequent name, the first in name order among equals.
+    return min(counts.items(), key=lambda kv: (-kv[1], kv[0]))[0] if counts else ""
 
 
 def _hand_state(values) -> str:

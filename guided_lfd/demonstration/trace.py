@@ -102,11 +102,12 @@ def default_state_path(trace_path: str) -> str:
 
 
 def _csv(text: str, path: str, columns: tuple[str, ...], numeric: tuple[str, ...] = ()) -> pd.DataFrame:
-    """The CSV ``text`` as strings, ``numeric`` columns as floats (pandas' own parser: the fast path); a file
-    whose numeric columns do not all parse is read as strings, for the checks to say where and what."""
+    """The CSV ``text`` (read from ``path``) as strings, ``numeric`` columns as floats (pandas' own parser,
+    from the file itself where there is one: the fast path); a file whose numeric columns do not all parse is
+    read as strings, for the checks to say where and what."""
     if numeric:
         try:
-            frame = pd.read_csv(io.StringIO(text), dtype={c: str for c in columns if c not in numeric}
+            frame = pd.read_csv(path if path != "-" else io.StringIO(text), encoding="utf-8-sig", dtype={c: str for c in columns if c not in numeric}
                                 | {c: np.float64 for c in numeric}, keep_default_na=False, skipinitialspace=True)
         except (ValueError, TypeError, pd.errors.ParserError, pd.errors.EmptyDataError):
             frame = None
