@@ -307,7 +307,9 @@ def _bindings(
     params = [v for v, _ in schema.params]
     type_sets = {v: set(by_type.get(t, [])) for v, t in schema.params}
     relations: dict[str, list[tuple[str, ...]]] = {}
-    for atom in init:
+    # In sorted order: a set's order follows the string hash, which changes from one process to the next,
+    # and the ground actions' order decides the planner's ties (the same command must print the same plan).
+    for atom in sorted(init):
         if atom.predicate in static:
             relations.setdefault(atom.predicate, []).append(atom.args)
     joins = sorted(
