@@ -1,6 +1,8 @@
-"""The linear-time segmenter's building blocks against the rules as first written (issue #30): the quadratic
-debouncing loop and the per-frame run builder are kept here as the reference, and random label sequences
-(jitter, dropped frames, long gaps) must give the same runs."""
+"""The linear-time segmenter's building blocks against the rules written out plainly (issue #30): a quadratic
+debouncing loop and a per-frame run builder are kept here as the reference, and random label sequences
+(jitter, dropped frames, long gaps) must give the same runs.  (The first debouncer also joined, after its
+first merge, every two runs of one label a long gap had split, which no shipped or test trace ever showed:
+the segmenter, written or streamed, now keeps them apart, as "a longer gap splits a segment" says.)"""
 
 from __future__ import annotations
 
@@ -22,7 +24,7 @@ def reference_runs(times, labels):
 
 
 def reference_debounce(times, runs):
-    frame = float(np.median(np.diff(times))) if len(times) > 1 else 0.0
+    frame = round(float(np.median(np.diff(times))), 6) if len(times) > 1 else 0.0
 
     def length(r):
         step = float(times[r[2] + 1] - times[r[2]]) if r[2] + 1 < len(times) else frame
@@ -50,13 +52,10 @@ def reference_debounce(times, runs):
         else:
             runs[k + 1][1] = runs[k][1]
             del runs[k]
-        merged = []
-        for r in runs:
-            if merged and merged[-1][0] == r[0]:
-                merged[-1][2] = r[2]
-            else:
-                merged.append(r)
-        runs = merged
+        # The absorbed run's neighbours, now touching with one label, join (runs a long gap split stay apart).
+        if 0 < k < len(runs) and runs[k - 1][0] == runs[k][0]:
+            runs[k - 1][2] = runs[k][2]
+            del runs[k]
     return runs
 
 

@@ -38,7 +38,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from guided_lfd.demonstration.trace import EFFECT_DELAY_S, Demonstration
+from guided_lfd.demonstration.trace import EFFECT_DELAY_S, Demonstration, frame_period
 from guided_lfd.pddl.model import Atom
 
 #: Runs shorter than this are sensor jitter wherever they occur (s): a few
@@ -134,7 +134,7 @@ class _RunList:
     def __init__(self, times: np.ndarray, runs: list[list]) -> None:
         n = len(runs)
         self.times = times
-        self.frame = float(np.median(np.diff(times))) if len(times) > 1 else 0.0
+        self.frame = frame_period(times)
         self.label = [r[0] for r in runs]
         self.first = [r[1] for r in runs]
         self.last = [r[2] for r in runs]
@@ -179,17 +179,6 @@ class _RunList:
             k = self.nxt[k]
         return out
 
-    def join_all(self) -> None:
-        """Join every two neighbours with the same label (the left one stays)."""
-        for k in self.order():
-            if not self.alive[k]:
-                continue
-            q = self.nxt[k]
-            while q != -1 and self.label[q] == self.label[k]:
-                self.last[k] = self.last[q]
-                self.remove(q)
-                q = self.nxt[k]
-
     def keyed(self, k: int) -> tuple[float, int, int]:
         """The heap entry of run ``k``: shortest first, then the earliest (the rule's order)."""
         return self.length(k), self.first[k], k
@@ -225,19 +214,11 @@ def _debounce(times: np.ndarray, runs: list[list]) -> list[list]:
     rl = _RunList(times, runs)
     heap = [rl.keyed(k) for k in range(len(runs)) if rl.noise(k)]
     heapq.heapify(heap)
-    merged_once = False
     while rl.count > 1 and heap:
         size, start, k = heapq.heappop(heap)
         if not rl.alive[k] or rl.first[k] != start or rl.length(k) != size or not rl.noise(k):
             continue  # stale: the run changed since (a fresh entry is in the heap if it is noise now)
         touched = rl.absorb(k)
-        if not merged_once:
-            # The first merge also joins the runs a long gap split (the rule as it has always run).
-            merged_once = True
-            rl.join_all()
-            heap = [rl.keyed(x) for x in rl.order() if rl.noise(x)]
-            heapq.heapify(heap)
-            continue
         for x in touched:
             if rl.alive[x] and rl.noise(x):
                 heapq.heappush(heap, rl.keyed(x))
@@ -456,29 +437,39 @@ def segments_document(demo: Demonstration, segments: list[Segment], state_path: 
         "objects": dict(sorted(demo.objects.items())),
         "spellings": dict(sorted(demo.spellings.items())),
         "initial": atoms(demo.initial),
-        "segments": [
-            {"index": s.index, "hand": s.hand, "activity": s.activity, "start": round(s.start, 4),
-             "end": round(s.end, 4), "object": s.object, "target": s.target,
-             "held_before": s.held_before, "held_after": s.held_after,
-             "added": atoms(s.added), "deleted": atoms(s.deleted),
-             "before": atoms(s.before), "after": atoms(s.after)}
-            for s in segments
-        ],
+        "segments": [segment_json(s) for s in segments],
     }
     if demo.vocabulary is not None:  # only where the state file declared it: older documents stay as they were
         doc["vocabulary"] = demo.vocabulary.to_dict()
     return doc
 
 
-def segments_csv(segments: list[Segment]) -> str:
-    """Segments as CSV (fluent lists joined with ``;``)."""
+#: The columns of the segments CSV.
+CSV_COLUMNS = ("index", "hand", "activity", "start", "end", "object", "target", "added", "deleted")
+
+
+def segments_csv(segments: list[Segment], header: bool = True) -> str:
+    """Segments as CSV (fluent lists joined with ``;``), with the header row unless told otherwise."""
     import csv
     import io
 
     buf = io.StringIO()
     writer = csv.writer(buf, lineterminator="\n")
-    writer.writerow(["index", "hand", "activity", "start", "end", "object", "target", "added", "deleted"])
+    if header:
+        writer.writerow(CSV_COLUMNS)
     for s in segments:
         writer.writerow([s.index, s.hand, s.activity, f"{s.start:.4f}", f"{s.end:.4f}", s.object, s.target,
                          ";".join(str(a) for a in sorted(s.added)), ";".join(str(a) for a in sorted(s.deleted))])
     return buf.getvalue()
+
+
+def segment_json(s: Segment) -> dict:
+    """One segment as the segments document (and a JSON Lines stream) writes it."""
+    def atoms(xs):
+        return [str(a) for a in sorted(xs)]
+
+    return {"index": s.index, "hand": s.hand, "activity": s.activity, "start": round(s.start, 4),
+            "end": round(s.end, 4), "object": s.object, "target": s.target,
+            "held_before": s.held_before, "held_after": s.held_after,
+            "added": atoms(s.added), "deleted": atoms(s.deleted),
+            "before": atoms(s.before), "after": atoms(s.after)}

@@ -102,16 +102,12 @@ def default_state_path(trace_path: str) -> str:
 
 
 def _csv(text: str, path: str, columns: tuple[str, ...], numeric: tuple[str, ...] = ()) -> pd.DataFrame:
-    """The CSV ``text`` (read from ``path``) as strings, ``numeric`` columns as floats (pandas' own parser,
-    from the file itself where there is one: the fast path); a file whose numeric columns do not all parse is
-    read as strings, for the checks to say where and what."""
+    """The CSV ``text`` as strings, ``numeric`` columns as floats where pandas' own parser reads them all as
+    plain finite numbers (the fast path); otherwise every column as strings, for the checks to say where and
+    what is wrong, as they always have."""
     if numeric:
-        try:
-            frame = pd.read_csv(path if path != "-" else io.StringIO(text), encoding="utf-8-sig", dtype={c: str for c in columns if c not in numeric}
-                                | {c: np.float64 for c in numeric}, keep_default_na=False, skipinitialspace=True)
-        except (ValueError, TypeError, pd.errors.ParserError, pd.errors.EmptyDataError):
-            frame = None
-        if frame is not None and _all_parsed(frame, columns, numeric):
+        frame = _fast_frame(text, columns, numeric)
+        if frame is not None:
             return frame
     try:
         frame = pd.read_csv(io.StringIO(text), dtype=str, keep_default_na=False, skipinitialspace=True)
@@ -135,13 +131,38 @@ def _csv(text: str, path: str, columns: tuple[str, ...], numeric: tuple[str, ...
     return frame
 
 
+def _fast_frame(text: str, columns: tuple[str, ...], numeric: tuple[str, ...]) -> pd.DataFrame | None:
+    """The trace read by pandas' C parser, numbers as floats; None where the string path must decide (a '+'
+    sign, which the string path reads one unit in the last place off; words such as true; anything odd)."""
+    import csv
+    import warnings
+
+    if "+" in text:
+        return None
+    header = next(csv.reader([text.split("\n", 1)[0]]), [])
+    text_columns = {name: str for name in header if name.strip() not in numeric}  # header names as written
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")  # a mixed column warns; it is then not numbers and falls back
+            frame = pd.read_csv(io.BytesIO(text.encode("utf-8")), dtype=text_columns, keep_default_na=False,
+                                skipinitialspace=True, compression=None)
+    except (ValueError, TypeError, pd.errors.ParserError, pd.errors.EmptyDataError, UnicodeError):
+        return None
+    if not _all_parsed(frame, columns, numeric):
+        return None
+    for column in numeric:
+        frame[column] = frame[column].to_numpy(dtype=float) + 0.0  # -0 is 0, as the string path reads it
+    return frame
+
+
 def _all_parsed(frame: pd.DataFrame, columns: tuple[str, ...], numeric: tuple[str, ...]) -> bool:
     """Whether the fast read of a trace needs no check to say where it is wrong: every column there, rows,
     every number finite, no time negative (the string path's checks quote such values as written)."""
     frame.columns = [c.strip() for c in frame.columns]
     if frame.empty or any(c not in frame.columns for c in columns):
         return False
-    if any(frame[c].dtype.kind != "f" or not np.isfinite(frame[c].to_numpy()).all() for c in numeric):
+    if any(frame[c].dtype.kind not in "fi" or not np.isfinite(frame[c].to_numpy(dtype=float)).all()
+           for c in numeric):
         return False
     return "time" not in numeric or not (frame["time"].to_numpy() < 0).any()
 
@@ -346,6 +367,14 @@ def load_demonstration(trace_path: str, state_path: str | None = None) -> Demons
                  trace_path, TRACE_COLUMNS, numeric=("time", "x", "y", "z"))
     times = _times(frame, trace_path)
     objects, initial, events, spellings, vocabulary = load_state(state_path, (float(times.min()), float(times.max())))
+    frame = trace_frame(frame, times, trace_path, objects, Path(state_path).name)
+    return Demonstration(frame, objects, initial, events, spellings, trace_path, vocabulary)
+
+
+def trace_frame(frame: pd.DataFrame, times: np.ndarray, trace_path: str, objects: dict[str, str],
+                state_name: str) -> pd.DataFrame:
+    """The trace's rows checked (hands, grips, objects the state file declares, time never going back for a
+    hand) and normalised, with the derived ``hand_move`` column; TraceError at the first bad cell."""
     for axis in ("x", "y", "z"):
         frame[axis] = _numbers(frame, trace_path, axis)
     frame["time"] = times
@@ -370,7 +399,7 @@ def load_demonstration(trace_path: str, state_path: str | None = None) -> Demons
         if unknown.size:
             row = int(unknown[0])
             raise TraceError(
-                f"column '{column}': object '{frame[column].iloc[row].strip()}' is never declared in {Path(state_path).name}",
+                f"column '{column}': object '{frame[column].iloc[row].strip()}' is never declared in {state_name}",
                 _where(trace_path, frame, row, column),
             )
         frame[column] = names[codes]
@@ -384,7 +413,7 @@ def load_demonstration(trace_path: str, state_path: str | None = None) -> Demons
                                  f"({times[idx[back[0]]]:g} s, then {times[row]:g} s)",
                                  _where(trace_path, frame, row, "time"))
     frame["hand_move"] = hand_move(frame)
-    return Demonstration(frame, objects, initial, events, spellings, trace_path, vocabulary)
+    return frame
 
 
 def _factorised(column: pd.Series) -> tuple[np.ndarray, np.ndarray]:
@@ -392,6 +421,13 @@ def _factorised(column: pd.Series) -> tuple[np.ndarray, np.ndarray]:
     is done once per distinct value, not once per frame."""
     codes, uniques = pd.factorize(column, sort=False)
     return codes, np.array([str(u).strip().lower() for u in uniques] or [""], dtype=object)
+
+
+def frame_period(times: np.ndarray) -> float:
+    """A hand's frame period: the median interval between its frames, to the microsecond (clocks written
+    to 0.1 ms make the median of 0.05 s intervals 0.04999999999999716 on one stretch of a recording and
+    0.05 on another: rules that compare durations with multiples of it must not tip over on that)."""
+    return round(float(np.median(np.diff(times))), 6) if len(times) > 1 else 0.0
 
 
 def hand_move(frame: pd.DataFrame) -> np.ndarray:
@@ -405,13 +441,14 @@ def hand_move(frame: pd.DataFrame) -> np.ndarray:
         t = frame["time"].to_numpy()[idx]
         pos = frame[["x", "y", "z"]].to_numpy()[idx]
         # At low frame rates the window must still reach one neighbouring frame on each side.
-        half = max(MOVE_WINDOW_S / 2, 1.01 * float(np.median(np.diff(t)))) if idx.size > 1 else half
+        period = frame_period(t)
+        half = max(MOVE_WINDOW_S / 2, 1.01 * period) if idx.size > 1 else half
         lo = np.searchsorted(t, t - half, side="left")
         hi = np.searchsorted(t, t + half, side="right") - 1
         # A few dropped frames: still reach the nearest frame before and after (a one-sided window over
         # one interval doubles the noise on the speed); across a longer dropout, not (the hand may have
         # moved while untracked: that motion is not this frame's).
-        reach = 3.01 * float(np.median(np.diff(t)))
+        reach = 3.01 * period
         before = np.maximum(np.searchsorted(t, t, side="left") - 1, 0)
         after = np.minimum(np.searchsorted(t, t, side="right"), len(t) - 1)
         lo = np.where(t - t[before] <= reach, np.minimum(lo, before), lo)
@@ -424,6 +461,6 @@ def hand_move(frame: pd.DataFrame) -> np.ndarray:
     return out
 
 
-__all__ = ["Demonstration", "load_demonstration", "load_state", "parse_fluent", "hand_move", "TRACE_COLUMNS",
+__all__ = ["Demonstration", "load_demonstration", "load_state", "trace_frame", "frame_period", "parse_fluent", "hand_move", "TRACE_COLUMNS",
            "STATE_COLUMNS", "HAND_PREDICATES", "MOVE_THRESHOLD_M_S", "MOVE_WINDOW_S", "EFFECT_DELAY_S",
            "PDDL_NAME", "PDDL_RESERVED", "pddl_name_defect"]

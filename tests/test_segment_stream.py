@@ -1,0 +1,104 @@
+"""Segmenting a trace while it is recorded (issue #30): the streamed segments are the whole file's, a pipe's
+segments come out before the recorder has finished, and a bad row late in a stream keeps what came before."""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+import threading
+from pathlib import Path
+
+import pytest
+
+from conftest import ROOT
+from golden_segments import GOLDEN
+from guided_lfd.demonstration.stream import stream_segments
+from guided_lfd.demonstration.trace import default_state_path
+
+RECORDED = {d["trace"]: d["segments"] for d in map(json.loads, GOLDEN.read_text().splitlines())}
+K1 = ROOT / "data" / "demos" / "kitchen-1" / "P1-complete.csv"
+
+
+def _key(s) -> list:
+    return [s.hand, s.activity, round(s.start, 4), round(s.end, 4), s.object, s.target, s.held_before,
+            s.held_after, sorted(map(str, s.added)), sorted(map(str, s.deleted))]
+
+
+def _streamed(trace: Path, state: Path, batch_rows: int) -> list[list]:
+    with trace.open("rb") as source:
+        return sorted(_key(s) for s in stream_segments(source, str(state), str(trace), batch_rows=batch_rows))
+
+
+@pytest.mark.parametrize("name", sorted(RECORDED))
+def test_a_streamed_trace_gives_the_whole_files_segments(name):
+    trace = ROOT / name
+    assert _streamed(trace, Path(default_state_path(str(trace))), batch_rows=97) == sorted(RECORDED[name])
+
+
+@pytest.mark.parametrize("source", ["data/demos/kitchen-2/P3-complete.csv", "tests/data/traces/cupboard/field-20hz/D2.csv",
+                                    "tests/data/traces/stacking/drops-dups/D1.csv"])
+def test_a_long_recording_streamed_in_windows_gives_the_whole_files_segments(source, tmp_path):
+    """Eight copies end to end (two to three minutes): windows are cut behind the segments already written
+    and a hand idle throughout outlasts the longest window."""
+    sys.path.insert(0, str(ROOT / "benchmarks"))
+    import segment_scaling
+
+    from guided_lfd.demonstration.segment import segment
+    from guided_lfd.demonstration.trace import load_demonstration
+
+    segment_scaling.SOURCE = ROOT / source
+    trace, state = segment_scaling.make(8, tmp_path)
+    whole = sorted(_key(s) for s in segment(load_demonstration(str(trace))))
+    assert _streamed(trace, state, batch_rows=1500) == whole
+
+
+def _pipe(state: Path, *flags: str) -> subprocess.Popen:
+    return subprocess.Popen([sys.executable, "-c", "from cli.main import run; run()", "segment", "-", "--state",
+                             str(state), *flags], stdin=subprocess.PIPE, stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE, cwd=ROOT)
+
+
+def test_a_piped_recording_gives_its_first_segments_before_it_ends(tmp_path):
+    """The recorder writes half its frames and waits: segments must come out then (a tool that waited for the
+    end would never answer, and the test would fail on its timeout, not on the machine's speed)."""
+    sys.path.insert(0, str(ROOT / "benchmarks"))
+    import segment_scaling
+
+    segment_scaling.SOURCE = K1
+    trace, state = segment_scaling.make(6, tmp_path)
+    lines = trace.read_bytes().splitlines(keepends=True)
+    proc = _pipe(state, "--csv")
+    half = len(lines) // 2
+    proc.stdin.write(b"".join(lines[:half]))
+    proc.stdin.flush()
+    got: list[bytes] = []
+    reader = threading.Thread(target=lambda: got.extend(proc.stdout.readline() for _ in range(2)))
+    reader.start()
+    reader.join(timeout=120)  # the header, then the first segment, while the recorder still holds the rest
+    assert not reader.is_alive(), "no segment before the recording ended"
+    assert got[0].startswith(b"index,hand,activity") and got[1].count(b",") >= 8
+    proc.stdin.write(b"".join(lines[half:]))
+    proc.stdin.close()
+    rest = proc.stdout.read()
+    assert proc.wait(timeout=120) == 0, proc.stderr.read()
+    piped = len(rest.splitlines()) + 1
+    whole = subprocess.run([sys.executable, "-c", "from cli.main import run; run()", "segment", str(trace), "--csv"],
+                           capture_output=True, cwd=ROOT, check=True).stdout
+    assert piped == len(whole.splitlines()) - 1  # every segment of the file, in the order they closed
+
+
+def test_a_bad_row_late_in_a_stream_keeps_the_segments_before_it(tmp_path):
+    sys.path.insert(0, str(ROOT / "benchmarks"))
+    import segment_scaling
+
+    segment_scaling.SOURCE = K1
+    trace, state = segment_scaling.make(6, tmp_path)
+    lines = trace.read_bytes().splitlines(keepends=True)
+    bad = len(lines) - 40
+    lines[bad] = b"12x,right,0.1,0.2,0.9,open,,\n"
+    proc = _pipe(state, "--jsonl")
+    out, err = proc.communicate(b"".join(lines), timeout=120)
+    assert proc.returncode == 36
+    assert f"-:{bad + 1}:1: trace error: column 'time': expected a finite number, got '12x'" in err.decode()
+    assert len(out.splitlines()) > 10 and all(json.loads(line)["hand"] for line in out.splitlines())
