@@ -68,8 +68,14 @@ def test_a_piped_recording_gives_its_first_segments_before_it_ends(tmp_path):
     segment_scaling.SOURCE = K1
     trace, state = segment_scaling.make(6, tmp_path)
     lines = trace.read_bytes().splitlines(keepends=True)
-    proc = _pipe(state, "--csv")
     half = len(lines) // 2
+    # The recorder writes the state file as it goes too: so far only what happened in the first half.
+    half_time = float(lines[half].split(b",")[0])
+    state_rows = state.read_bytes().splitlines(keepends=True)
+    later = [r for r in state_rows[1:] if not r.startswith(b"0,") and float(r.split(b",")[0]) >= half_time]
+    growing = tmp_path / "growing.state.csv"
+    growing.write_bytes(b"".join(r for r in state_rows if r not in later))
+    proc = _pipe(growing, "--csv")
     proc.stdin.write(b"".join(lines[:half]))
     proc.stdin.flush()
     got: list[bytes] = []
@@ -78,14 +84,20 @@ def test_a_piped_recording_gives_its_first_segments_before_it_ends(tmp_path):
     reader.join(timeout=120)  # the header, then the first segment, while the recorder still holds the rest
     assert not reader.is_alive(), "no segment before the recording ended"
     assert got[0].startswith(b"index,hand,activity") and got[1].count(b",") >= 8
+    with growing.open("ab") as more:
+        more.write(b"".join(later))
     proc.stdin.write(b"".join(lines[half:]))
     proc.stdin.close()
     rest = proc.stdout.read()
     assert proc.wait(timeout=120) == 0, proc.stderr.read()
-    piped = len(rest.splitlines()) + 1
     whole = subprocess.run([sys.executable, "-c", "from cli.main import run; run()", "segment", str(trace), "--csv"],
                            capture_output=True, cwd=ROOT, check=True).stdout
-    assert piped == len(whole.splitlines()) - 1  # every segment of the file, in the order they closed
+
+    def rows(text: bytes) -> list[bytes]:  # a segment without its index (the stream counts in closing order)
+        return sorted(line.split(b",", 1)[1] for line in text.splitlines()[1:] if line)
+
+    # Every segment of the file, with the changes the recorder wrote after the stream started.
+    assert rows(b"".join(got) + rest) == rows(whole)
 
 
 def test_a_bad_row_late_in_a_stream_keeps_the_segments_before_it(tmp_path):

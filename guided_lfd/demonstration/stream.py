@@ -19,7 +19,8 @@ the rows it needs from before it, in a *window*:
 The segments are those ``segment`` finds in the whole file (tests check that
 on every shipped and test trace), written in the order they close: the
 ``index`` of a streamed segment is its place in that order.  The state file
-is read when the stream starts.
+may grow while it is read (its rows in time order, as a recorder writes
+them): it is read again, up to its last complete line, before each window.
 """
 
 from __future__ import annotations
@@ -106,6 +107,31 @@ def _batches(lines: Iterator[bytes | None], batch_rows: int) -> Iterator[list[by
         yield batch
 
 
+class _GrowingState:
+    """A state file a recorder may still be writing: read up to its last complete line, again when it grew."""
+
+    def __init__(self, path: str) -> None:
+        self.path, self.size = path, -1
+
+    def grew(self) -> bool:
+        """Whether the file is longer than when last read."""
+        import os
+
+        try:
+            return os.path.getsize(self.path) != self.size
+        except OSError:
+            return False
+
+    def read(self):
+        """``load_state`` of the file's complete lines."""
+        from guided_lfd.pddl.source import read_text
+
+        text = read_text(self.path, "an environment state CSV (time,fluent,value)")
+        self.size = len(text.encode("utf-8"))
+        complete = text[: text.rfind("\n") + 1] if "\n" in text else text
+        return load_state(self.path, text=complete or text)
+
+
 class _Window:
     """The rows a window holds, their file lines and the world's state where the window starts."""
 
@@ -153,7 +179,8 @@ def stream_segments(source: IO[bytes], state_path: str, path: str = "-", batch_r
     naming its line, raised after every segment closed before it has been yielded."""
     from pathlib import Path
 
-    objects, initial, events, spellings, vocabulary = load_state(state_path)
+    state = _GrowingState(state_path)
+    objects, initial, events, spellings, vocabulary = state.read()
     lines = _lines(source, flush_s)
     header = next((x for x in lines if x is not None), b"")
     if not header.strip():
@@ -162,8 +189,13 @@ def stream_segments(source: IO[bytes], state_path: str, path: str = "-", batch_r
     written: dict[str, float] = {}  # the end of each hand's last written segment
     first_seen: dict[str, Segment] = {}  # each hand's earliest open segment, as seen while whole
     line = 1
-    close = lambda final: _close(window, path, objects, spellings, vocabulary, Path(state_path).name,  # noqa: E731
-                                 written, first_seen, final)
+    def close(final: bool) -> Iterator[Segment]:
+        nonlocal objects, spellings, vocabulary
+        if state.grew():  # the recorder wrote more of the world's changes
+            objects, _, window.events, spellings, vocabulary = state.read()
+        return _close(window, path, objects, spellings, vocabulary, Path(state_path).name, written, first_seen,
+                      final)
+
     try:
         for batch in _batches(lines, batch_rows):
             window.rows += batch

@@ -208,15 +208,18 @@ def parse_fluent(text: str) -> Atom:
     return Atom(match.group(1).lower(), args)
 
 
-def load_state(path: str, span: tuple[float, float] | None = None) -> tuple[
+def load_state(path: str, span: tuple[float, float] | None = None, text: str | None = None) -> tuple[
         dict[str, str], frozenset[Atom], list[tuple[float, Atom, bool]], dict[str, str], HandVocabulary | None]:
-    """Objects, initial fluents, later changes, spellings and the declared hand vocabulary from a state CSV.
+    """Objects, initial fluents, later changes, spellings and the declared hand vocabulary from a state CSV
+    (``text``: its content, already read).
 
     With ``span`` (the trace's first and last frame times), a change must fall
     within it (up to :data:`EFFECT_DELAY_S` after the last frame): no hand can
     have caused it otherwise.
     """
-    frame = _csv(read_text(path, "an environment state CSV (time,fluent,value)"), path, STATE_COLUMNS)
+    if text is None:
+        text = read_text(path, "an environment state CSV (time,fluent,value)")
+    frame = _csv(text, path, STATE_COLUMNS)
     times = _times(frame, path)
     objects, spellings, type_row, rows, declared = _state_rows(frame, times, path)
     if not objects:
