@@ -88,8 +88,9 @@ def test_a_piped_recording_gives_its_first_segments_before_it_ends(tmp_path):
         more.write(b"".join(later))
     proc.stdin.write(b"".join(lines[half:]))
     proc.stdin.close()
-    rest, err = proc.communicate(timeout=120)
-    assert proc.returncode == 0, err
+    with proc.stdout, proc.stderr:
+        rest, err = proc.stdout.read(), proc.stderr.read()
+    assert proc.wait(timeout=120) == 0, err
     whole = subprocess.run([sys.executable, "-c", "from cli.main import run; run()", "segment", str(trace), "--csv"],
                            capture_output=True, cwd=ROOT, check=True).stdout
 
