@@ -82,23 +82,15 @@ def _stream(state_path: str, csv_out: bool, include_idle: bool) -> None:
 
     from guided_lfd.demonstration.stream import stream_segments
 
-    out = sys.stdout
     count = 0
-    try:
-        if csv_out:
-            out.write(segments_csv([]))
-        for index, seg in enumerate(stream_segments(sys.stdin.buffer, state_path)):
-            if not include_idle and seg.activity == "Idle":
-                continue
-            seg.index = index
-            out.write(segments_csv([seg], header=False) if csv_out
-                      else json.dumps(segment_json(seg), separators=(",", ":")) + "\n")
-            out.flush()
-            count += 1
-    except BrokenPipeError:
-        # The reader stopped reading (| head): nothing more is wanted, and nothing is wrong.
-        import os
-
-        sys.stdout = open(os.devnull, "w")
-        return
+    if csv_out:
+        write_text("-", segments_csv([]))
+    for index, seg in enumerate(stream_segments(sys.stdin.buffer, state_path)):
+        if not include_idle and seg.activity == "Idle":
+            continue
+        seg.index = index
+        # Written and flushed at once; a reader that stopped reading is the output error (40), as for files.
+        write_text("-", segments_csv([seg], header=False) if csv_out
+                   else json.dumps(segment_json(seg), separators=(",", ":")) + "\n")
+        count += 1
     ui.info(f"[dim]{count} segment(s) from standard input[/]")
