@@ -115,3 +115,13 @@ def test_a_bad_row_late_in_a_stream_keeps_the_segments_before_it(tmp_path):
     assert proc.returncode == 36
     assert f"-:{bad + 1}:1: trace error: column 'time': expected a finite number, got '12x'" in err.decode()
     assert len(out.splitlines()) > 10 and all(json.loads(line)["hand"] for line in out.splitlines())
+
+
+@pytest.mark.parametrize("given, code, message", [
+    (b"", 30, "-: input error: empty file, expected a hand trace CSV"),
+    (b"time,hand,x,y,z,grip,in_hand,act_on\n", 36, "-:2: trace error: no rows after the header"),
+])
+def test_an_empty_stream_is_refused_as_an_empty_file_is(given, code, message):
+    proc = _pipe(ROOT / "data" / "demos" / "kitchen-1" / "P1-complete.state.csv", "--csv")
+    out, err = proc.communicate(given, timeout=120)
+    assert proc.returncode == code and message in err.decode() and b"Traceback" not in err

@@ -184,7 +184,11 @@ def stream_segments(source: IO[bytes], state_path: str, path: str = "-", batch_r
     lines = _lines(source, flush_s)
     header = next((x for x in lines if x is not None), b"")
     if not header.strip():
-        raise TraceError("empty input, expected a CSV header and rows", Location(path, 1))
+        from guided_lfd.errors import InputFileError
+
+        # As for a file: nothing at all is an input error (30), a header alone a trace error (36).
+        raise InputFileError("empty file, expected a hand trace CSV (time,hand,x,y,z,grip,in_hand,act_on)",
+                             Location(path))
     window = _Window(header if header.endswith(b"\n") else header + b"\n", initial, events)
     written: dict[str, float] = {}  # the end of each hand's last written segment
     first_seen: dict[str, Segment] = {}  # each hand's earliest open segment, as seen while whole
@@ -202,6 +206,8 @@ def stream_segments(source: IO[bytes], state_path: str, path: str = "-", batch_r
             window.lines += range(line + 1, line + 1 + len(batch))
             line += len(batch)
             yield from close(False)
+        if line == 1:
+            raise TraceError("no rows after the header", Location(path, 2))
         yield from close(True)
     except TraceError as exc:
         # The recording up to the bad row is segmented and written before the error ends the stream.
