@@ -45,6 +45,8 @@ MARGIN_S = 3.0
 HORIZON_S = 3.0
 #: The longest stretch of recording a window holds (s).
 MAX_WINDOW_S = 60.0
+#: Seconds between two windows of a pipe that never pauses (a recorder writing frames as they happen).
+FLUSH_EVERY_S = 1.0
 #: Rows read before a window is segmented (fewer when the pipe pauses: see ``flush_s``).
 BATCH_ROWS = 60_000
 
@@ -63,12 +65,19 @@ def _lines(source: IO[bytes], flush_s: float) -> Iterator[bytes | None]:
     if fd is None or not _is_stream(fd):
         yield from iter(source.readline, b"")
         return
+    import time
+
     pending = b""
+    flushed = time.monotonic()
     while True:
         ready, _, _ = select.select([fd], [], [], flush_s)
         if not ready:
             yield None  # a pause: what came so far is worth segmenting now
+            flushed = time.monotonic()
             ready, _, _ = select.select([fd], [], [])
+        elif time.monotonic() - flushed > FLUSH_EVERY_S:
+            yield None  # a recorder that never pauses: segment what came at least this often
+            flushed = time.monotonic()
         chunk = os.read(fd, 1 << 16)
         if not chunk:
             break
@@ -114,11 +123,11 @@ class _GrowingState:
         self.path, self.size = path, -1
 
     def grew(self) -> bool:
-        """Whether the file is longer than when last read."""
+        """Whether the file is longer than when last read (a pipe or other non-file is read once)."""
         import os
 
         try:
-            return os.path.getsize(self.path) != self.size
+            return os.path.isfile(self.path) and os.path.getsize(self.path) != self.size
         except OSError:
             return False
 
