@@ -31,6 +31,8 @@ from collections.abc import Iterator
 from dataclasses import replace
 from typing import IO
 
+import numpy as np
+
 
 from guided_lfd.demonstration.segment import Segment, segment
 from guided_lfd.demonstration.trace import (TRACE_COLUMNS, Demonstration, _csv, _times, load_state,
