@@ -6,7 +6,7 @@ VENV   ?= .venv
 BIN     = $(VENV)/bin
 JOBS   ?= 2
 
-.PHONY: setup demo demos reproduce-study test test-slow clean
+.PHONY: setup demo demos reproduce-study test test-slow clean amlgym-setup amlgym-bench
 
 $(BIN)/guided-lfd: pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -37,5 +37,16 @@ test: setup
 test-slow: setup
 	GUIDED_LFD_FUZZ_EXAMPLES=1000 $(BIN)/python -m pytest -q -n $(JOBS) --slow
 
+# AMLGym (action-model learning benchmark) beside SAM and OffLAM, in an environment of its own.
+AMLGYM_VENV ?= .venv-amlgym
+amlgym-setup:
+	$(PYTHON) -m venv $(AMLGYM_VENV)
+	$(AMLGYM_VENV)/bin/python -m pip install --quiet --upgrade pip
+	$(AMLGYM_VENV)/bin/python -m pip install --quiet -e '.[amlgym]'
+	$(AMLGYM_VENV)/bin/python -m pip install --quiet --no-deps amlgym==1.0.13
+
+amlgym-bench: amlgym-setup
+	$(AMLGYM_VENV)/bin/python benchmarks/amlgym_bench.py --jobs $(JOBS) --out benchmarks/amlgym_results
+
 clean:
-	rm -rf $(VENV) build *.egg-info .pytest_cache .hypothesis
+	rm -rf $(VENV) $(AMLGYM_VENV) build *.egg-info .pytest_cache .hypothesis

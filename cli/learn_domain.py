@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from dataclasses import replace
 from typing import Annotated
 
 import typer
@@ -9,11 +10,14 @@ import typer
 from cli.common import OutputOption, QuietOption, check_files, command, help_footer, ui
 from guided_lfd import errors
 from guided_lfd.demonstration.learn import learn_domain as learn
+from guided_lfd.demonstration.action_model import MODELS
 from guided_lfd.demonstration.segments_document import load_segments
+from guided_lfd.demonstration.trajectory import is_trajectory, learn_from_trajectories, read_trajectory
 from guided_lfd.errors import OptionError
 from guided_lfd.io import write_text
 from guided_lfd.pddl.model import pddl_name_defect
-from guided_lfd.pddl.reader import parse_domain
+from guided_lfd.pddl.reader import parse_domain, parse_problem_for
+from guided_lfd.pddl.source import read_text
 from guided_lfd.pddl.writer import domain_to_pddl
 
 
@@ -25,9 +29,10 @@ from guided_lfd.pddl.writer import domain_to_pddl
 )
 @command
 def learn_domain(
-    segments: Annotated[list[str], typer.Argument(metavar="SEGMENTS",
-                                                  help="Segments JSON files from 'guided-lfd segment' "
-                                                       "('-' = stdin).")],
+    segments: Annotated[list[str], typer.Argument(metavar="DEMONSTRATIONS",
+                                                  help="Segments JSON files from 'guided-lfd segment', or PDDL "
+                                                       "trajectory files '(:trajectory (:state ...) (:action ...) "
+                                                       "...)' with --prior; told apart by content ('-' = stdin).")],
     prior: Annotated[
         str | None, typer.Option("--prior", metavar="DOMAIN", help="Keep this domain's types, predicates and actions.")
     ] = None,
@@ -37,13 +42,25 @@ def learn_domain(
                                       "name and parameter order.")
     ] = None,
     name: Annotated[str, typer.Option("--name", metavar="NAME", help="Name of the learned domain.")] = "learned",
+    problem: Annotated[
+        list[str] | None, typer.Option("--problem", metavar="FILE",
+                                       help="Trajectories: a problem whose objects' types the trajectories use "
+                                            "(repeatable; default: inferred from the operators and predicates).")
+    ] = None,
+    model: Annotated[
+        str, typer.Option("--model", metavar="MODEL",
+                          help="Trajectories: 'safe' (every plan it finds is valid in the true domain) or "
+                               "'general' (only what the steps show; fewer conditions, no such guarantee).")
+    ] = "safe",
     output: OutputOption = "-",
     quiet: QuietOption = False,
 ) -> None:
-    """Turn demonstrated hand activities into PDDL actions.
+    """Learn PDDL actions from demonstrations or trajectories.
 
     Each demonstrated skill becomes a lifted action: its preconditions are the
     nodes of interest of the demonstrated states, generalised over repeats.
+    Trajectories teach the --prior's operators that have empty bodies, under
+    their names and parameters (see --model).
     With --prior the domain keeps the prior's types, predicates and actions,
     the hand's facts are the prior's own (unless the demonstration's state
     file declares them), steps the prior already makes are not learned again,
@@ -52,8 +69,16 @@ def learn_domain(
     why = pddl_name_defect(name.lower())
     if why:
         raise OptionError(f"--name {name!r}: expected {why}")
-    check_files([*segments, prior, human], {"--output": output})
-    documents = [(path, load_segments(path)) for path in segments]
+    check_files([*segments, prior, human, *(problem or [])], {"--output": output})
+    if model not in MODELS:
+        raise OptionError(f"--model {model!r}: expected one of {', '.join(MODELS)}")
+    texts = [(path, read_text(path, "segments JSON or a PDDL trajectory")) for path in segments]
+    if any(is_trajectory(text) for _, text in texts):
+        return _from_trajectories(texts, prior, problem or [], model, human, name, output)
+    if problem or model != "safe":
+        raise OptionError(f"{'--problem' if problem else '--model'} is for trajectories; "
+                          f"{segments[0]} holds segments")
+    documents = [(path, load_segments(path, text)) for path, text in texts]
     prior_domain = parse_domain(prior) if prior else None
     ui.reading_warnings(prior_domain)
     human_domain = parse_domain(human) if human else None
@@ -75,3 +100,32 @@ def learn_domain(
     known = {a.name for a in prior_domain.actions} if prior_domain is not None else set()
     learned = [a for a in domain.actions if a.name not in known]
     ui.info(f"[dim]{len(learned)} demonstrated skill(s): {', '.join(a.name for a in learned)}[/]")
+
+
+def _from_trajectories(texts: list[tuple[str, str]], prior: str | None, problems: list[str], model: str,
+                       human: str | None, name: str, output: str) -> None:
+    """learn-domain on PDDL trajectories: the prior's empty-bodied operators learned (``--model``)."""
+    segments = [path for path, text in texts if not is_trajectory(text)]
+    if segments:
+        trajectory = next(path for path, text in texts if is_trajectory(text))
+        raise OptionError(f"{segments[0]} holds segments and {trajectory} a trajectory; expected one kind per run")
+    if prior is None:
+        raise OptionError(f"{texts[0][0]} is a trajectory: expected --prior DOMAIN with the operators' signatures")
+    if human is not None:
+        raise OptionError("--human is for segments: a trajectory names its operators already")
+    prior_domain = parse_domain(prior)
+    ui.reading_warnings(prior_domain)
+    objects: dict[str, str] | None = None
+    for path in problems:
+        objects = {**(objects or {}), **parse_problem_for(prior_domain, path).objects}
+    trajectories = [read_trajectory(path, text, prior_domain, objects) for path, text in texts]
+    domain = learn_from_trajectories(prior_domain, trajectories, model)
+    if name != "learned":
+        domain = replace(domain, name=name.lower())
+    ui.reading_warnings(domain)
+    header = f"Learned by guided-lfd learn-domain (--model {model}) from: " + ", ".join(p for p, _ in texts)
+    write_text(output, domain_to_pddl(domain, header=header))
+    steps = sum(len(t.steps) for t in trajectories)
+    learned = [a.name for a in domain.actions if a.origin and a.origin.startswith("learned from")]
+    ui.info(f"[dim]{len(learned)} operator(s) learned from {steps} step(s) of {len(trajectories)} "
+            f"trajectory(ies), {model} model: {', '.join(learned)}[/]")

@@ -42,7 +42,7 @@ SUBCOMMANDS: dict[str, Subcommand] = {
     "excuse": Subcommand("cli.excuse", "excuse", "Find a minimal excuse: what the human must demonstrate."),
     "plan": Subcommand("cli.plan", "plan", "Plan optimally (A* with LM-cut), or prove unsolvability."),
     "segment": Subcommand("cli.segment", "segment", "Segment a VR hand trace into hand activities."),
-    "learn-domain": Subcommand("cli.learn_domain", "learn_domain", "Turn demonstrated hand activities into PDDL actions."),
+    "learn-domain": Subcommand("cli.learn_domain", "learn_domain", "Learn PDDL actions from demonstrations or trajectories."),
     "merge": Subcommand("cli.merge", "merge", "Merge learned domains into the robot's prior domain."),
     "evaluate": Subcommand("cli.evaluate", "evaluate", "Compute the paper's measures of a guided demonstration."),
     "validate": Subcommand("cli.validate", "validate", "Check a plan step by step from the initial state."),

@@ -124,8 +124,8 @@ def json_document(kind: str, body: dict[str, Any]) -> str:
     return json.dumps(doc, indent=2, sort_keys=False) + "\n"
 
 
-def read_json_document(path: str, kind: str, error: type, origin: str) -> tuple[str, dict]:
-    """The text and body of a ``guided-lfd/<kind>`` JSON document (``-`` = stdin).
+def read_json_document(path: str, kind: str, error: type, origin: str, text: str | None = None) -> tuple[str, dict]:
+    """The text and body of a ``guided-lfd/<kind>`` JSON document (``-`` = stdin; ``text``: already read).
 
     Anything else raises ``error`` (a :class:`~guided_lfd.errors.GuidedLfdError`
     class) naming the file; ``origin`` says which command writes such documents.
@@ -133,7 +133,8 @@ def read_json_document(path: str, kind: str, error: type, origin: str) -> tuple[
     import json
 
     expected = f"a guided-lfd/{kind} document"
-    text = read_text(path, f"{expected} (from {origin})")
+    if text is None:
+        text = read_text(path, f"{expected} (from {origin})")
     try:
         doc = json.loads(text)
     except json.JSONDecodeError as exc:

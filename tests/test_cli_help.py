@@ -25,7 +25,7 @@ USAGES = {
     "excuse": "guided-lfd excuse [OPTIONS] DOMAIN PROBLEM",
     "plan": "guided-lfd plan [OPTIONS] DOMAIN PROBLEM",
     "segment": "guided-lfd segment [OPTIONS] TRACE",
-    "learn-domain": "guided-lfd learn-domain [OPTIONS] SEGMENTS...",
+    "learn-domain": "guided-lfd learn-domain [OPTIONS] DEMONSTRATIONS...",
     "merge": "guided-lfd merge [OPTIONS] PRIOR LEARNED...",
     "evaluate": "guided-lfd evaluate [OPTIONS] ROBOT PROBLEM --human DOMAIN",
     "validate": "guided-lfd validate [OPTIONS] DOMAIN PROBLEM PLAN",

@@ -79,7 +79,7 @@ def test_small_task_imports_no_heavy_library(command, tmp_path, plan_file):
 def test_main_help_imports_no_subcommand(tmp_path):
     done, modules = run_cli(tmp_path, "--help")
     assert done.returncode == 0, done.stderr
-    assert "learn-domain  Turn demonstrated hand activities" in done.stdout
+    assert "learn-domain  Learn PDDL actions from demonstrations" in done.stdout
     assert not {m for m in modules if m.startswith("cli.")} - {"cli.main", "cli.coercion", "cli.startup"}
     assert "guided_lfd.excuse" not in modules
 

@@ -1,5 +1,9 @@
 """Learning a PDDL domain from demonstration segments (paper, section III-D-1).
 
+Segments and trajectories share the learner core's rules for effects and
+preconditions (:mod:`guided_lfd.demonstration.action_model`); what is
+particular to segments is below.
+
 Every segment that changes something (the environment or what the hand
 holds) is a demonstrated action:
 
@@ -37,6 +41,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, replace
 
+from guided_lfd.demonstration.action_model import changes, facts_about
 from guided_lfd.demonstration.generalise import generalise
 from guided_lfd.demonstration.implied import drop_implied_preconditions
 from guided_lfd.demonstration.mutex import drop_implied_negative_preconditions, proven_invariants
@@ -189,8 +194,8 @@ def ground_actions(document: dict, source: str = "segments", static: set[str] | 
             # kitchen: the hand works on the hall, the walker arrives in the kitchen).
             linked |= {x for a in changed for x in a.args}
         # A fact without arguments (the power is on) was given to this segment by the segmenter: its effect.
-        env_add = {a for a in after - before if not a.args or set(a.args) & linked}
-        env_del = {a for a in before - after if not a.args or set(a.args) & linked}
+        # The learner core's rule, with the objects a changed fact links to the hand's becoming parameters.
+        env_add, env_del = changes(before, after, linked, any_argument=True)
         add = env_add | (hand_after - hand_before)
         delete = env_del | (hand_before - hand_after)
         if not add and not delete:
@@ -200,7 +205,7 @@ def ground_actions(document: dict, source: str = "segments", static: set[str] | 
         # Nodes of interest: fluents about the objects the action involves, all
         # of whose arguments it involves (so opening a drawer does not depend on
         # which plate happens to lie in it).
-        pre = {Literal(a) for a in before if set(a.args) <= interest} | {Literal(a) for a in hand_before}
+        pre = {Literal(a) for a in facts_about(before, interest)} | {Literal(a) for a in hand_before}
         # What the skill makes true was false before it (the drawer was closed).
         pre |= {Literal(a, False) for a in env_add}
         others = sorted(interest - set(roles))

@@ -27,13 +27,15 @@ from guided_lfd.errors import MismatchError
 from guided_lfd.pddl.model import EQUALITY, ActionSchema, Atom, Domain, Problem
 
 
-def proven_invariants(domain: Domain, objects: dict[str, str], states: Iterable[frozenset[Atom]]) -> list:
-    """Fast Downward's lifted invariants of ``domain`` that every state in ``states`` satisfies."""
+def proven_invariants(domain: Domain, objects: dict[str, str], states: Iterable[frozenset[Atom]],
+                      reverse: bool = True) -> list:
+    """Fast Downward's lifted invariants of ``domain`` that every state in ``states`` satisfies (``reverse``:
+    only those the reverse of every action keeps too, see :func:`guided_lfd.excuse.invariants.lifted_invariants`)."""
     from guided_lfd.excuse.invariants import lifted_invariants
 
     problem = Problem("learned-invariants", domain.name, dict(objects), frozenset(), ())
     try:
-        found = lifted_invariants(domain, problem)
+        found = lifted_invariants(domain, problem, reverse=reverse)
     except MismatchError:
         return []
     observed = list(states)

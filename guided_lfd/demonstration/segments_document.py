@@ -15,11 +15,12 @@ from guided_lfd.pddl.model import pddl_name_defect
 __all__ = ["document_defect", "load_segments"]
 
 
-def load_segments(path: str) -> dict:
-    """Read a ``guided-lfd/segments`` JSON document (``-`` = stdin); TraceError if it is not one."""
+def load_segments(path: str, text: str | None = None) -> dict:
+    """Read a ``guided-lfd/segments`` JSON document (``-`` = stdin; ``text``: its text, already read);
+    TraceError if it is not one."""
     from guided_lfd.io import read_json_document
 
-    text, doc = read_json_document(path, "segments", TraceError, "`guided-lfd segment`")
+    text, doc = read_json_document(path, "segments", TraceError, "`guided-lfd segment`", text)
     problem = document_defect(doc)
     if problem is not None:
         keys, message = problem

@@ -52,12 +52,13 @@ def with_reversed_actions(domain: Domain) -> Domain:
     return replace(domain, actions=[*domain.actions, *reverses])
 
 
-def lifted_invariants(domain: Domain, problem: Problem, max_time: float | None = None) -> list:
-    """Fast Downward's lifted invariants of ``domain`` (with reversed actions)."""
+def lifted_invariants(domain: Domain, problem: Problem, max_time: float | None = None, reverse: bool = True) -> list:
+    """Fast Downward's lifted invariants of ``domain`` (with reversed actions, unless ``reverse`` is False:
+    then they hold in every state the actions reach from a state where they hold, no more)."""
     from fast_downward.translate import invariant_finder, normalize, options
     from fast_downward.translate.pddl_parser import lisp_parser, parsing_functions
 
-    augmented = with_reversed_actions(domain)
+    augmented = with_reversed_actions(domain) if reverse else domain
     # The translator refuses an object an action names without declaring it:
     # implicit constants are declared, with the problem's types, for it.
     implicit = {c: problem.objects.get(c, "object") for c in domain.implicit_constants}

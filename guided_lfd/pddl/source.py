@@ -107,9 +107,11 @@ class Token:
 class SourceMap:
     """The s-expression structure of one PDDL file, with positions."""
 
-    def __init__(self, path: str, text: str) -> None:
+    def __init__(self, path: str, text: str, definition: str = "(define ...)") -> None:
         self.path = path
         self.text = text
+        #: What the file's one top-level list should be, for error messages.
+        self.definition = definition
         self.roots: list[SExpr] = []
         self._build()
 
@@ -161,11 +163,11 @@ class SourceMap:
                 self.location(node.line, node.col),
             )
         if not self.roots:
-            raise PddlSyntaxError("no PDDL definition found, expected '(define ...)'", self.location(1, 1))
+            raise PddlSyntaxError(f"no PDDL definition found, expected '{self.definition}'", self.location(1, 1))
         if len(self.roots) > 1:
             extra = self.roots[1]
             raise PddlSyntaxError(
-                "text after the end of the definition, expected one '(define ...)'",
+                f"text after the end of the definition, expected one '{self.definition}'",
                 self.location(extra.line, extra.col),
             )
 

@@ -1,0 +1,246 @@
+"""The learner core: what observed steps teach about an action's preconditions and effects.
+
+Both kinds of demonstration come down to steps: a state, an action applied to
+some objects, the state after it.  A VR segment's objects are those the hand
+handles (:mod:`guided_lfd.demonstration.learn`); a trajectory's are the
+operator's arguments (:mod:`guided_lfd.demonstration.trajectory`).  Two rules
+are shared:
+
+* **Effects** are the atoms that change over a step and are *bound* by the
+  action: every argument one of its objects (atoms without arguments
+  included).  A segment also counts atoms that share one object with what the
+  hand handles, their other objects becoming parameters.
+* **Preconditions** are the facts about the action's objects true before it
+  (:func:`facts_about`), generalised over every observation of the action.
+
+For operators with known signatures (trajectories), :func:`learn_operators`
+learns lifted actions as SAM does (Juba, Le and Stern, KR 2021): a lifted
+literal is a precondition when it held before every observed step, an effect
+when it changed in some step and held after every one.  Two models:
+
+* ``safe`` (default): every plan the learned model finds is valid in the
+  true domain (SAM's guarantee), provided that the true domain is STRIPS
+  (negative preconditions only where the prior declares them), that a
+  predicate no observed step ever changed is static there too, and that the
+  problem's initial state satisfies the invariants the learner proves.  What
+  the steps cannot rule out stays a condition: a fluent false before every
+  step is a negative precondition, or, where the prior declares no
+  ``:negative-preconditions`` (a STRIPS domain, whose states only matter
+  through the atoms that are true), a delete effect, so that the learned
+  model never believes an atom true that the true action may have deleted.
+  Either is dropped where Fast Downward's invariant synthesis proves that a
+  positive precondition rules the atom out already
+  (:mod:`guided_lfd.demonstration.mutex`), as the VR learner does.
+* ``general``: only what the steps show: preconditions that held before
+  every step, effects seen to change; nothing for what no step ruled out.
+  Closer to the true domain where those guards are needless (higher
+  precision), but a plan may rely on an effect no step showed (a laser that
+  also destroys the gold it uncovers).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from dataclasses import dataclass, field, replace
+from itertools import product
+
+from guided_lfd.pddl.model import ActionSchema, Atom, Domain, Literal
+
+__all__ = ["Observation", "MODELS", "bound_by", "facts_about", "changes", "learn_operators"]
+
+#: The models :func:`learn_operators` can learn, with what each guarantees.
+MODELS: dict[str, str] = {
+    "safe": "every plan it finds is valid in the true domain (SAM's guarantee; assumptions in the module doc)",
+    "general": "only what the steps show; a plan may rely on an effect no step showed",
+}
+
+
+@dataclass(frozen=True)
+class Observation:
+    """One observed step: ``operator`` applied to ``objects`` took ``before`` to ``after``."""
+
+    operator: str
+    objects: tuple[str, ...]
+    before: frozenset[Atom]
+    after: frozenset[Atom]
+    where: str = ""
+
+
+def bound_by(atom: Atom, objects: set[str] | frozenset[str], any_argument: bool = False) -> bool:
+    """Whether every argument of ``atom`` is one of ``objects`` (with ``any_argument``: at least one is);
+    an atom without arguments is bound by every action."""
+    if not atom.args:
+        return True
+    return any(a in objects for a in atom.args) if any_argument else all(a in objects for a in atom.args)
+
+
+def facts_about(state: Iterable[Atom], objects: set[str] | frozenset[str]) -> set[Atom]:
+    """The atoms of ``state`` all of whose arguments are ``objects`` (atoms without arguments included)."""
+    return {a for a in state if bound_by(a, objects)}
+
+
+def changes(before: frozenset[Atom] | set[Atom], after: frozenset[Atom] | set[Atom],
+            objects: set[str] | frozenset[str], any_argument: bool = False) -> tuple[set[Atom], set[Atom]]:
+    """(made true, made false) over a step: the changed atoms bound by ``objects`` (see :func:`bound_by`)."""
+    return ({a for a in after - before if bound_by(a, objects, any_argument)},
+            {a for a in before - after if bound_by(a, objects, any_argument)})
+
+
+class _Lifting:
+    """Ground atoms of one step <-> lifted atoms over an operator's parameters (an object passed twice
+    lifts to either parameter)."""
+
+    def __init__(self, params: tuple[tuple[str, str], ...], objects: tuple[str, ...]) -> None:
+        self.binding = {var: obj for (var, _), obj in zip(params, objects)}
+        self.vars_of: dict[str, list[str]] = {}
+        for (var, _), obj in zip(params, objects):
+            self.vars_of.setdefault(obj, []).append(var)
+        self.objects = frozenset(objects)
+
+    def lifted(self, atoms: Iterable[Atom]) -> set[Atom]:
+        out: set[Atom] = set()
+        for atom in atoms:
+            if bound_by(atom, self.objects):
+                for args in product(*(self.vars_of[a] for a in atom.args)):
+                    out.add(Atom(atom.predicate, args))
+        return out
+
+    def ground(self, atom: Atom) -> Atom:
+        return atom.substitute(self.binding)
+
+
+def _candidates(schema: ActionSchema, domain: Domain) -> list[Atom]:
+    """Every well-typed lifted atom over ``schema``'s parameters (each parameter's type within the predicate's)."""
+    sub = domain.subtypes()
+    out: list[Atom] = []
+    for pred in domain.predicates.values():
+        options = [[v for v, t in schema.params if t in sub.get(pt, {pt})] for _, pt in pred.params]
+        out.extend(Atom(pred.name, args) for args in product(*options))
+    return out
+
+
+@dataclass
+class _Evidence:
+    """What the observations of one operator show, lifted."""
+
+    seen: int = 0
+    before_always: set[Atom] = field(default_factory=set)  # true before every step
+    never_before: set[Atom] = field(default_factory=set)   # false before every step (of the candidates)
+    after_always: set[Atom] = field(default_factory=set)
+    made_true: set[Atom] = field(default_factory=set)      # changed in some step, lifted one way only
+    made_false: set[Atom] = field(default_factory=set)
+    # Changes an object passed twice lets lift more than one way, resolved by the steps that do not.
+    ambiguous_true: list[frozenset[Atom]] = field(default_factory=list)
+    ambiguous_false: list[frozenset[Atom]] = field(default_factory=list)
+    steps: list[tuple[_Lifting, Observation]] = field(default_factory=list)
+
+    def add(self, obs: Observation, schema: ActionSchema, candidates: list[Atom]) -> None:
+        lift = _Lifting(schema.params, obs.objects)
+        # Only well-typed atoms: a shaker's fact is no fact of every container passed where a shaker was.
+        typed = set(candidates)
+        before, after = lift.lifted(obs.before) & typed, lift.lifted(obs.after) & typed
+        added, deleted = changes(obs.before, obs.after, lift.objects)
+        false_before = {c for c in candidates if lift.ground(c) not in obs.before}
+        if self.seen == 0:
+            self.before_always, self.after_always, self.never_before = before, after, false_before
+        else:
+            self.before_always &= before
+            self.after_always &= after
+            self.never_before &= false_before
+        for atoms, sure, unsure in ((added, self.made_true, self.ambiguous_true),
+                                    (deleted, self.made_false, self.ambiguous_false)):
+            for atom in atoms:
+                ways = lift.lifted([atom]) & typed
+                if len(ways) == 1:
+                    sure |= ways
+                elif ways:
+                    unsure.append(frozenset(ways))
+        self.steps.append((lift, obs))
+        self.seen += 1
+
+    def changed(self, made: set[Atom], unsure: list[frozenset[Atom]]) -> set[Atom]:
+        """Lifted atoms some step changed: those lifted one way, and every way of an ambiguous change no step
+        resolves."""
+        return made.union(*(ways for ways in unsure if not ways & made))
+
+    def adds(self) -> set[Atom]:
+        """Made true in some step, true after every one."""
+        return self.changed(self.made_true, self.ambiguous_true) & self.after_always
+
+    def deletes(self, adds: set[Atom], among: set[Atom]) -> set[Atom]:
+        """Those of ``among`` false after every step, except where an add made the same atom true (PDDL
+        applies deletes first: moving from a place to itself leaves the mover there)."""
+        out: set[Atom] = set()
+        for atom in among:
+            if all(lift.ground(atom) not in obs.after or lift.ground(atom) in {lift.ground(a) for a in adds}
+                   for lift, obs in self.steps):
+                out.add(atom)
+        return out
+
+
+def _learned(schema: ActionSchema, ev: _Evidence, model: str, negative: bool, fluent: set[str]) -> ActionSchema:
+    adds = ev.adds()
+    delete = ev.deletes(adds, ev.changed(ev.made_false, ev.ambiguous_false) - adds)
+    pre = [Literal(a) for a in sorted(ev.before_always)]
+    if model == "safe":
+        # What no step rules out: the action may need it false, or delete it (unseen: it was false already).
+        # A predicate no step ever changed is taken as static: no action deletes it.
+        pre += [Literal(a, False) for a in sorted(ev.never_before) if negative or a.predicate in fluent]
+    return replace(schema, precondition=tuple(pre), add=tuple(sorted(adds)), delete=tuple(sorted(delete)),
+                   origin=f"learned from {ev.seen} observed step(s)")
+
+
+def learn_operators(prior: Domain, observations: Iterable[Observation], objects: dict[str, str],
+                    model: str = "safe", states: Iterable[frozenset[Atom]] = ()) -> tuple[Domain, list[str]]:
+    """``prior`` with the actions that have empty bodies learned from ``observations`` (see the module).
+
+    ``objects``: every observed object's type (for proving invariants); ``states``: every observed state
+    (an invariant they break is not used).  Returns the domain and notes for the user (operators never
+    observed, left out).  Actions of ``prior`` with a body are kept as they are.
+    """
+    if model not in MODELS:
+        raise ValueError(f"unknown model {model!r}, expected one of {', '.join(MODELS)}")
+    negative = any(r in prior.requirements for r in (":negative-preconditions", ":adl"))
+    to_learn = [a for a in prior.actions if not a.precondition and not a.add and not a.delete and a.cost is None]
+    evidence: dict[str, _Evidence] = {a.name: _Evidence() for a in to_learn}
+    candidates = {a.name: _candidates(a, prior) for a in to_learn}
+    schemas = {a.name: a for a in to_learn}
+    for obs in observations:
+        if obs.operator in evidence:
+            evidence[obs.operator].add(obs, schemas[obs.operator], candidates[obs.operator])
+    fluent = {a.predicate for ev in evidence.values() if ev.seen for a in (*ev.made_true, *ev.made_false)}
+    fluent |= prior.fluent_predicates()
+    notes = [f"{a.name}: never observed, left out of the learned domain (nothing shows what it needs or does)"
+             for a in to_learn if evidence[a.name].seen == 0]
+    learned = {a.name: _learned(a, evidence[a.name], model, negative, fluent) for a in to_learn if evidence[a.name].seen}
+    actions = [learned.get(a.name, a) for a in prior.actions if a.name in learned or a not in to_learn]
+    domain = replace(prior, actions=actions, path="<learned>", source=None, warnings=())
+    if model == "safe":
+        domain = _without_implied_negatives(domain, set(learned), objects, states)
+        if not negative:
+            domain = _as_strips(domain, set(learned))
+    return domain, notes
+
+
+def _without_implied_negatives(domain: Domain, names: set[str], objects: dict[str, str],
+                               states: Iterable[frozenset[Atom]]) -> Domain:
+    """Negative preconditions a positive one implies through a proven mutex, dropped."""
+    from guided_lfd.demonstration.mutex import drop_implied_negative_preconditions, proven_invariants
+
+    reqs = tuple(dict.fromkeys([*domain.requirements, ":negative-preconditions"]))
+    invariants = proven_invariants(replace(domain, requirements=reqs), objects, states, reverse=False)
+    return drop_implied_negative_preconditions(domain, names, invariants)
+
+
+def _as_strips(domain: Domain, names: set[str]) -> Domain:
+    """Without negative preconditions: what a remaining ``(not p)`` guarded becomes a delete of ``p`` where no
+    step made ``p`` true (so the learned model never believes ``p`` true where the true action may have
+    deleted it); the negation of an add effect just goes (the action makes it true either way)."""
+    out: list[ActionSchema] = []
+    for action in domain.actions:
+        if action.name in names:
+            guarded = {l.atom for l in action.precondition if not l.positive} - set(action.add)
+            action = replace(action, precondition=tuple(l for l in action.precondition if l.positive),
+                             delete=tuple(sorted(set(action.delete) | guarded)))
+        out.append(action)
+    return replace(domain, actions=out)

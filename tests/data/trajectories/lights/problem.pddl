@@ -1,0 +1,5 @@
+(define (problem light-the-attic)
+  (:domain lights)
+  (:objects attic cellar - room s3 s4 - switch)
+  (:init (wired s3 attic) (wired s4 cellar))
+  (:goal (and (lit attic))))

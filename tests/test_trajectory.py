@@ -1,0 +1,181 @@
+"""Learning operators from PDDL trajectories (issue #31): the reader, the learner core, the CLI.
+
+Fixtures in ``tests/data/trajectories/``: ``lights`` (no hand, an operator without arguments, parameters in
+an unusual order), ``paint`` (what no step rules out; an object passed twice), ``bad`` (one file per
+class of bad input) and ``blocksworld`` (AMLGym's own files, for a plan checked in the true domain).
+"""
+
+from __future__ import annotations
+
+import pytest
+
+from conftest import DATA, ROOT
+from guided_lfd.demonstration.action_model import Observation, changes, learn_operators
+from guided_lfd.demonstration.trajectory import is_trajectory, learn_from_trajectories, read_trajectory
+from guided_lfd.errors import EXIT_BAD_OPTION, EXIT_PDDL_SEMANTIC, EXIT_PDDL_SYNTAX, PddlSemanticError
+from guided_lfd.pddl.model import Atom, Literal
+from guided_lfd.pddl.reader import parse_domain, parse_problem_for
+
+TRAJ = DATA / "trajectories"
+LIGHTS = TRAJ / "lights"
+PAINT = TRAJ / "paint"
+BLOCKS = TRAJ / "blocksworld"
+
+
+def _learned(folder, prior="prior.pddl", model="safe", files=None):
+    domain = parse_domain(str(folder / prior))
+    paths = files or sorted(folder.glob("*.traj"))
+    trajectories = [read_trajectory(str(p), p.read_text(), domain) for p in paths]
+    return learn_from_trajectories(domain, trajectories, model)
+
+
+def _pre(action):
+    return {str(l) for l in action.precondition}
+
+
+def test_an_effect_on_an_atom_without_arguments_is_learned():
+    """``breaker-on`` takes no arguments and makes ``(power)`` true: a change no object binds is still its effect."""
+    action = _learned(LIGHTS).action("breaker-on")
+    assert action.params == ()
+    assert action.add == (Atom("power"),) and action.delete == ()
+
+
+def test_operator_names_and_parameter_order_are_kept():
+    """The prior says ``flip-up (?r - room ?s - switch)``: the learned action keeps its name, variables and order."""
+    domain = _learned(LIGHTS)
+    assert [a.name for a in domain.actions] == ["breaker-on", "flip-up", "flip-down"]
+    assert domain.action("flip-up").params == (("?r", "room"), ("?s", "switch"))
+    assert set(domain.action("flip-up").add) == {Atom("lit", ("?r",)), Atom("up", ("?s",))}
+
+
+def test_a_precondition_one_step_contradicts_is_dropped_and_one_true_in_every_step_is_kept():
+    """``flip-down`` ran once with the hall lit and once with its bulb out: ``(lit ?r)`` goes, ``(up ?s)`` and
+    ``(wired ?s ?r)`` (true before both steps) stay, and the delete of ``(lit ?r)`` is still learned."""
+    action = _learned(LIGHTS).action("flip-down")
+    assert "(lit ?r)" not in _pre(action)
+    assert {"(up ?s)", "(wired ?s ?r)"} <= _pre(action)
+    assert set(action.delete) == {Atom("lit", ("?r",)), Atom("up", ("?s",))}
+
+
+def test_nothing_outside_the_priors_vocabulary_is_added():
+    """No hand facts of the kitchens' (``in_hand``, ``hand_free``), no new types, predicates or requirements."""
+    prior = parse_domain(str(LIGHTS / "prior.pddl"))
+    domain = _learned(LIGHTS)
+    assert domain.predicates == prior.predicates and domain.types == prior.types
+    assert domain.requirements == prior.requirements
+    used = {l.atom.predicate for a in domain.actions for l in a.precondition} | {
+        x.predicate for a in domain.actions for x in (*a.add, *a.delete)}
+    assert used <= set(prior.predicates)
+
+
+def test_what_no_step_rules_out_stays_a_condition_in_the_safe_model_only():
+    """No step paints a wet board.  The safe model may not assume painting leaves ``wet`` alone: in a STRIPS
+    prior it deletes ``(wet ?b)`` (the learned model never believes a board wet that the true one may have
+    dried); with ``:negative-preconditions`` it requires ``(not (wet ?b))``.  The general model does neither."""
+    strips = _learned(PAINT).action("paint")
+    assert Atom("wet", ("?b",)) in strips.delete and all(l.positive for l in strips.precondition)
+    negative = _learned(PAINT, "prior-negative.pddl").action("paint")
+    assert Literal(Atom("wet", ("?b",)), False) in negative.precondition
+    assert Atom("wet", ("?b",)) not in negative.delete
+    general = _learned(PAINT, model="general").action("paint")
+    assert general.delete == () and general.precondition == ()
+
+
+def test_moving_from_a_place_to_itself_does_not_hide_the_delete():
+    """``(carry b2 yard yard)`` leaves b2 in the yard (PDDL deletes, then adds): still ``(not (at ?b ?from))``."""
+    action = _learned(PAINT, model="general").action("carry")
+    assert action.delete == (Atom("at", ("?b", "?from")),)
+    assert action.add == (Atom("at", ("?b", "?to")),)
+    assert _pre(action) == {"(at ?b ?from)"}
+
+
+def test_an_operator_never_observed_is_left_out_with_a_note():
+    domain = _learned(LIGHTS, files=[LIGHTS / "day-2.traj"])
+    assert "breaker-on" not in [a.name for a in domain.actions]
+    assert any("breaker-on: never observed" in w for w in domain.warnings)
+
+
+def test_changes_bind_atoms_without_arguments_and_only_the_actions_objects():
+    before = frozenset({Atom("power"), Atom("at", ("b", "x"))})
+    after = frozenset({Atom("at", ("b", "y")), Atom("lit", ("z",))})
+    added, deleted = changes(before, after, {"b", "y", "x"})
+    assert added == {Atom("at", ("b", "y"))} and deleted == {Atom("power"), Atom("at", ("b", "x"))}
+
+
+def test_the_safe_model_only_plans_what_the_true_domain_accepts():
+    """AMLGym's blocksworld, 3 trajectories: the learned safe model's plan for a larger problem (8 blocks)
+    is valid in the true domain."""
+    from guided_lfd.api import plan, validate
+
+    learned = _learned(BLOCKS, files=sorted(BLOCKS.glob("*.traj")))
+    true = parse_domain(str(BLOCKS / "true.pddl"))
+    report = plan(learned, parse_problem_for(learned, BLOCKS / "problem.pddl"), search="gbfs-hff")
+    assert report.plan, "the learned model should solve the problem"
+    steps = [f"({s.action} {' '.join(s.args)})" for s in report.plan]
+    assert validate(true, parse_problem_for(true, BLOCKS / "problem.pddl"), steps).valid
+
+
+def test_a_trajectory_is_told_from_a_segments_document_by_content():
+    assert is_trajectory("; comment\n\n(:trajectory (:state))")
+    assert not is_trajectory('{"format": "guided-lfd/segments"}')
+
+
+def test_object_types_come_from_the_problem_where_given():
+    prior = parse_domain(str(LIGHTS / "prior.pddl"))
+    path = LIGHTS / "day-1.traj"
+    objects = parse_problem_for(prior, LIGHTS / "problem.pddl").objects
+    with pytest.raises(PddlSemanticError, match="object 's1' is not declared in the problem"):
+        read_trajectory(str(path), path.read_text(), prior, objects)
+
+
+def test_observations_of_unknown_operators_are_ignored_by_the_core():
+    prior = parse_domain(str(LIGHTS / "prior.pddl"))
+    step = Observation("dance", (), frozenset(), frozenset({Atom("power")}))
+    domain, notes = learn_operators(prior, [step], {}, "safe")
+    assert domain.actions == [] and len(notes) == 3
+
+
+BAD = [
+    ("unbalanced.traj", EXIT_PDDL_SYNTAX, ":1:1: syntax error: '(' is never closed"),
+    ("arity.traj", EXIT_PDDL_SEMANTIC, ":3:13: semantic error: 'flip-up' takes 2 argument(s)"),
+    ("undeclared.traj", EXIT_PDDL_SEMANTIC, ":4:44: semantic error: predicate 'bright' is not declared"),
+    ("ends-with-action.traj", EXIT_PDDL_SYNTAX, ":3:13: syntax error: the trajectory ends with an action"),
+    ("nested.traj", EXIT_PDDL_SYNTAX, ":4:18: syntax error: nested list in an atom"),
+    ("two-states.traj", EXIT_PDDL_SYNTAX, ":5:3: syntax error: two states without an action between them"),
+    ("type-clash.traj", EXIT_PDDL_SEMANTIC, ":4:39: semantic error: object 'hall' is used as a room and here as a"),
+]
+
+
+@pytest.mark.parametrize("name, code, message", BAD, ids=[b[0] for b in BAD])
+def test_bad_trajectories_get_a_one_line_error_at_their_place(runner, app, name, code, message):
+    path = TRAJ / "bad" / name
+    result = runner.invoke(app, ["learn-domain", "--prior", str(LIGHTS / "prior.pddl"), str(path)])
+    assert result.exit_code == code, result.output
+    assert f"{path}{message}" in result.stderr
+    assert len(result.stderr.strip().splitlines()) == 1 and "Traceback" not in result.stderr
+
+
+def test_cli_learns_from_trajectories_with_the_model_asked_for(runner, app, tmp_path):
+    out = tmp_path / "learned.pddl"
+    result = runner.invoke(app, ["learn-domain", "--prior", str(PAINT / "prior.pddl"), str(PAINT / "week.traj"),
+                                 "--model", "general", "-o", str(out)])
+    assert result.exit_code == 0, result.output
+    assert "3 operator(s) learned from 4 step(s) of 1 trajectory(ies), general model" in result.stderr
+    learned = parse_domain(str(out))
+    assert learned.action("paint").delete == ()
+
+
+@pytest.mark.parametrize("args, message", [
+    (["TRAJ"], "is a trajectory: expected --prior DOMAIN"),
+    (["--prior", "PRIOR", "TRAJ", "SEGMENTS"], "holds segments and"),
+    (["--prior", "PRIOR", "TRAJ", "--model", "bold"], "--model 'bold': expected one of safe, general"),
+    (["--prior", "PRIOR", "TRAJ", "--human", "PRIOR"], "--human is for segments"),
+    (["SEGMENTS", "--model", "general"], "--model is for trajectories"),
+])
+def test_options_that_do_not_fit_the_input_are_refused(runner, app, args, message):
+    names = {"TRAJ": str(LIGHTS / "day-1.traj"), "PRIOR": str(LIGHTS / "prior.pddl"),
+             "SEGMENTS": str(ROOT / "results" / "study" / "kitchen-1" / "P3-complete.segments.json")}
+    argv = ["learn-domain", *(names.get(a, a) for a in args)]
+    result = runner.invoke(app, argv)
+    assert result.exit_code == EXIT_BAD_OPTION, result.output
+    assert message in result.stderr
