@@ -27,6 +27,7 @@ import csv
 import importlib
 import io
 import os
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -88,10 +89,12 @@ def run_one(task: tuple[str, int, str, int]) -> dict:
     from amlgym.util.util import empty_domain
 
     row: dict = {"domain": domain, "trajectories": count, "learner": learner}
-    reference = str(_amlgym_root() / "benchmarks" / "domains" / f"{domain}.pddl")
     home = os.getcwd()
     with tempfile.TemporaryDirectory(prefix="amlgym-") as scratch:
         os.chdir(scratch)
+        # A copy of the true domain per cell: AMLGym's reader writes a '<file>_clean' beside the file it reads.
+        reference = shutil.copy(_amlgym_root() / "benchmarks" / "domains" / f"{domain}.pddl", "reference.pddl")
+        reference = os.path.join(scratch, reference)
         try:
             warnings.simplefilter("ignore")
             empty = empty_domain(reference, os.path.join(scratch, "empty.pddl"))
@@ -135,13 +138,55 @@ def table(rows: list[dict], domains: list[str]) -> str:
                     cells.append(f"{_mean(sel, 'precision')} / {_mean(sel, 'recall')}")
                 else:
                     r = by.get((domain, learner, n), {})
-                    cells.append(f"{r['precision']:.2f} / {r['recall']:.2f}" if r.get("precision") is not None
-                                 else f"error: {r.get('error', '-')[:40]}")
+                    cells.append(f"{r['precision']:.2f} / {r['recall']:.2f}"
+                                 if r.get("precision") is not None and r.get("recall") is not None
+                                 else f"error: {(r.get('error') or '-')[:40]}")
             sel = [r for r in rows if r["learner"] == learner and r["trajectories"] == max(COUNTS)
                    and (domain == "mean" or r["domain"] == domain) and r.get("solved") not in (None, "")]
             cells.append(f"{sum(r['solved'] for r in sel)} ({sum(r['false_plans'] for r in sel)})" if sel else "-")
             lines.append("| " + " | ".join(cells) + " |")
     return "\n".join(lines) + "\n"
+
+
+def summary(rows: list[dict], domains: list[str]) -> str:
+    """The compact table: one row per domain at 10 trajectories (P / R of each learner, problems solved and
+    false plans), then the mean over domains at 1, 3 and 10 trajectories (the learning curve)."""
+    by = {(r["domain"], r["learner"], r["trajectories"]): r for r in rows}
+    head = ["domain (trajectories)", *(f"{learner} P / R" for learner in LEARNERS), "solved (false plans): "
+            + " · ".join(LEARNERS)]
+    lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
+
+    def pr(sel: list[dict]) -> str:
+        return f"{_mean(sel, 'precision')} / {_mean(sel, 'recall')}" if sel else "-"
+
+    def solved(sel: list[dict]) -> str:
+        sel = [r for r in sel if r.get("solved") not in (None, "")]
+        return f"{sum(r['solved'] for r in sel)} ({sum(r['false_plans'] for r in sel)})" if sel else "-"
+
+    top = max(COUNTS)
+    for domain in domains:
+        cells = [f"{domain} ({top})"]
+        cells += [pr([by[k]] if (k := (domain, learner, top)) in by else []) for learner in LEARNERS]
+        cells.append(" · ".join(solved([by[k]] if (k := (domain, learner, top)) in by else []) for learner in LEARNERS))
+        lines.append("| " + " | ".join(cells) + " |")
+    for n in COUNTS:
+        sel = {learner: [r for r in rows if r["learner"] == learner and r["trajectories"] == n] for learner in LEARNERS}
+        cells = [f"**mean ({n})**", *(pr(sel[learner]) for learner in LEARNERS)]
+        cells.append(" · ".join(solved(sel[learner]) for learner in LEARNERS) if n == top else "")
+        lines.append("| " + " | ".join(cells) + " |")
+    return "\n".join(lines) + "\n"
+
+
+def _read(path: Path) -> list[dict]:
+    rows = []
+    with open(path, newline="") as f:
+        for row in csv.DictReader(f):
+            for key in ("precision", "recall", "learn_s"):
+                row[key] = float(row[key]) if row.get(key) else None
+            for key in ("trajectories", "solved", "false_plans", "unsolvable", "timed_out", "syntax_errors", "problems"):
+                row[key] = int(row[key]) if row.get(key) else None
+            rows.append(row)
+    return rows
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -152,7 +197,15 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--domains", nargs="*", help="Only these domains (default: all 21).")
     parser.add_argument("--learners", nargs="*", default=list(LEARNERS), help="Only these learners.")
     parser.add_argument("--timeout", type=int, default=60, help="Planner time limit per solving problem (s).")
+    parser.add_argument("--report", action="store_true", help="Only rewrite the tables from --out's results.csv.")
     args = parser.parse_args(argv)
+    out = Path(args.out)
+    if args.report:
+        rows = _read(out / "results.csv")
+        domains = list(dict.fromkeys(r["domain"] for r in rows))
+        (out / "table.md").write_text(table(rows, domains))
+        (out / "summary.md").write_text(summary(rows, domains))
+        return 0
     try:
         folder = _amlgym_root() / "benchmarks" / "trajectories" / "learning"
     except ImportError:
@@ -160,7 +213,6 @@ def main(argv: list[str] | None = None) -> int:
         return 2
     domains = args.domains or sorted(p.name for p in folder.iterdir() if p.is_dir())
     tasks = [(d, n, learner, args.timeout) for d in domains for n in COUNTS for learner in args.learners]
-    out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     start = time.perf_counter()
     rows: list[dict] = []
@@ -175,6 +227,7 @@ def main(argv: list[str] | None = None) -> int:
             status = row.get("error") or f"P={row.get('precision')} R={row.get('recall')} solved={row.get('solved', '-')}"
             print(f"{row['domain']:12s} {row['trajectories']:2d} {row['learner']:18s} {status}", file=sys.stderr)
     (out / "table.md").write_text(table(rows, domains))
+    (out / "summary.md").write_text(summary(rows, domains))
     print(f"{len(rows)} cells in {time.perf_counter() - start:.0f} s; {out / 'table.md'}", file=sys.stderr)
     return 0
 

@@ -142,6 +142,7 @@ BAD = [
     ("ends-with-action.traj", EXIT_PDDL_SYNTAX, ":3:13: syntax error: the trajectory ends with an action"),
     ("nested.traj", EXIT_PDDL_SYNTAX, ":4:18: syntax error: nested list in an atom"),
     ("two-states.traj", EXIT_PDDL_SYNTAX, ":5:3: syntax error: two states without an action between them"),
+    ("negated.traj", EXIT_PDDL_SYNTAX, ":4:12: syntax error: 'not' in a state, expected only the atoms that are true"),
     ("type-clash.traj", EXIT_PDDL_SEMANTIC, ":4:39: semantic error: object 'hall' is used as a room and here as a"),
 ]
 
@@ -179,3 +180,13 @@ def test_options_that_do_not_fit_the_input_are_refused(runner, app, args, messag
     result = runner.invoke(app, argv)
     assert result.exit_code == EXIT_BAD_OPTION, result.output
     assert message in result.stderr
+
+
+def test_the_python_example_in_the_docs_runs():
+    import re
+
+    from conftest import fresh_interpreter
+
+    blocks = re.findall(r"```python\n(.*?)```", (ROOT / "docs" / "python.md").read_text(), re.S)
+    out = fresh_interpreter(blocks[1])
+    assert out.splitlines() == ["(('?r', 'room'), ('?s', 'switch'))", "3"]

@@ -19,15 +19,15 @@ literal is a precondition when it held before every observed step, an effect
 when it changed in some step and held after every one.  Two models:
 
 * ``safe`` (default): every plan the learned model finds is valid in the
-  true domain (SAM's guarantee), provided that the true domain is STRIPS
-  (negative preconditions only where the prior declares them), that a
-  predicate no observed step ever changed is static there too, and that the
-  problem's initial state satisfies the invariants the learner proves.  What
-  the steps cannot rule out stays a condition: a fluent false before every
-  step is a negative precondition, or, where the prior declares no
+  true domain (SAM's guarantee), provided that the true domain has negative
+  preconditions only where the prior declares them and that the problem's
+  initial state satisfies the invariants the learner proves.  What the steps
+  cannot rule out stays a condition: an atom false before every step is a
+  negative precondition, or, where the prior declares no
   ``:negative-preconditions`` (a STRIPS domain, whose states only matter
   through the atoms that are true), a delete effect, so that the learned
-  model never believes an atom true that the true action may have deleted.
+  model never believes an atom true that the true action may have deleted
+  (a laser that clears rock may also destroy gold no step showed beside it).
   Either is dropped where Fast Downward's invariant synthesis proves that a
   positive precondition rules the atom out already
   (:mod:`guided_lfd.demonstration.mutex`), as the VR learner does.
@@ -133,6 +133,9 @@ class _Evidence:
     ambiguous_true: list[frozenset[Atom]] = field(default_factory=list)
     ambiguous_false: list[frozenset[Atom]] = field(default_factory=list)
     steps: list[tuple[_Lifting, Observation]] = field(default_factory=list)
+    # Candidates no step rules out as deletes: false after every step, or true after only where the atom
+    # lifts more than one way (another way may be an add that made it true again).
+    unruled: set[Atom] = field(default_factory=set)
 
     def add(self, obs: Observation, schema: ActionSchema, candidates: list[Atom]) -> None:
         lift = _Lifting(schema.params, obs.objects)
@@ -141,12 +144,16 @@ class _Evidence:
         before, after = lift.lifted(obs.before) & typed, lift.lifted(obs.after) & typed
         added, deleted = changes(obs.before, obs.after, lift.objects)
         false_before = {c for c in candidates if lift.ground(c) not in obs.before}
+        unruled = {c for c in candidates
+                   if (ground := lift.ground(c)) not in obs.after or len(lift.lifted([ground]) & typed) > 1}
         if self.seen == 0:
             self.before_always, self.after_always, self.never_before = before, after, false_before
+            self.unruled = unruled
         else:
             self.before_always &= before
             self.after_always &= after
             self.never_before &= false_before
+            self.unruled &= unruled
         for atoms, sure, unsure in ((added, self.made_true, self.ambiguous_true),
                                     (deleted, self.made_false, self.ambiguous_false)):
             for atom in atoms:
@@ -163,29 +170,38 @@ class _Evidence:
         resolves."""
         return made.union(*(ways for ways in unsure if not ways & made))
 
-    def adds(self) -> set[Atom]:
-        """Made true in some step, true after every one."""
-        return self.changed(self.made_true, self.ambiguous_true) & self.after_always
+    def adds(self, model: str) -> set[Atom]:
+        """Made true in some step, true after every one.  A change only ever lifted two ways is added both
+        ways by the general model, neither by the safe one (believing fewer atoms true is safe, more not)."""
+        made = self.changed(self.made_true, self.ambiguous_true) if model == "general" else self.made_true
+        return made & self.after_always
 
-    def deletes(self, adds: set[Atom], among: set[Atom]) -> set[Atom]:
-        """Those of ``among`` false after every step, except where an add made the same atom true (PDDL
-        applies deletes first: moving from a place to itself leaves the mover there)."""
+    def deletes(self, among: set[Atom]) -> set[Atom]:
+        """Those of ``among`` false after every step, except a step where the atom lifts more than one way:
+        there another of its ways may be an add that made it true again (PDDL applies deletes first: moving
+        from a place to itself leaves the mover there)."""
         out: set[Atom] = set()
         for atom in among:
-            if all(lift.ground(atom) not in obs.after or lift.ground(atom) in {lift.ground(a) for a in adds}
+            if all((ground := lift.ground(atom)) not in obs.after or len(lift.lifted([ground])) > 1
                    for lift, obs in self.steps):
                 out.add(atom)
         return out
 
 
-def _learned(schema: ActionSchema, ev: _Evidence, model: str, negative: bool, fluent: set[str]) -> ActionSchema:
-    adds = ev.adds()
-    delete = ev.deletes(adds, ev.changed(ev.made_false, ev.ambiguous_false) - adds)
+def _learned(schema: ActionSchema, ev: _Evidence, model: str) -> ActionSchema:
+    adds = ev.adds(model)
+    if model == "safe":
+        # Every atom a step could have deleted: seen to become false, or true after only where it lifts two
+        # ways (an object passed twice: deleted one way, made true again another).  Believing fewer atoms
+        # true is safe; what was false before every step is left to the guards below.
+        delete = ev.unruled - ev.never_before - adds
+    else:
+        delete = ev.deletes(ev.changed(ev.made_false, ev.ambiguous_false) - adds)
     pre = [Literal(a) for a in sorted(ev.before_always)]
     if model == "safe":
         # What no step rules out: the action may need it false, or delete it (unseen: it was false already).
-        # A predicate no step ever changed is taken as static: no action deletes it.
-        pre += [Literal(a, False) for a in sorted(ev.never_before) if negative or a.predicate in fluent]
+        # Facts no step changes too: a laser that clears rock may also destroy the gold no step showed it at.
+        pre += [Literal(a, False) for a in sorted(ev.never_before)]
     return replace(schema, precondition=tuple(pre), add=tuple(sorted(adds)), delete=tuple(sorted(delete)),
                    origin=f"learned from {ev.seen} observed step(s)")
 
@@ -198,6 +214,7 @@ def learn_operators(prior: Domain, observations: Iterable[Observation], objects:
     (an invariant they break is not used).  Returns the domain and notes for the user (operators never
     observed, left out).  Actions of ``prior`` with a body are kept as they are.
     """
+    states = list(states)
     if model not in MODELS:
         raise ValueError(f"unknown model {model!r}, expected one of {', '.join(MODELS)}")
     negative = any(r in prior.requirements for r in (":negative-preconditions", ":adl"))
@@ -208,11 +225,9 @@ def learn_operators(prior: Domain, observations: Iterable[Observation], objects:
     for obs in observations:
         if obs.operator in evidence:
             evidence[obs.operator].add(obs, schemas[obs.operator], candidates[obs.operator])
-    fluent = {a.predicate for ev in evidence.values() if ev.seen for a in (*ev.made_true, *ev.made_false)}
-    fluent |= prior.fluent_predicates()
     notes = [f"{a.name}: never observed, left out of the learned domain (nothing shows what it needs or does)"
              for a in to_learn if evidence[a.name].seen == 0]
-    learned = {a.name: _learned(a, evidence[a.name], model, negative, fluent) for a in to_learn if evidence[a.name].seen}
+    learned = {a.name: _learned(a, evidence[a.name], model) for a in to_learn if evidence[a.name].seen}
     actions = [learned.get(a.name, a) for a in prior.actions if a.name in learned or a not in to_learn]
     domain = replace(prior, actions=actions, path="<learned>", source=None, warnings=())
     if model == "safe":

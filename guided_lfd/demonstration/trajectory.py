@@ -72,11 +72,11 @@ def _state(node: SExpr, src: SourceMap, prior: Domain, uses: dict[str, list[tupl
         if isinstance(item, Token):
             raise PddlSyntaxError(f"'{item.text}' in a state, expected an atom '(predicate object ...)'",
                                   src.location(item.line, item.col))
+        if item.head() == "not":
+            raise PddlSyntaxError("'not' in a state, expected only the atoms that are true (closed world)",
+                                  src.location(item.items[0].line, item.items[0].col))
         words = _words(item, "an atom", src)
         name = words[0].lower
-        if name == "not":
-            raise PddlSyntaxError("'not' in a state, expected only the atoms that are true (closed world)",
-                                  src.location(words[0].line, words[0].col))
         pred = prior.predicates.get(name)
         if pred is None:
             raise PddlSemanticError(f"predicate '{words[0].text}' is not declared in {prior.path}",
