@@ -52,6 +52,8 @@ def segment(
     check_files([trace, state_path], {"--output": output})
     if jsonl_out and (csv_out or json_out):
         raise OptionError("--jsonl: give one of --json, --csv, --jsonl")
+    if csv_out and json_out:  # before streaming: a pipe is refused the same way as a file
+        output_format(output, json_out, csv_out)
     if trace == "-" and state_path != "-" and output == "-" and (csv_out or jsonl_out):
         _stream(state_path, csv_out, include_idle)
         return

@@ -125,3 +125,9 @@ def test_an_empty_stream_is_refused_as_an_empty_file_is(given, code, message):
     proc = _pipe(ROOT / "data" / "demos" / "kitchen-1" / "P1-complete.state.csv", "--csv")
     out, err = proc.communicate(given, timeout=120)
     assert proc.returncode == code and message in err.decode() and b"Traceback" not in err
+
+
+def test_two_formats_for_a_pipe_are_refused_as_for_a_file():
+    proc = _pipe(ROOT / "data" / "demos" / "kitchen-1" / "P1-complete.state.csv", "--csv", "--json")
+    out, err = proc.communicate(K1.read_bytes(), timeout=120)
+    assert proc.returncode == 37 and "--csv and --json: choose one output format" in err.decode() and not out

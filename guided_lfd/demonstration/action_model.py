@@ -19,18 +19,19 @@ literal is a precondition when it held before every observed step, an effect
 when it changed in some step and held after every one.  Two models:
 
 * ``safe`` (default): every plan the learned model finds is valid in the
-  true domain (SAM's guarantee), provided that the true domain has negative
-  preconditions only where the prior declares them and that the problem's
+  true domain (SAM's guarantee), provided that the true domain has no
+  negative preconditions the steps could not show and that the problem's
   initial state satisfies the invariants the learner proves.  What the steps
   cannot rule out stays a condition: an atom false before every step is a
-  negative precondition, or, where the prior declares no
-  ``:negative-preconditions`` (a STRIPS domain, whose states only matter
-  through the atoms that are true), a delete effect, so that the learned
-  model never believes an atom true that the true action may have deleted
-  (a laser that clears rock may also destroy gold no step showed beside it).
-  Either is dropped where Fast Downward's invariant synthesis proves that a
-  positive precondition rules the atom out already
-  (:mod:`guided_lfd.demonstration.mutex`), as the VR learner does.
+  negative precondition (``:negative-preconditions`` is added to the
+  requirements where one remains), so the action never runs where it might
+  need that atom false or delete it unseen (a laser that clears rock may
+  also destroy gold no step showed beside it).  It is dropped where Fast
+  Downward's invariant synthesis proves that a positive precondition rules
+  the atom out already (:mod:`guided_lfd.demonstration.mutex`), as the VR
+  learner does.  As in SAM, a step that passes one object twice (which
+  parameter is an effect about?) is left out, and the guarantee is for
+  actions applied to distinct objects.
 * ``general``: only what the steps show: preconditions that held before
   every step, effects seen to change; nothing for what no step ruled out.
   Closer to the true domain where those guards are needless (higher
@@ -133,9 +134,7 @@ class _Evidence:
     ambiguous_true: list[frozenset[Atom]] = field(default_factory=list)
     ambiguous_false: list[frozenset[Atom]] = field(default_factory=list)
     steps: list[tuple[_Lifting, Observation]] = field(default_factory=list)
-    # Candidates no step rules out as deletes: false after every step, or true after only where the atom
-    # lifts more than one way (another way may be an add that made it true again).
-    unruled: set[Atom] = field(default_factory=set)
+    candidates: list[Atom] = field(default_factory=list)
 
     def add(self, obs: Observation, schema: ActionSchema, candidates: list[Atom]) -> None:
         lift = _Lifting(schema.params, obs.objects)
@@ -144,16 +143,13 @@ class _Evidence:
         before, after = lift.lifted(obs.before) & typed, lift.lifted(obs.after) & typed
         added, deleted = changes(obs.before, obs.after, lift.objects)
         false_before = {c for c in candidates if lift.ground(c) not in obs.before}
-        unruled = {c for c in candidates
-                   if (ground := lift.ground(c)) not in obs.after or len(lift.lifted([ground]) & typed) > 1}
         if self.seen == 0:
             self.before_always, self.after_always, self.never_before = before, after, false_before
-            self.unruled = unruled
+            self.candidates = candidates
         else:
             self.before_always &= before
             self.after_always &= after
             self.never_before &= false_before
-            self.unruled &= unruled
         for atoms, sure, unsure in ((added, self.made_true, self.ambiguous_true),
                                     (deleted, self.made_false, self.ambiguous_false)):
             for atom in atoms:
@@ -188,20 +184,15 @@ class _Evidence:
         return out
 
 
-def _learned(schema: ActionSchema, ev: _Evidence, model: str) -> ActionSchema:
+def _learned(schema: ActionSchema, ev: _Evidence, model: str, negative: bool) -> ActionSchema:
     adds = ev.adds(model)
-    if model == "safe":
-        # Every atom a step could have deleted: seen to become false, or true after only where it lifts two
-        # ways (an object passed twice: deleted one way, made true again another).  Believing fewer atoms
-        # true is safe; what was false before every step is left to the guards below.
-        delete = ev.unruled - ev.never_before - adds
-    else:
-        delete = ev.deletes(ev.changed(ev.made_false, ev.ambiguous_false) - adds)
+    delete = ev.deletes(ev.changed(ev.made_false, ev.ambiguous_false) - adds)
     pre = [Literal(a) for a in sorted(ev.before_always)]
     if model == "safe":
         # What no step rules out: the action may need it false, or delete it (unseen: it was false already).
         # Facts no step changes too: a laser that clears rock may also destroy the gold no step showed it at.
-        pre += [Literal(a, False) for a in sorted(ev.never_before)]
+        # An atom the action makes true needs no guard unless the true domain may require it false first.
+        pre += [Literal(a, False) for a in sorted(ev.never_before) if negative or a not in adds]
     return replace(schema, precondition=tuple(pre), add=tuple(sorted(adds)), delete=tuple(sorted(delete)),
                    origin=f"learned from {ev.seen} observed step(s)")
 
@@ -217,23 +208,32 @@ def learn_operators(prior: Domain, observations: Iterable[Observation], objects:
     states = list(states)
     if model not in MODELS:
         raise ValueError(f"unknown model {model!r}, expected one of {', '.join(MODELS)}")
-    negative = any(r in prior.requirements for r in (":negative-preconditions", ":adl"))
     to_learn = [a for a in prior.actions if not a.precondition and not a.add and not a.delete and a.cost is None]
     evidence: dict[str, _Evidence] = {a.name: _Evidence() for a in to_learn}
     candidates = {a.name: _candidates(a, prior) for a in to_learn}
     schemas = {a.name: a for a in to_learn}
+    repeated = 0
     for obs in observations:
+        if model == "safe" and len(set(obs.objects)) < len(obs.objects):
+            # SAM's rule: a step that passes one object twice cannot tell which parameter an effect is about.
+            repeated += obs.operator in evidence
+            continue
         if obs.operator in evidence:
             evidence[obs.operator].add(obs, schemas[obs.operator], candidates[obs.operator])
-    notes = [f"{a.name}: never observed, left out of the learned domain (nothing shows what it needs or does)"
+    notes = [f"{repeated} step(s) passing one object twice left out (the safe model learns from steps with "
+             "distinct objects; its guarantee is for actions on distinct objects)"] if repeated else []
+    notes += [f"{a.name}: never observed, left out of the learned domain (nothing shows what it needs or does)"
              for a in to_learn if evidence[a.name].seen == 0]
-    learned = {a.name: _learned(a, evidence[a.name], model) for a in to_learn if evidence[a.name].seen}
+    negative = any(r in prior.requirements for r in (":negative-preconditions", ":adl"))
+    learned = {a.name: _learned(a, evidence[a.name], model, negative) for a in to_learn if evidence[a.name].seen}
     actions = [learned.get(a.name, a) for a in prior.actions if a.name in learned or a not in to_learn]
     domain = replace(prior, actions=actions, path="<learned>", source=None, warnings=())
     if model == "safe":
         domain = _without_implied_negatives(domain, set(learned), objects, states)
-        if not negative:
-            domain = _as_strips(domain, set(learned))
+        if any(not l.positive for a in domain.actions if a.name in learned for l in a.precondition):
+            # The guards are negative preconditions, as SAM writes them, whatever the prior declares.
+            domain = replace(domain, requirements=tuple(dict.fromkeys([*domain.requirements,
+                                                                       ":negative-preconditions"])))
     return domain, notes
 
 
@@ -245,17 +245,3 @@ def _without_implied_negatives(domain: Domain, names: set[str], objects: dict[st
     reqs = tuple(dict.fromkeys([*domain.requirements, ":negative-preconditions"]))
     invariants = proven_invariants(replace(domain, requirements=reqs), objects, states, reverse=False)
     return drop_implied_negative_preconditions(domain, names, invariants)
-
-
-def _as_strips(domain: Domain, names: set[str]) -> Domain:
-    """Without negative preconditions: what a remaining ``(not p)`` guarded becomes a delete of ``p`` where no
-    step made ``p`` true (so the learned model never believes ``p`` true where the true action may have
-    deleted it); the negation of an add effect just goes (the action makes it true either way)."""
-    out: list[ActionSchema] = []
-    for action in domain.actions:
-        if action.name in names:
-            guarded = {l.atom for l in action.precondition if not l.positive} - set(action.add)
-            action = replace(action, precondition=tuple(l for l in action.precondition if l.positive),
-                             delete=tuple(sorted(set(action.delete) | guarded)))
-        out.append(action)
-    return replace(domain, actions=out)
