@@ -131,3 +131,15 @@ def test_two_formats_for_a_pipe_are_refused_as_for_a_file():
     proc = _pipe(ROOT / "data" / "demos" / "kitchen-1" / "P1-complete.state.csv", "--csv", "--json")
     out, err = proc.communicate(K1.read_bytes(), timeout=120)
     assert proc.returncode == 37 and "--csv and --json: choose one output format" in err.decode() and not out
+
+
+def test_a_bad_row_after_blank_lines_is_named_at_its_line_in_a_file_and_in_a_pipe(runner, app):
+    """Blank lines count as lines (pandas skips them; the numbers used to fall two short, lines 4 for 6)."""
+    trace = ROOT / "tests" / "data" / "regressions" / "issue30" / "blank-lines.csv"
+    state = default_state_path(str(trace))
+    message = "6:3: trace error: column 'x': expected a finite number, got 'zz'"
+    result = runner.invoke(app, ["segment", str(trace)])
+    assert result.exit_code == 36 and f"{trace}:{message}" in result.stderr
+    proc = _pipe(Path(state), "--csv")
+    _, err = proc.communicate(trace.read_bytes(), timeout=120)
+    assert proc.returncode == 36 and f"-:{message}" in err.decode()

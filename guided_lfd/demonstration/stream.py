@@ -100,22 +100,27 @@ def _is_stream(fd: int) -> bool:
     return stat.S_ISFIFO(mode) or stat.S_ISSOCK(mode) or stat.S_ISCHR(mode)
 
 
-def _batches(lines: Iterator[bytes | None], batch_rows: int) -> Iterator[list[bytes]]:
-    """Lists of at most ``batch_rows`` non-blank lines, cut early where the source paused."""
+def _batches(lines: Iterator[bytes | None], batch_rows: int, first: int = 2) -> Iterator[tuple[list[bytes], list[int]]]:
+    """Lists of at most ``batch_rows`` non-blank lines with their line numbers (the first line read is line
+    ``first``; blank lines count, as in the file), cut early where the source paused."""
     batch: list[bytes] = []
+    numbers: list[int] = []
+    number = first - 1
     for line in lines:
         if line is None:
             if batch:
-                yield batch
-                batch = []
+                yield batch, numbers
+                batch, numbers = [], []
             continue
+        number += 1
         if line.strip():
             batch.append(line)
+            numbers.append(number)
         if len(batch) >= batch_rows:
-            yield batch
-            batch = []
+            yield batch, numbers
+            batch, numbers = [], []
     if batch:
-        yield batch
+        yield batch, numbers
 
 
 class _GrowingState:
@@ -203,7 +208,6 @@ def stream_segments(source: IO[bytes], state_path: str, path: str = "-", batch_r
     window = _Window(header if header.endswith(b"\n") else header + b"\n", initial, events)
     written: dict[str, float] = {}  # the end of each hand's last written segment
     first_seen: dict[str, Segment] = {}  # each hand's earliest open segment, as seen while whole
-    line = 1
     def close(final: bool) -> Iterator[Segment]:
         nonlocal objects, spellings, vocabulary
         if state.grew():  # the recorder wrote more of the world's changes
@@ -212,12 +216,13 @@ def stream_segments(source: IO[bytes], state_path: str, path: str = "-", batch_r
                       final)
 
     try:
-        for batch in _batches(lines, batch_rows):
+        rows = 0
+        for batch, numbers in _batches(lines, batch_rows):
             window.rows += batch
-            window.lines += range(line + 1, line + 1 + len(batch))
-            line += len(batch)
+            window.lines += numbers
+            rows += len(batch)
             yield from close(False)
-        if line == 1:
+        if rows == 0:
             raise TraceError("no rows after the header", Location(path, 2))
         yield from close(True)
     except TraceError as exc:

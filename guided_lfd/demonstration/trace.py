@@ -108,6 +108,7 @@ def _csv(text: str, path: str, columns: tuple[str, ...], numeric: tuple[str, ...
     if numeric:
         frame = _fast_frame(text, columns, numeric)
         if frame is not None:
+            frame.attrs["blank_lines"] = blank_lines(text)
             return frame
     try:
         frame = pd.read_csv(io.StringIO(text), dtype=str, keep_default_na=False, skipinitialspace=True)
@@ -128,6 +129,7 @@ def _csv(text: str, path: str, columns: tuple[str, ...], numeric: tuple[str, ...
         )
     if frame.empty:
         raise TraceError("no rows after the header", Location(path, 2))
+    frame.attrs["blank_lines"] = blank_lines(text)
     return frame
 
 
@@ -168,8 +170,32 @@ def _all_parsed(frame: pd.DataFrame, columns: tuple[str, ...], numeric: tuple[st
 
 
 def _where(path: str, frame: pd.DataFrame, row: int, column: str) -> Location:
-    # CSV line = data row + 2 (header is line 1); column is 1-based.
-    return Location(path, row + 2, list(frame.columns).index(column) + 1)
+    # CSV line = data row + 2 (header is line 1), past the blank lines pandas skipped; column is 1-based.
+    line = row + 2
+    for blank in frame.attrs.get("blank_lines", ()):
+        if blank > line:
+            break
+        line += 1
+    return Location(path, line, list(frame.columns).index(column) + 1)
+
+
+#: A line with nothing but blanks, which pandas' reader skips.
+_BLANK_LINE = re.compile(r"^[ \t\r\f\v]*$", re.M)
+
+
+def blank_lines(text: str) -> tuple[int, ...]:
+    """The numbers of ``text``'s blank lines (1-based), for positions in a CSV read by pandas."""
+    if not re.search(r"\n[ \t\r\f\v]*\n", text) and text[:1] not in ("\n", "\r", " ", "\t"):
+        return ()  # the common case, one scan
+    out: list[int] = []
+    counted, line = 0, 1
+    for match in _BLANK_LINE.finditer(text):
+        if match.start() == len(text):
+            break  # after the final line break: no line
+        line += text.count("\n", counted, match.start())
+        counted = match.start()
+        out.append(line)
+    return tuple(out)
 
 
 def _numbers(frame: pd.DataFrame, path: str, column: str) -> np.ndarray:
