@@ -13,7 +13,7 @@ from guided_lfd.demonstration.learn import learn_domain as learn
 from guided_lfd.demonstration.action_model import MODELS
 from guided_lfd.demonstration.segments_document import load_segments
 from guided_lfd.demonstration.trajectory import is_trajectory, learn_from_trajectories, read_trajectory
-from guided_lfd.errors import OptionError
+from guided_lfd.errors import Location, MismatchError, OptionError
 from guided_lfd.io import write_text
 from guided_lfd.pddl.model import pddl_name_defect
 from guided_lfd.pddl.reader import parse_domain, parse_problem_for
@@ -41,7 +41,9 @@ def learn_domain(
                                  help="The demonstrator's domain: skills with a human action's effects take its "
                                       "name and parameter order.")
     ] = None,
-    name: Annotated[str, typer.Option("--name", metavar="NAME", help="Name of the learned domain.")] = "learned",
+    name: Annotated[str | None, typer.Option("--name", metavar="NAME",
+                                             help="Name of the learned domain (default: 'learned'; from "
+                                                  "trajectories, the prior's).")] = None,
     problem: Annotated[
         list[str] | None, typer.Option("--problem", metavar="FILE",
                                        help="Trajectories: a problem whose objects' types the trajectories use "
@@ -66,7 +68,7 @@ def learn_domain(
     file declares them), steps the prior already makes are not learned again,
     and a skill that could never run beside the prior's is refused.
     """
-    why = pddl_name_defect(name.lower())
+    why = pddl_name_defect(name.lower()) if name is not None else None
     if why:
         raise OptionError(f"--name {name!r}: expected {why}")
     check_files([*segments, prior, human, *(problem or [])], {"--output": output})
@@ -82,7 +84,7 @@ def learn_domain(
     prior_domain = parse_domain(prior) if prior else None
     ui.reading_warnings(prior_domain)
     human_domain = parse_domain(human) if human else None
-    domain = learn(documents, prior_domain, name=name.lower(), human=human_domain, skip_known=prior is not None)
+    domain = learn(documents, prior_domain, name=(name or "learned").lower(), human=human_domain, skip_known=prior is not None)
     if prior_domain is not None:
         from guided_lfd.demonstration.learn import check_usable, document_vocabulary
 
@@ -103,7 +105,7 @@ def learn_domain(
 
 
 def _from_trajectories(texts: list[tuple[str, str]], prior: str | None, problems: list[str], model: str,
-                       human: str | None, name: str, output: str) -> None:
+                       human: str | None, name: str | None, output: str) -> None:
     """learn-domain on PDDL trajectories: the prior's empty-bodied operators learned (``--model``)."""
     segments = [path for path, text in texts if not is_trajectory(text)]
     if segments:
@@ -117,10 +119,13 @@ def _from_trajectories(texts: list[tuple[str, str]], prior: str | None, problems
     ui.reading_warnings(prior_domain)
     objects: dict[str, str] | None = None
     for path in problems:
-        objects = {**(objects or {}), **parse_problem_for(prior_domain, path).objects}
+        for obj, t in parse_problem_for(prior_domain, path).objects.items():
+            if (objects := objects or {}).setdefault(obj, t) != t:
+                raise MismatchError(f"object '{obj}' is a {t} in {path} and a {objects[obj]} in an earlier "
+                                    "--problem; expected one type", Location(path))
     trajectories = [read_trajectory(path, text, prior_domain, objects) for path, text in texts]
     domain = learn_from_trajectories(prior_domain, trajectories, model)
-    if name != "learned":
+    if name is not None:
         domain = replace(domain, name=name.lower())
     ui.reading_warnings(domain)
     header = f"Learned by guided-lfd learn-domain (--model {model}) from: " + ", ".join(p for p, _ in texts)

@@ -19,9 +19,12 @@ literal is a precondition when it held before every observed step, an effect
 when it changed in some step and held after every one.  Two models:
 
 * ``safe`` (default): every plan the learned model finds is valid in the
-  true domain (SAM's guarantee), provided that the true domain has no
-  negative preconditions the steps could not show and that the problem's
-  initial state satisfies the invariants the learner proves.  What the steps
+  true domain (SAM's guarantee) for actions on distinct objects (none of
+  them a constant), provided that the true domain has negative
+  preconditions only where the prior declares ``:negative-preconditions``
+  and that the problem's initial state satisfies the invariants the learner
+  proves (Fast Downward's, forward only, each checked on every observed
+  state).  Atoms about the prior's constants are learned as such.  What the steps
   cannot rule out stays a condition: an atom false before every step is a
   negative precondition (``:negative-preconditions`` is added to the
   requirements where one remains), so the action never runs where it might
@@ -51,7 +54,7 @@ __all__ = ["Observation", "MODELS", "bound_by", "facts_about", "changes", "learn
 
 #: The models :func:`learn_operators` can learn, with what each guarantees.
 MODELS: dict[str, str] = {
-    "safe": "every plan it finds is valid in the true domain (SAM's guarantee; assumptions in the module doc)",
+    "safe": "every plan it finds is valid in the true domain, for actions on distinct objects (SAM's guarantee)",
     "general": "only what the steps show; a plan may rely on an effect no step showed",
 }
 
@@ -88,15 +91,16 @@ def changes(before: frozenset[Atom] | set[Atom], after: frozenset[Atom] | set[At
 
 
 class _Lifting:
-    """Ground atoms of one step <-> lifted atoms over an operator's parameters (an object passed twice
-    lifts to either parameter)."""
+    """Ground atoms of one step <-> lifted atoms over an operator's parameters and the domain's constants
+    (an object passed twice, or a constant passed as an argument, lifts more than one way)."""
 
-    def __init__(self, params: tuple[tuple[str, str], ...], objects: tuple[str, ...]) -> None:
+    def __init__(self, params: tuple[tuple[str, str], ...], objects: tuple[str, ...],
+                 constants: frozenset[str] = frozenset()) -> None:
         self.binding = {var: obj for (var, _), obj in zip(params, objects)}
-        self.vars_of: dict[str, list[str]] = {}
+        self.vars_of: dict[str, list[str]] = {c: [c] for c in constants}
         for (var, _), obj in zip(params, objects):
             self.vars_of.setdefault(obj, []).append(var)
-        self.objects = frozenset(objects)
+        self.objects = frozenset(objects) | constants
 
     def lifted(self, atoms: Iterable[Atom]) -> set[Atom]:
         out: set[Atom] = set()
@@ -110,14 +114,31 @@ class _Lifting:
         return atom.substitute(self.binding)
 
 
+#: Lifted atoms an operator's guards may range over, at most (the count grows as parameters ** arity).
+MAX_CANDIDATES = 200_000
+
+
 def _candidates(schema: ActionSchema, domain: Domain) -> list[Atom]:
-    """Every well-typed lifted atom over ``schema``'s parameters (each parameter's type within the predicate's)."""
+    """Every well-typed lifted atom over ``schema``'s parameters and the domain's constants (each term's type
+    within the predicate's); TaskTooLarge past :data:`MAX_CANDIDATES`."""
+    from guided_lfd.errors import Location, TaskTooLarge
+
     sub = domain.subtypes()
-    out: list[Atom] = []
+    terms = [*schema.params, *domain.constants.items()]
+    count = 0
+    options_of = {}
     for pred in domain.predicates.values():
-        options = [[v for v, t in schema.params if t in sub.get(pt, {pt})] for _, pt in pred.params]
-        out.extend(Atom(pred.name, args) for args in product(*options))
-    return out
+        options = [[v for v, t in terms if t in sub.get(pt, {pt})] for _, pt in pred.params]
+        n = 1
+        for o in options:
+            n *= len(o)
+        count += n
+        options_of[pred.name] = options
+    if count > MAX_CANDIDATES:
+        raise TaskTooLarge(f"operator {schema.name}: {count:,} lifted atoms over its parameters to learn about "
+                           f"(at most {MAX_CANDIDATES:,}); expected fewer parameters or lower arities",
+                           domain.locate(schema.name))
+    return [Atom(name, args) for name, options in options_of.items() for args in product(*options)]
 
 
 @dataclass
@@ -134,10 +155,10 @@ class _Evidence:
     ambiguous_true: list[frozenset[Atom]] = field(default_factory=list)
     ambiguous_false: list[frozenset[Atom]] = field(default_factory=list)
     steps: list[tuple[_Lifting, Observation]] = field(default_factory=list)
-    candidates: list[Atom] = field(default_factory=list)
 
-    def add(self, obs: Observation, schema: ActionSchema, candidates: list[Atom]) -> None:
-        lift = _Lifting(schema.params, obs.objects)
+    def add(self, obs: Observation, schema: ActionSchema, candidates: list[Atom],
+            constants: frozenset[str] = frozenset()) -> None:
+        lift = _Lifting(schema.params, obs.objects, constants)
         # Only well-typed atoms: a shaker's fact is no fact of every container passed where a shaker was.
         typed = set(candidates)
         before, after = lift.lifted(obs.before) & typed, lift.lifted(obs.after) & typed
@@ -145,7 +166,6 @@ class _Evidence:
         false_before = {c for c in candidates if lift.ground(c) not in obs.before}
         if self.seen == 0:
             self.before_always, self.after_always, self.never_before = before, after, false_before
-            self.candidates = candidates
         else:
             self.before_always &= before
             self.after_always &= after
@@ -167,8 +187,8 @@ class _Evidence:
         return made.union(*(ways for ways in unsure if not ways & made))
 
     def adds(self, model: str) -> set[Atom]:
-        """Made true in some step, true after every one.  A change only ever lifted two ways is added both
-        ways by the general model, neither by the safe one (believing fewer atoms true is safe, more not)."""
+        """Made true in some step, true after every one (a change only ever lifted two ways: both ways, in the
+        general model; the safe one learns from no such step)."""
         made = self.changed(self.made_true, self.ambiguous_true) if model == "general" else self.made_true
         return made & self.after_always
 
@@ -208,20 +228,24 @@ def learn_operators(prior: Domain, observations: Iterable[Observation], objects:
     states = list(states)
     if model not in MODELS:
         raise ValueError(f"unknown model {model!r}, expected one of {', '.join(MODELS)}")
-    to_learn = [a for a in prior.actions if not a.precondition and not a.add and not a.delete and a.cost is None]
+    # An action whose only effect is its cost is to learn too (its cost is kept).
+    to_learn = [a for a in prior.actions if not a.precondition and not a.add and not a.delete]
     evidence: dict[str, _Evidence] = {a.name: _Evidence() for a in to_learn}
     candidates = {a.name: _candidates(a, prior) for a in to_learn}
     schemas = {a.name: a for a in to_learn}
     repeated = 0
+    constants = frozenset(prior.constants)
     for obs in observations:
-        if model == "safe" and len(set(obs.objects)) < len(obs.objects):
+        if model == "safe" and (len(set(obs.objects)) < len(obs.objects) or constants & set(obs.objects)):
             # SAM's rule: a step that passes one object twice cannot tell which parameter an effect is about.
             repeated += obs.operator in evidence
             continue
         if obs.operator in evidence:
-            evidence[obs.operator].add(obs, schemas[obs.operator], candidates[obs.operator])
-    notes = [f"{repeated} step(s) passing one object twice left out (the safe model learns from steps with "
-             "distinct objects; its guarantee is for actions on distinct objects)"] if repeated else []
+            evidence[obs.operator].add(obs, schemas[obs.operator], candidates[obs.operator], constants)
+    notes = [f"{repeated} step(s) passing one object twice (or a constant) left out (the safe model learns from "
+             "steps with distinct objects; its guarantee is for actions on distinct objects)"] if repeated else []
+    if not to_learn:
+        notes.append(f"every action of {prior.path} has a body: nothing to learn (the prior is written as it is)")
     notes += [f"{a.name}: never observed, left out of the learned domain (nothing shows what it needs or does)"
              for a in to_learn if evidence[a.name].seen == 0]
     negative = any(r in prior.requirements for r in (":negative-preconditions", ":adl"))

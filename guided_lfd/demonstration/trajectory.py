@@ -60,8 +60,9 @@ def _words(node: SExpr, what: str, src: SourceMap) -> list[Token]:
             raise PddlSyntaxError(f"nested list in {what}, expected names only", src.location(item.line, item.col))
     words = [item for item in node.items if isinstance(item, Token)]
     for tok in words[1:]:
-        if tok.text.startswith("?"):
-            raise PddlSyntaxError(f"variable '{tok.text}' in {what}, expected an object name",
+        if tok.text.startswith(("?", ":")):
+            kind = "variable" if tok.text.startswith("?") else "keyword"
+            raise PddlSyntaxError(f"{kind} '{tok.text}' in {what}, expected an object name",
                                   src.location(tok.line, tok.col))
     return words
 
@@ -172,6 +173,12 @@ def read_trajectory(path: str, text: str, prior: Domain, objects: dict[str, str]
                 raise PddlSemanticError(f"object '{tok.text}' is not declared in the problem",
                                         src.location(tok.line, tok.col))
         types = {o: objects.get(o) or prior.constants[o] for o in uses}
+    types = {o: prior.constants.get(o, t) for o, t in types.items()}
+    for obj, seen in uses.items():  # a declared type (the problem's, a constant's) must fit every use
+        for t, tok in seen:
+            if not t.startswith("(either") and t not in type_ancestors(prior.types, types[obj]):
+                raise PddlSemanticError(f"object '{tok.text}' is a {types[obj]}, used here as a {t}; expected "
+                                        "an object of that type", src.location(tok.line, tok.col))
     steps = tuple(Observation(name, args, states[i], states[i + 1], str(where))
                   for i, (name, args, where) in enumerate(actions))
     return Trajectory(path, tuple(states), steps, types)
@@ -184,7 +191,10 @@ def learn_from_trajectories(prior: Domain, trajectories: list[Trajectory], model
 
     objects: dict[str, str] = {}
     for trajectory in trajectories:
-        objects.update(trajectory.objects)
+        for obj, t in trajectory.objects.items():
+            if objects.setdefault(obj, t) != t:
+                raise PddlSemanticError(f"object '{obj}' is a {t} here and a {objects[obj]} in an earlier "
+                                        "trajectory; expected one type", Location(trajectory.source))
     steps = [step for t in trajectories for step in t.steps]
     states = [state for t in trajectories for state in t.states]
     domain, notes = learn_operators(prior, steps, objects, model, states)

@@ -1,0 +1,7 @@
+(define (domain door)
+  (:requirements :strips :typing)
+  (:types room)
+  (:constants main - room)
+  (:predicates (open ?r - room) (in ?r - room))
+  (:action close-main :parameters () :precondition (and) :effect (and))
+  (:action walk :parameters (?r - room) :precondition (and) :effect (and)))
