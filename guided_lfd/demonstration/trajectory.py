@@ -192,9 +192,13 @@ def learn_from_trajectories(prior: Domain, trajectories: list[Trajectory], model
     objects: dict[str, str] = {}
     for trajectory in trajectories:
         for obj, t in trajectory.objects.items():
-            if objects.setdefault(obj, t) != t:
-                raise PddlSemanticError(f"object '{obj}' is a {t} here and a {objects[obj]} in an earlier "
+            known = objects.setdefault(obj, t)
+            if t in type_ancestors(prior.types, known):
+                continue  # the earlier use asked for as much or more
+            if known not in type_ancestors(prior.types, t):
+                raise PddlSemanticError(f"object '{obj}' is a {t} here and a {known} in an earlier "
                                         "trajectory; expected one type", Location(trajectory.source))
+            objects[obj] = t  # this trajectory's uses are narrower
     steps = [step for t in trajectories for step in t.steps]
     states = [state for t in trajectories for state in t.states]
     domain, notes = learn_operators(prior, steps, objects, model, states)
