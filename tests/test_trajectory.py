@@ -262,3 +262,19 @@ def test_the_learned_domain_keeps_the_priors_name_unless_named(runner, app):
     args = ["learn-domain", "--prior", str(LIGHTS / "prior.pddl"), str(LIGHTS / "day-1.traj")]
     assert "(define (domain lights)" in runner.invoke(app, args).stdout
     assert "(define (domain learned)" in runner.invoke(app, [*args, "--name", "learned"]).stdout
+
+
+def test_types_inferred_in_two_trajectories_combine_to_the_narrower(tmp_path):
+    """A shot is only a container in one trajectory (used where any container goes) and a shot in the next."""
+    (tmp_path / "prior.pddl").write_text(
+        "(define (domain bar) (:requirements :strips :typing) (:types container - object shot - container)"
+        " (:predicates (clean ?c - container) (filled ?s - shot))"
+        " (:action wash :parameters (?c - container) :precondition (and) :effect (and))"
+        " (:action fill :parameters (?s - shot) :precondition (and) :effect (and)))")
+    (tmp_path / "a.traj").write_text("(:trajectory (:state) (:action (wash s1)) (:state (clean s1)))")
+    (tmp_path / "b.traj").write_text("(:trajectory (:state (clean s1)) (:action (fill s1)) (:state (clean s1) (filled s1)))")
+    prior = parse_domain(str(tmp_path / "prior.pddl"))
+    trajectories = [read_trajectory(str(p), p.read_text(), prior) for p in sorted(tmp_path.glob("*.traj"))]
+    assert trajectories[0].objects == {"s1": "container"} and trajectories[1].objects == {"s1": "shot"}
+    domain = learn_from_trajectories(prior, trajectories)
+    assert domain.action("fill").add == (Atom("filled", ("?s",)),)
