@@ -75,7 +75,12 @@ def learn_domain(
     if model not in MODELS:
         raise OptionError(f"--model {model!r}: expected one of {', '.join(MODELS)}")
     texts = [(path, read_text(path, "segments JSON or a PDDL trajectory")) for path in segments]
-    if any(is_trajectory(text) for _, text in texts):
+    trajectories = [path for path, text in texts if is_trajectory(text)]
+    if trajectories:
+        kept = [path for path, _ in texts if path not in trajectories]
+        if kept:
+            raise OptionError(f"{kept[0]} holds segments and {trajectories[0]} a trajectory; expected one kind "
+                              "per run")
         return _from_trajectories(texts, prior, problem or [], model, human, name, output)
     if problem or model != "safe":
         raise OptionError(f"{'--problem' if problem else '--model'} is for trajectories; "
@@ -107,20 +112,16 @@ def learn_domain(
 def _from_trajectories(texts: list[tuple[str, str]], prior: str | None, problems: list[str], model: str,
                        human: str | None, name: str | None, output: str) -> None:
     """learn-domain on PDDL trajectories: the prior's empty-bodied operators learned (``--model``)."""
-    segments = [path for path, text in texts if not is_trajectory(text)]
-    if segments:
-        trajectory = next(path for path, text in texts if is_trajectory(text))
-        raise OptionError(f"{segments[0]} holds segments and {trajectory} a trajectory; expected one kind per run")
     if prior is None:
         raise OptionError(f"{texts[0][0]} is a trajectory: expected --prior DOMAIN with the operators' signatures")
     if human is not None:
         raise OptionError("--human is for segments: a trajectory names its operators already")
     prior_domain = parse_domain(prior)
     ui.reading_warnings(prior_domain)
-    objects: dict[str, str] | None = None
+    objects: dict[str, str] | None = {} if problems else None
     for path in problems:
         for obj, t in parse_problem_for(prior_domain, path).objects.items():
-            if (objects := objects or {}).setdefault(obj, t) != t:
+            if objects.setdefault(obj, t) != t:
                 raise MismatchError(f"object '{obj}' is a {t} in {path} and a {objects[obj]} in an earlier "
                                     "--problem; expected one type", Location(path))
     trajectories = [read_trajectory(path, text, prior_domain, objects) for path, text in texts]

@@ -121,7 +121,7 @@ MAX_CANDIDATES = 200_000
 def _candidates(schema: ActionSchema, domain: Domain) -> list[Atom]:
     """Every well-typed lifted atom over ``schema``'s parameters and the domain's constants (each term's type
     within the predicate's); TaskTooLarge past :data:`MAX_CANDIDATES`."""
-    from guided_lfd.errors import Location, TaskTooLarge
+    from guided_lfd.errors import TaskTooLarge
 
     sub = domain.subtypes()
     terms = [*schema.params, *domain.constants.items()]
@@ -143,8 +143,12 @@ def _candidates(schema: ActionSchema, domain: Domain) -> list[Atom]:
 
 @dataclass
 class _Evidence:
-    """What the observations of one operator show, lifted."""
+    """What the observations of one operator show, lifted over its ``schema``'s parameters and ``constants``
+    (``candidates``: every well-typed lifted atom, see :func:`_candidates`)."""
 
+    schema: ActionSchema
+    candidates: list[Atom]
+    constants: frozenset[str] = frozenset()
     seen: int = 0
     before_always: set[Atom] = field(default_factory=set)  # true before every step
     never_before: set[Atom] = field(default_factory=set)   # false before every step (of the candidates)
@@ -156,14 +160,17 @@ class _Evidence:
     ambiguous_false: list[frozenset[Atom]] = field(default_factory=list)
     steps: list[tuple[_Lifting, Observation]] = field(default_factory=list)
 
-    def add(self, obs: Observation, schema: ActionSchema, candidates: list[Atom],
-            constants: frozenset[str] = frozenset()) -> None:
-        lift = _Lifting(schema.params, obs.objects, constants)
+    def __post_init__(self) -> None:
         # Only well-typed atoms: a shaker's fact is no fact of every container passed where a shaker was.
-        typed = set(candidates)
+        self.typed = frozenset(self.candidates)
+
+    def add(self, obs: Observation) -> None:
+        """Take one observed step of the operator into account."""
+        lift = _Lifting(self.schema.params, obs.objects, self.constants)
+        typed = self.typed
         before, after = lift.lifted(obs.before) & typed, lift.lifted(obs.after) & typed
         added, deleted = changes(obs.before, obs.after, lift.objects)
-        false_before = {c for c in candidates if lift.ground(c) not in obs.before}
+        false_before = {c for c in self.candidates if lift.ground(c) not in obs.before}
         if self.seen == 0:
             self.before_always, self.after_always, self.never_before = before, after, false_before
         else:
@@ -186,11 +193,10 @@ class _Evidence:
         resolves."""
         return made.union(*(ways for ways in unsure if not ways & made))
 
-    def adds(self, model: str) -> set[Atom]:
-        """Made true in some step, true after every one (a change only ever lifted two ways: both ways, in the
-        general model; the safe one learns from no such step)."""
-        made = self.changed(self.made_true, self.ambiguous_true) if model == "general" else self.made_true
-        return made & self.after_always
+    def adds(self) -> set[Atom]:
+        """Made true in some step, true after every one (a change only ever lifted two ways: both ways; the
+        safe model takes no such step)."""
+        return self.changed(self.made_true, self.ambiguous_true) & self.after_always
 
     def deletes(self, among: set[Atom]) -> set[Atom]:
         """Those of ``among`` false after every step, except a step where the atom lifts more than one way:
@@ -205,7 +211,7 @@ class _Evidence:
 
 
 def _learned(schema: ActionSchema, ev: _Evidence, model: str, negative: bool) -> ActionSchema:
-    adds = ev.adds(model)
+    adds = ev.adds()
     delete = ev.deletes(ev.changed(ev.made_false, ev.ambiguous_false) - adds)
     pre = [Literal(a) for a in sorted(ev.before_always)]
     if model == "safe":
@@ -230,18 +236,16 @@ def learn_operators(prior: Domain, observations: Iterable[Observation], objects:
         raise ValueError(f"unknown model {model!r}, expected one of {', '.join(MODELS)}")
     # An action whose only effect is its cost is to learn too (its cost is kept).
     to_learn = [a for a in prior.actions if not a.precondition and not a.add and not a.delete]
-    evidence: dict[str, _Evidence] = {a.name: _Evidence() for a in to_learn}
-    candidates = {a.name: _candidates(a, prior) for a in to_learn}
-    schemas = {a.name: a for a in to_learn}
-    repeated = 0
     constants = frozenset(prior.constants)
+    evidence = {a.name: _Evidence(a, _candidates(a, prior), constants) for a in to_learn}
+    repeated = 0
     for obs in observations:
         if model == "safe" and (len(set(obs.objects)) < len(obs.objects) or constants & set(obs.objects)):
             # SAM's rule: a step that passes one object twice cannot tell which parameter an effect is about.
             repeated += obs.operator in evidence
             continue
         if obs.operator in evidence:
-            evidence[obs.operator].add(obs, schemas[obs.operator], candidates[obs.operator], constants)
+            evidence[obs.operator].add(obs)
     notes = [f"{repeated} step(s) passing one object twice (or a constant) left out (the safe model learns from "
              "steps with distinct objects; its guarantee is for actions on distinct objects)"] if repeated else []
     if not to_learn:

@@ -94,7 +94,7 @@ def _state(node: SExpr, src: SourceMap, prior: Domain, uses: dict[str, list[tupl
 
 def _action(node: SExpr, src: SourceMap, prior: Domain,
             uses: dict[str, list[tuple[str, Token]]]) -> tuple[str, tuple[str, ...], Location]:
-    body = [item for item in node.items[1:]]
+    body = node.items[1:]
     if len(body) != 1 or not isinstance(body[0], SExpr):
         raise PddlSyntaxError("expected one ground action '(:action (operator object ...))'",
                               src.location(node.line, node.col))
