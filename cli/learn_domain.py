@@ -24,7 +24,7 @@ from guided_lfd.pddl.writer import domain_to_pddl
 @help_footer(
     example="guided-lfd learn-domain p1.segments.json -o p1.learned.pddl",
     exit_codes=(errors.EXIT_INPUT_FILE, errors.EXIT_PDDL_SYNTAX, errors.EXIT_PDDL_SEMANTIC, errors.EXIT_UNSUPPORTED,
-                errors.EXIT_MISMATCH, errors.EXIT_TRACE, errors.EXIT_OUTPUT),
+                errors.EXIT_MISMATCH, errors.EXIT_TRACE, errors.EXIT_BAD_OPTION, errors.EXIT_TOO_LARGE, errors.EXIT_OUTPUT),
     success="domain written",
 )
 @command
