@@ -52,7 +52,8 @@ def learn_domain(
     model: Annotated[
         str, typer.Option("--model", metavar="MODEL",
                           help="Trajectories: 'safe' (every plan it finds is valid in the true domain) or "
-                               "'general' (only what the steps show; fewer conditions, no such guarantee).")
+                               "'general' (what the steps show, guarded where an action clears whatever is there; "
+                               "fewer conditions, no such guarantee).")
     ] = "safe",
     output: OutputOption = "-",
     quiet: QuietOption = False,

@@ -1,8 +1,9 @@
 """Learning operators from PDDL trajectories (issue #31): the reader, the learner core, the CLI.
 
 Fixtures in ``tests/data/trajectories/``: ``lights`` (no hand, an operator without arguments, parameters in
-an unusual order), ``paint`` (what no step rules out; an object passed twice), ``bad`` (one file per
-class of bad input) and ``blocksworld`` (AMLGym's own files, for a plan checked in the true domain).
+an unusual order), ``paint`` (what no step rules out; an object passed twice), ``quarry`` (a blast clears whatever is in the
+next cell, a relic too, which no step shows; a static grid), ``bad`` (one file per class of bad input) and
+``blocksworld`` (AMLGym's own files, for a plan checked in the true domain).
 """
 
 from __future__ import annotations
@@ -20,6 +21,7 @@ TRAJ = DATA / "trajectories"
 LIGHTS = TRAJ / "lights"
 PAINT = TRAJ / "paint"
 BLOCKS = TRAJ / "blocksworld"
+QUARRY = TRAJ / "quarry"
 
 
 def _learned(folder, prior="prior.pddl", model="safe", files=None):
@@ -278,3 +280,51 @@ def test_types_inferred_in_two_trajectories_combine_to_the_narrower(tmp_path):
     assert trajectories[0].objects == {"s1": "container"} and trajectories[1].objects == {"s1": "shot"}
     domain = learn_from_trajectories(prior, trajectories)
     assert domain.action("fill").add == (Atom("filled", ("?s",)),)
+
+
+def _neg(action):
+    return {str(l.atom) for l in action.precondition if not l.positive}
+
+
+def test_the_general_model_guards_what_a_clearing_action_may_also_clear():
+    """Blasting deleted rubble in one step and a boulder in another, each absent in the other step: the blast
+    clears whatever is in the next cell, so the general model guards it against the facts about that cell no
+    step showed there (the relic).  Flying, whose delete held before every step, gets no guard."""
+    domain = _learned(QUARRY, model="general")
+    assert "(relic ?to)" in _neg(domain.action("blast"))
+    assert _neg(domain.action("fly")) == set() and _neg(domain.action("collect")) == set()
+    assert ":negative-preconditions" in domain.requirements
+
+
+@pytest.mark.parametrize("model", ["safe", "general"])
+def test_a_learned_model_makes_no_false_plan_where_a_blast_would_destroy_the_relic(model):
+    """Relic under rubble: unsolvable in the true domain, so the learned models find no plan (without the guard
+    the general model would blast, fly and collect a relic the blast destroyed).  Relic behind rubble: the
+    learned model's plan is valid in the true domain."""
+    from guided_lfd.api import plan, validate
+
+    learned = _learned(QUARRY, model=model)
+    true = parse_domain(str(QUARRY / "true.pddl"))
+    assert plan(learned, parse_problem_for(learned, QUARRY / "relic-under-rubble.pddl")).plan is None
+    problem = QUARRY / "relic-behind-rubble.pddl"
+    report = plan(learned, parse_problem_for(learned, problem))
+    steps = [f"({s.action} {' '.join(s.args)})" for s in report.plan]
+    assert validate(true, parse_problem_for(true, problem), steps).valid
+
+
+def test_guards_on_static_facts_no_world_allows_are_left_out_with_a_note():
+    """``next`` never changes, and no cell is next to itself in the trajectory's world: ``(not (next ?to ?to))``
+    guards nothing and is left out of the safe model, with a note.  A hazard lies next to a cell the drone
+    flies from, so ``(not (hazard ?to))`` stays: no step says what flying into a hazard does."""
+    domain = _learned(QUARRY)
+    fly = _neg(domain.action("fly"))
+    assert not {"(next ?to ?to)", "(next ?from ?from)"} & fly
+    assert "(hazard ?to)" in fly
+    assert any("guard(s) on static facts left out" in w for w in domain.warnings)
+
+
+def test_one_place_at_a_time_needs_no_guard_on_distinct_objects():
+    """The drone is at one cell (Fast Downward's invariant, true in every observed state): blasting from
+    ``?from`` into another cell ``?to`` needs no ``(not (drone-at ?to))`` in the safe model (actions on distinct
+    objects), though no step blasted the drone's own cell."""
+    assert "(drone-at ?to)" not in _neg(_learned(QUARRY).action("blast"))

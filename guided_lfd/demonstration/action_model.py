@@ -22,24 +22,30 @@ when it changed in some step and held after every one.  Two models:
   true domain (SAM's guarantee) for actions on distinct objects (none of
   them a constant), provided that the true domain has negative
   preconditions only where the prior declares ``:negative-preconditions``
-  and that the problem's initial state satisfies the invariants the learner
-  proves (Fast Downward's, forward only, each checked on every observed
-  state).  Atoms about the prior's constants are learned as such.  What the steps
+  and that the problem's initial state is like the observed ones: it
+  satisfies the invariants the learner proves (Fast Downward's, forward
+  only, each checked on every observed state) and its static facts follow
+  every trajectory's pattern (:mod:`guided_lfd.demonstration.static_facts`).
+  Atoms about the prior's constants are learned as such.  What the steps
   cannot rule out stays a condition: an atom false before every step is a
   negative precondition (``:negative-preconditions`` is added to the
   requirements where one remains), so the action never runs where it might
   need that atom false or delete it unseen (a laser that clears rock may
-  also destroy gold no step showed beside it).  It is dropped where Fast
-  Downward's invariant synthesis proves that a positive precondition rules
-  the atom out already (:mod:`guided_lfd.demonstration.mutex`), as the VR
-  learner does.  As in SAM, a step that passes one object twice (which
+  also destroy gold no step showed beside it).  It is dropped where a
+  proven invariant rules the atom out beside a positive precondition
+  (:mod:`guided_lfd.demonstration.mutex`; on distinct objects, a mover is
+  at one place, so not at the other), or where it is a static fact no
+  observed world has beside the action's static preconditions (no cell is
+  above itself).  As in SAM, a step that passes one object twice (which
   parameter is an effect about?) is left out, and the guarantee is for
   actions applied to distinct objects.
-* ``general``: only what the steps show: preconditions that held before
-  every step, effects seen to change; nothing for what no step ruled out.
-  Closer to the true domain where those guards are needless (higher
-  precision), but a plan may rely on an effect no step showed (a laser that
-  also destroys the gold it uncovers).
+* ``general``: what the steps show: preconditions that held before every
+  step, effects seen to change.  The one guard it keeps is for actions seen
+  clearing whatever is there: when a delete was seen where its fact was not
+  true before every step (a laser clears soft rock in one step, hard rock in
+  another), the facts about the same objects false before every step are
+  guarded (the gold no step showed the laser hit).  No guarantee: a plan may
+  still rely on an effect no step showed.
 """
 
 from __future__ import annotations
@@ -48,6 +54,7 @@ from collections.abc import Iterable
 from dataclasses import dataclass, field, replace
 from itertools import product
 
+from guided_lfd.demonstration.static_facts import drop_ruled_out_static_guards
 from guided_lfd.pddl.model import ActionSchema, Atom, Domain, Literal
 
 __all__ = ["Observation", "MODELS", "bound_by", "facts_about", "changes", "learn_operators"]
@@ -55,7 +62,8 @@ __all__ = ["Observation", "MODELS", "bound_by", "facts_about", "changes", "learn
 #: The models :func:`learn_operators` can learn, with what each guarantees.
 MODELS: dict[str, str] = {
     "safe": "every plan it finds is valid in the true domain, for actions on distinct objects (SAM's guarantee)",
-    "general": "only what the steps show; a plan may rely on an effect no step showed",
+    "general": "what the steps show, guarded only where an action clears whatever is there; a plan may rely on an "
+               "effect no step showed",
 }
 
 
@@ -210,15 +218,24 @@ class _Evidence:
         return out
 
 
-def _learned(schema: ActionSchema, ev: _Evidence, model: str, negative: bool) -> ActionSchema:
-    adds = ev.adds()
-    delete = ev.deletes(ev.changed(ev.made_false, ev.ambiguous_false) - adds)
-    pre = [Literal(a) for a in sorted(ev.before_always)]
+def _guards(ev: _Evidence, model: str, negative: bool, adds: set[Atom], delete: set[Atom]) -> list[Atom]:
+    """The atoms a learned action must find false (negative preconditions), by ``model``."""
     if model == "safe":
         # What no step rules out: the action may need it false, or delete it (unseen: it was false already).
         # Facts no step changes too: a laser that clears rock may also destroy the gold no step showed it at.
         # An atom the action makes true needs no guard unless the true domain may require it false first.
-        pre += [Literal(a, False) for a in sorted(ev.never_before) if negative or a not in adds]
+        return [a for a in sorted(ev.never_before) if negative or a not in adds]
+    # A delete seen where its fact was not always true marks an action that clears whatever is there (a laser
+    # clears soft rock or hard rock): it may clear other facts about the same objects that no step showed there.
+    clearing = {d.args for d in delete if d not in ev.before_always}
+    return [a for a in sorted(ev.never_before) if a.args in clearing and a not in adds]
+
+
+def _learned(schema: ActionSchema, ev: _Evidence, model: str, negative: bool) -> ActionSchema:
+    adds = ev.adds()
+    delete = ev.deletes(ev.changed(ev.made_false, ev.ambiguous_false) - adds)
+    pre = [Literal(a) for a in sorted(ev.before_always)]
+    pre += [Literal(a, False) for a in _guards(ev, model, negative, adds, delete)]
     return replace(schema, precondition=tuple(pre), add=tuple(sorted(adds)), delete=tuple(sorted(delete)),
                    origin=f"learned from {ev.seen} observed step(s)")
 
@@ -232,6 +249,7 @@ def learn_operators(prior: Domain, observations: Iterable[Observation], objects:
     observed, left out).  Actions of ``prior`` with a body are kept as they are.
     """
     states = list(states)
+    observations = list(observations)
     if model not in MODELS:
         raise ValueError(f"unknown model {model!r}, expected one of {', '.join(MODELS)}")
     # An action whose only effect is its cost is to learn too (its cost is kept).
@@ -256,13 +274,23 @@ def learn_operators(prior: Domain, observations: Iterable[Observation], objects:
     learned = {a.name: _learned(a, evidence[a.name], model, negative) for a in to_learn if evidence[a.name].seen}
     actions = [learned.get(a.name, a) for a in prior.actions if a.name in learned or a not in to_learn]
     domain = replace(prior, actions=actions, path="<learned>", source=None, warnings=())
-    if model == "safe":
+    if _guarded(domain, learned):
         domain = _without_implied_negatives(domain, set(learned), objects, states)
-        if any(not l.positive for a in domain.actions if a.name in learned for l in a.precondition):
-            # The guards are negative preconditions, as SAM writes them, whatever the prior declares.
-            domain = replace(domain, requirements=tuple(dict.fromkeys([*domain.requirements,
-                                                                       ":negative-preconditions"])))
+        changed = (atom for obs in observations for atom in obs.before ^ obs.after)
+        domain, assumed = drop_ruled_out_static_guards(domain, set(learned), states, changed)
+        if assumed:
+            notes.append(f"{len(assumed)} guard(s) on static facts left out: no trajectory's world has them beside "
+                         "the action's static preconditions (the problems' static facts are assumed alike)")
+    if _guarded(domain, learned):
+        # The guards are negative preconditions, as SAM writes them, whatever the prior declares.
+        domain = replace(domain, requirements=tuple(dict.fromkeys([*domain.requirements,
+                                                                   ":negative-preconditions"])))
     return domain, notes
+
+
+def _guarded(domain: Domain, names: Iterable[str]) -> bool:
+    """Whether an action of ``names`` in ``domain`` has a negative precondition."""
+    return any(not l.positive for a in domain.actions if a.name in names for l in a.precondition)
 
 
 def _without_implied_negatives(domain: Domain, names: set[str], objects: dict[str, str],
@@ -272,4 +300,4 @@ def _without_implied_negatives(domain: Domain, names: set[str], objects: dict[st
 
     reqs = tuple(dict.fromkeys([*domain.requirements, ":negative-preconditions"]))
     invariants = proven_invariants(replace(domain, requirements=reqs), objects, states, reverse=False)
-    return drop_implied_negative_preconditions(domain, names, invariants)
+    return drop_implied_negative_preconditions(domain, names, invariants, distinct=True)

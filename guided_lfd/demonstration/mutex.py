@@ -90,15 +90,24 @@ def group_key_matches(p: Atom, q: Atom, invariants: list) -> bool:
     return _shared_group(p, q, invariants) is not None
 
 
-def drop_implied_negative_preconditions(domain: Domain, names: set[str], invariants: list) -> Domain:
-    """``domain`` with each ``(not p)`` of the actions in ``names`` dropped when a positive precondition implies it."""
+def drop_implied_negative_preconditions(domain: Domain, names: set[str], invariants: list,
+                                        distinct: bool = False) -> Domain:
+    """``domain`` with each ``(not p)`` of the actions in ``names`` dropped when a positive precondition implies it.
+
+    ``distinct``: the actions are only applied to distinct objects, none a constant, so two different lifted atoms
+    are never the same ground atom and atoms of one predicate in one group are mutex too."""
+    def implied(p: Atom, q: Atom) -> bool:
+        if distinct and p != q:
+            return group_key_matches(p, q, invariants)
+        return mutex(p, q, invariants) is not None
+
     actions: list[ActionSchema] = []
     for action in domain.actions:
         if action.name in names:
             positives = [l.atom for l in action.precondition if l.positive and l.atom.predicate != EQUALITY]
             kept = tuple(l for l in action.precondition
                          if l.positive or l.atom.predicate == EQUALITY
-                         or not any(mutex(l.atom, q, invariants) for q in positives))
+                         or not any(implied(l.atom, q) for q in positives))
             if kept != action.precondition:
                 action = replace(action, precondition=kept)
         actions.append(action)
