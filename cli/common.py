@@ -14,8 +14,8 @@ import typer
 
 from cli.startup import resume_gc
 from guided_lfd.errors import (
-    EXIT_BAD_OPTION, EXIT_CODES, EXIT_INTERNAL, EXIT_INTERRUPTED, EXIT_MEMORY, EXIT_OK, EXIT_USAGE, GuidedLfdError,
-    OptionError,
+    EXIT_BAD_OPTION, EXIT_CODES, EXIT_INTERNAL, EXIT_INTERRUPTED, EXIT_MEMORY, EXIT_OK, EXIT_TERMINATED, EXIT_USAGE,
+    GuidedLfdError, OptionError, Terminated,
 )
 from guided_lfd.io import check_writable, write_text
 
@@ -157,7 +157,7 @@ MemoryLimitOption = Annotated[
 
 
 #: Exit codes every subcommand can give: the last lines of each one's help list them too.
-COMMON_EXIT_CODES = (EXIT_INTERNAL, EXIT_USAGE, EXIT_BAD_OPTION, EXIT_INTERRUPTED)
+COMMON_EXIT_CODES = (EXIT_INTERNAL, EXIT_USAGE, EXIT_BAD_OPTION, EXIT_INTERRUPTED, EXIT_TERMINATED)
 
 
 def help_footer(example: str, exit_codes: tuple[int, ...], success: str) -> Callable[[F], F]:
@@ -314,6 +314,9 @@ def command(fn: F) -> F:
         except GuidedLfdError as exc:
             ui.error(str(exc))
             raise typer.Exit(exc.exit_code) from None
+        except Terminated:
+            ui.error("terminated (SIGTERM)")
+            raise typer.Exit(EXIT_TERMINATED) from None
         except KeyboardInterrupt:
             ui.error("interrupted")
             raise typer.Exit(EXIT_INTERRUPTED) from None

@@ -10,6 +10,7 @@ its start-up time.
 from __future__ import annotations
 
 import importlib
+import signal
 import sys
 from collections.abc import Iterator, MutableMapping
 from dataclasses import dataclass
@@ -20,7 +21,7 @@ from typer.core import TyperCommand, TyperGroup
 
 from cli.coercion import QuickCoercionMixin, quicken
 from cli.startup import pause_gc
-from guided_lfd.errors import EXIT_BAD_OPTION
+from guided_lfd.errors import EXIT_BAD_OPTION, EXIT_INTERRUPTED, EXIT_OUTPUT, EXIT_TERMINATED, Terminated
 from guided_lfd import __version__
 
 
@@ -257,12 +258,50 @@ def run() -> None:
     cli.run_started = cli.PROCESS_STARTED  # --time-limit counts start-up too
     pause_gc()  # until the command starts its work: see cli/startup.py
     keep_until_exit()
+    signal.signal(signal.SIGTERM, _terminate)
+    stdout_was_null = _stdout_is_null()
     try:
         app()
         code: Any = 0
     except SystemExit as exc:
         code = exc.code
+        if code == 1 and (_stdout_broke() or (_stdout_is_null() and not stdout_was_null)):
+            # click's own answer to a broken stdout while it writes help or the version: exit 1, without a word
+            _say("-: output error: standard output closed by the reader (broken pipe)")
+            code = EXIT_OUTPUT
+    except KeyboardInterrupt as exc:  # outside a command (its --help, the group's options)
+        code = EXIT_TERMINATED if isinstance(exc, Terminated) else EXIT_INTERRUPTED
     _end(code)
+
+
+def _terminate(signum: int, frame: Any) -> None:
+    """SIGTERM: raised as :class:`~guided_lfd.errors.Terminated` where the process is, to end as Ctrl-C does."""
+    raise Terminated()
+
+
+def _stdout_broke() -> bool:
+    """Whether click found stdout closed by its reader (it then wraps stdout to silence the final flush; typer
+    may carry its own copy of click, so the wrapper is known by its name)."""
+    return type(sys.stdout).__name__ == "PacifyFlushWrapper"
+
+
+def _stdout_is_null() -> bool:
+    """Whether stdout's file descriptor is the null device (rich points it there when its reader closed it)."""
+    import os
+
+    try:
+        return os.path.samestat(os.fstat(1), os.stat(os.devnull))
+    except OSError:
+        return False
+
+
+def _say(line: str) -> None:
+    """One line on stderr, if there is a stderr to write to."""
+    try:
+        if sys.stderr is not None:
+            sys.stderr.write(line + "\n")
+    except (OSError, ValueError):
+        pass
 
 
 def _end(code: Any) -> None:
@@ -283,7 +322,8 @@ def _end(code: Any) -> None:
     atexit._run_exitfuncs()  # what libraries registered still runs (logging's flush, ...)
     for stream in (sys.stdout, sys.stderr):
         try:
-            stream.flush()
+            if stream is not None:  # None: the stream was closed when the process started (`>&-`)
+                stream.flush()
         except (OSError, ValueError):  # a closed pipe or stream: nothing more can be said
             pass
     os._exit(code)

@@ -9,7 +9,7 @@ from typing import Annotated
 import typer
 
 from cli.common import (JsonOption, QuietOption, TimeLimitOption, check_inputs, check_time_limit, command, help_footer,
-                        started_at, ui)
+                        one_line, started_at, ui)
 from guided_lfd.deadline import deadline_after
 from guided_lfd import errors
 
@@ -21,12 +21,21 @@ class _Prompted:
         from guided_lfd.demonstration.trace import default_state_path
 
         while True:  # a path that is not there is asked again, not the end of the session
-            answer = typer.prompt("Path of the demonstration's trace CSV (empty: stop)", default="",
-                                  show_default=False, err=True).strip()
+            try:
+                answer = typer.prompt("Path of the demonstration's trace CSV (empty: stop)", default="",
+                                      show_default=False, err=True).strip()
+            except typer.Abort as exc:
+                if isinstance(exc.__context__, EOFError):
+                    return None  # end of input (Ctrl-D, a closed pipe): the demonstrator stopped
+                raise KeyboardInterrupt from None  # Ctrl-C: interrupted, as anywhere else
             if not answer:
                 return None
-            trace, states = Path(answer), Path(default_state_path(answer))
-            missing = [str(p) for p in (trace, states) if not p.is_file()]
+            try:
+                trace, states = Path(answer), Path(default_state_path(answer))
+                missing = [str(p) for p in (trace, states) if not p.is_file()]
+            except (OSError, ValueError) as exc:  # a name too long for the file system, a NUL in it
+                typer.echo(f"not a path: {type(exc).__name__}: {one_line(str(exc))[:200]}", err=True)
+                continue
             if not missing:
                 return trace, states
             typer.echo(f"not found: {', '.join(missing)} (the trace and its .state.csv beside it)", err=True)

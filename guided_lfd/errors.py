@@ -32,6 +32,7 @@ code  meaning
 37    bad option value (cost specification, fixed predicate, ...)
 40    output could not be written
 130   interrupted (Ctrl-C)
+143   terminated (SIGTERM)
 ====  ==========================================================
 """
 
@@ -61,6 +62,7 @@ EXIT_TRACE = 36
 EXIT_BAD_OPTION = 37
 EXIT_OUTPUT = 40
 EXIT_INTERRUPTED = 130
+EXIT_TERMINATED = 143
 
 #: Exit code -> short meaning; docs/exit-codes.md's table and a test are generated from it.
 EXIT_CODES: dict[int, str] = {
@@ -86,7 +88,13 @@ EXIT_CODES: dict[int, str] = {
     EXIT_BAD_OPTION: "bad option value (refused by the parser or by the command alike)",
     EXIT_OUTPUT: "output could not be written",
     EXIT_INTERRUPTED: "interrupted (Ctrl-C)",
+    EXIT_TERMINATED: "terminated (SIGTERM)",
 }
+
+
+class Terminated(KeyboardInterrupt):
+    """SIGTERM, raised where the process is (see ``cli.main.run``): a subclass of KeyboardInterrupt, so that
+    every clean-up Ctrl-C runs (temporary files removed, outputs left as they were) runs for it too."""
 
 
 @dataclass(frozen=True)

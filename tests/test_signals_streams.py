@@ -1,0 +1,106 @@
+"""Signals and closed streams (issue #25): a documented exit code and one line, never a traceback.
+
+Each case runs the installed command in a process of its own: what is under test (a signal, a stream closed
+before the process starts or by its reader) happens outside Python's test runner.
+"""
+
+from __future__ import annotations
+
+import os
+import signal
+import subprocess
+import time
+
+from conftest import ROOT
+from guided_lfd.benchmark import cli_command
+from guided_lfd.errors import EXIT_INPUT_FILE, EXIT_OK, EXIT_OUTPUT, EXIT_TERMINATED
+
+KITCHEN = ROOT / "data" / "domains" / "kitchen-1"
+EXCUSE = [*cli_command(), "excuse", str(KITCHEN / "robot.pddl"), str(KITCHEN / "problem.pddl")]
+
+
+def _run(args: list[str], close: int | None = None, broken_stdout: bool = False) -> tuple[int, str]:
+    """Run ``args`` with file descriptor ``close`` closed from the start, or stdout a pipe no one reads."""
+    stdout: int = subprocess.DEVNULL
+    if broken_stdout:
+        read, stdout = os.pipe()
+        os.close(read)
+    proc = subprocess.run(args, stdout=stdout, stderr=subprocess.PIPE, text=True, timeout=120,
+                          preexec_fn=(lambda: os.close(close)) if close is not None else None)
+    if broken_stdout:
+        os.close(stdout)
+    return proc.returncode, proc.stderr
+
+
+def test_a_closed_stdout_is_an_output_error_in_one_line():
+    code, err = _run(EXCUSE, close=1)
+    assert code == EXIT_OUTPUT, err
+    assert err == "-: output error: standard output is closed\n"
+
+
+def test_a_stdout_its_reader_closed_is_an_output_error_in_one_line():
+    for args in (EXCUSE, [*cli_command(), "--help"], [*cli_command(), "excuse", "--help"], [*cli_command(), "--version"]):
+        code, err = _run(args, broken_stdout=True)
+        assert code == EXIT_OUTPUT, (args, err)
+        assert err == "-: output error: standard output closed by the reader (broken pipe)\n", args
+
+
+def test_a_closed_stderr_changes_no_exit_code():
+    assert _run(EXCUSE, close=2)[0] == EXIT_OK
+    assert _run([*cli_command(), "excuse", str(KITCHEN / "robot.pddl"), "no-such-problem.pddl"], close=2)[0] \
+        == EXIT_INPUT_FILE
+
+
+def test_sigterm_ends_a_run_as_ctrl_c_does_with_its_own_code_and_nothing_written(tmp_path):
+    """The paper's baseline on depot task03 runs for minutes; SIGTERM after 2 s ends it at once: exit 143, one
+    line, no output file and no temporary file left."""
+    from guided_lfd.benchmark import BenchTask, robot_domain_file
+
+    ipc = ROOT / "data/benchmarks/ipc/depot"
+    task = BenchTask("depot-task03-load", "depot", "task03", "load", str(ipc / "domain.pddl"),
+                     str(ipc / "task03.pddl"), "")
+    robot = robot_domain_file(task, tmp_path)
+    out = tmp_path / "out" / "excuse.json"
+    out.parent.mkdir()
+    proc = subprocess.Popen([*cli_command(), "excuse", str(robot), task.problem_file, "--strategy", "baseline",
+                             "--time-limit", "100", "--quiet", "--json", "-o", str(out)],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    time.sleep(2.0)
+    start = time.monotonic()
+    proc.send_signal(signal.SIGTERM)
+    _, err = proc.communicate(timeout=60)
+    assert proc.returncode == EXIT_TERMINATED, err
+    assert err == "terminated (SIGTERM)\n"
+    assert time.monotonic() - start < 10
+    assert list(out.parent.iterdir()) == []
+
+
+def test_the_teach_prompt_treats_end_of_input_as_stop_and_checks_a_path_like_the_command_line(monkeypatch, capsys):
+    """At the prompt, end of input (Ctrl-D, a closed pipe) stops the session as an empty answer does; a line
+    too long to be a file name is asked again with a one-line reason (it was ``internal error: OSError``)."""
+    import io
+
+    from cli.teach import _Prompted
+
+    monkeypatch.setattr("sys.stdin", io.StringIO(""))
+    assert _Prompted().demonstrate(None, None, None, None) is None
+    monkeypatch.setattr("sys.stdin", io.StringIO("x" * 5000 + "\n"))
+    assert _Prompted().demonstrate(None, None, None, None) is None
+    err = capsys.readouterr().err
+    assert "not a path: OSError" in err and "File name too long" in err
+
+
+def test_ctrl_c_at_the_teach_prompt_is_an_interruption(monkeypatch):
+    import io
+
+    import pytest
+
+    from cli.teach import _Prompted
+
+    class Interrupted(io.StringIO):
+        def readline(self, *args: object) -> str:
+            raise KeyboardInterrupt
+
+    monkeypatch.setattr("sys.stdin", Interrupted())
+    with pytest.raises(KeyboardInterrupt):
+        _Prompted().demonstrate(None, None, None, None)
