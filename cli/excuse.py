@@ -18,6 +18,7 @@ from guided_lfd.excuse.engine import ExcuseOptions, ExcuseReport, find_excuses
 from guided_lfd.excuse.space import Semantics
 from guided_lfd.excuse.strategies import DEFAULT_STRATEGY, STRATEGIES
 from guided_lfd.io import write_text
+from guided_lfd.pddl.fit import check_model_fits
 from guided_lfd.pddl.reader import parse_domain, parse_task
 from guided_lfd.pddl.writer import problem_to_pddl
 
@@ -116,6 +117,8 @@ def excuse(
             fixed_from=parse_domain(fixed_from) if fixed_from else None, started=started,
         )
         human_domain = parse_domain(human) if human else None
+        if human_domain is not None:
+            check_model_fits(dom, human_domain, "--human")
     ui.reading_warnings(dom, options.invariants_from, options.fixed_from)
     report = _run(dom, prob, options)
     if prefer and human_domain is not None and report.excuses:

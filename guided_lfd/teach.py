@@ -27,6 +27,7 @@ from guided_lfd.excuse.change import Change, excuse_state
 from guided_lfd.excuse.engine import ExcuseOptions, describe_change, find_excuses
 from guided_lfd.excuse.status import ExcuseStatus
 from guided_lfd.io import json_document, write_text
+from guided_lfd.pddl.fit import check_model_fits
 from guided_lfd.pddl.model import Atom, Domain, Problem
 from guided_lfd.pddl.writer import domain_to_pddl
 from guided_lfd.validation import PlanStep
@@ -399,9 +400,10 @@ def teach(robot: Domain, problem: Problem, demonstrator: Demonstrator, out: Path
     from guided_lfd.errors import GuidedLfdError, SearchTimeout
 
     simulated = demonstrator.human if isinstance(demonstrator, SimulatedHuman) else None
-    for model in (human, simulated if simulated is not human else None):
+    for model, option in ((human, "--human"), (simulated if simulated is not human else None, "--simulate")):
         if model is not None:
             check_human_model(model, problem)
+            check_model_fits(robot, model, option)
     _make_folder(out)
     options = options or ExcuseOptions()
     if human is not None:

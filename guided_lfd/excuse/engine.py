@@ -30,6 +30,7 @@ from guided_lfd.excuse.status import ExcuseStatus
 from guided_lfd.excuse.strategies import DEFAULT_STRATEGY, STRATEGIES, Progress, SearchLimits
 from guided_lfd.grounding import GroundAction, GroundTask, bits
 from guided_lfd.optimal import certified_optimal, shorten_plan
+from guided_lfd.pddl.fit import check_model_fits
 from guided_lfd.pddl.model import Atom, Domain, Literal, Problem, pretty_atom
 from guided_lfd.validation import PlanStep, validated
 
@@ -150,6 +151,9 @@ def check_option_names(domain: Domain, options: ExcuseOptions) -> None:
     """Reject unknown predicates in --fixed and --cost, and options the strategy lacks, before any expensive work."""
     check_fixed(options.fixed, domain)
     check_cost_predicates(options.costs, domain)
+    for model, option in ((options.invariants_from, "--invariants-from"), (options.fixed_from, "--fixed-from")):
+        if model is not None:
+            check_model_fits(domain, model, option)
     if options.slack < 0 or (options.slack and options.strategy != "landmark"):
         from guided_lfd.errors import OptionError
 

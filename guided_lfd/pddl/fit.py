@@ -1,0 +1,46 @@
+"""Whether a second model of the world speaks the robot's language.
+
+``--human``, ``--invariants-from`` and ``--fixed-from`` each read another
+domain (usually the human's) and use its predicates on the robot's task: its
+invariants group the task's atoms, its static predicates are held fixed, its
+plans measure a demonstration.  A predicate of the same name with another
+number of arguments, or an argument of an unrelated type, would silently mean
+something else there, so it is refused (exit 34) before any work.
+"""
+
+from __future__ import annotations
+
+from guided_lfd.errors import MismatchError
+from guided_lfd.pddl.model import Domain, type_ancestors
+
+__all__ = ["check_model_fits"]
+
+
+def _related(a: str, b: str, *domains: Domain) -> bool:
+    """Whether types ``a`` and ``b`` are one within the other in some of ``domains``' hierarchies (a type one of
+    them does not declare is taken as related: the model may name its types its own way)."""
+    for domain in domains:
+        if a not in domain.types or b not in domain.types:
+            return True
+        if a in type_ancestors(domain.types, b) or b in type_ancestors(domain.types, a):
+            return True
+    return False
+
+
+def check_model_fits(robot: Domain, model: Domain, option: str) -> None:
+    """Refuse (:class:`~guided_lfd.errors.MismatchError`, exit 34) a ``model`` given with ``option`` that declares
+    one of ``robot``'s predicates with another arity or an argument of an unrelated type."""
+    for name, pred in model.predicates.items():
+        mine = robot.predicates.get(name)
+        if mine is None:
+            continue
+        spelled = model.spellings.get(name, name)
+        where = model.locate(name, ":predicates")
+        if pred.arity != mine.arity:
+            raise MismatchError(f"{option}: predicate {spelled} takes {pred.arity} argument(s) here and "
+                                f"{mine.arity} in the robot's domain {robot.path}; expected the same arity", where)
+        for k, ((_, theirs), (_, ours)) in enumerate(zip(pred.params, mine.params), start=1):
+            if not _related(theirs, ours, robot, model):
+                raise MismatchError(f"{option}: argument {k} of predicate {spelled} is of type {theirs} here and of "
+                                    f"type {ours} in the robot's domain {robot.path}; expected the same or a related "
+                                    "type", where)

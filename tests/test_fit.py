@@ -1,0 +1,56 @@
+"""A second model of the world must speak the robot's language (issue #25): ``--human``, ``--invariants-from``,
+``--fixed-from`` and ``teach --simulate`` with a predicate of the robot's name but another arity or an argument
+of an unrelated type are exit 34 naming the predicate, before any work (it was exit 0, silently)."""
+
+from __future__ import annotations
+
+import pytest
+
+from conftest import DATA, ROOT
+from guided_lfd.errors import EXIT_MISMATCH, MismatchError
+from guided_lfd.excuse.engine import ExcuseOptions, find_excuses
+from guided_lfd.pddl.fit import check_model_fits
+from guided_lfd.pddl.reader import parse_domain, parse_task
+
+KITCHEN = ROOT / "data" / "domains" / "kitchen-1"
+ROBOT, PROBLEM = str(KITCHEN / "robot.pddl"), str(KITCHEN / "problem.pddl")
+ARITY, TYPE = str(DATA / "fit" / "human-arity.pddl"), str(DATA / "fit" / "human-type.pddl")
+
+
+@pytest.mark.parametrize("options", [["--invariants-from", ARITY], ["--fixed-from", ARITY],
+                                     ["--human", ARITY, "--prefer", "demonstration"]])
+def test_a_model_with_another_arity_is_refused_naming_the_predicate(runner, app, options):
+    result = runner.invoke(app, ["excuse", ROBOT, PROBLEM, *options])
+    assert result.exit_code == EXIT_MISMATCH, result.output
+    assert result.stderr.strip() == (
+        f"{ARITY}:13:17: mismatch: {options[0]}: predicate open takes 2 argument(s) here and 1 in the robot's "
+        f"domain {ROBOT}; expected the same arity")
+    assert result.stdout == ""
+
+
+def test_a_model_with_an_unrelated_argument_type_is_refused(runner, app):
+    result = runner.invoke(app, ["excuse", ROBOT, PROBLEM, "--fixed-from", TYPE])
+    assert result.exit_code == EXIT_MISMATCH
+    assert "--fixed-from: argument 1 of predicate open is of type item here and of type drawer" in result.stderr
+
+
+def test_teach_refuses_a_simulated_human_of_another_arity_before_making_its_folder(runner, app, tmp_path):
+    session = tmp_path / "session"
+    result = runner.invoke(app, ["teach", ROBOT, PROBLEM, "--simulate", ARITY, "-o", str(session)])
+    assert result.exit_code == EXIT_MISMATCH
+    assert "predicate open takes 2 argument(s)" in result.stderr
+    assert not session.exists()
+
+
+def test_the_library_refuses_it_too():
+    domain, problem = parse_task(ROBOT, PROBLEM)
+    with pytest.raises(MismatchError, match="--invariants-from: predicate open takes 2"):
+        find_excuses(domain, problem, ExcuseOptions(invariants_from=parse_domain(ARITY)))
+
+
+def test_the_humans_own_model_fits_and_types_of_its_own_naming_are_allowed():
+    """Kitchen I's human model fits its robot; a type only one domain declares is not a clash."""
+    robot = parse_domain(ROBOT)
+    check_model_fits(robot, parse_domain(str(KITCHEN / "human.pddl")), "--human")
+    for domain in sorted((ROOT / "data" / "domains").glob("*/human.pddl")):
+        check_model_fits(parse_domain(str(domain.parent / "robot.pddl")), parse_domain(str(domain)), "--human")
