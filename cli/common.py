@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import builtins
 import functools
-import math
 import os
 import re
 import sys
@@ -17,6 +16,7 @@ from guided_lfd.errors import (
     EXIT_BAD_OPTION, EXIT_CODES, EXIT_INTERNAL, EXIT_INTERRUPTED, EXIT_MEMORY, EXIT_OK, EXIT_TERMINATED, EXIT_USAGE,
     GuidedLfdError, OptionError, Terminated,
 )
+from guided_lfd.deadline import checked_time_limit
 from guided_lfd.io import check_writable, write_text
 
 if TYPE_CHECKING:
@@ -205,17 +205,9 @@ def started_at() -> float:
     return cli.run_started if cli.run_started is not None else time.monotonic()
 
 
-#: Longest time limit accepted (about 11 days); beyond it timers overflow.
-MAX_TIME_LIMIT = 1e6
-
-
 def check_time_limit(value: float | None) -> float | None:
-    """A usable --time-limit: finite, positive, at most :data:`MAX_TIME_LIMIT`."""
-    if value is None:
-        return None
-    if not math.isfinite(value) or value <= 0 or value > MAX_TIME_LIMIT:
-        raise OptionError(f"--time-limit {value:g}: expected a number of seconds > 0 and <= {MAX_TIME_LIMIT:g}")
-    return value
+    """A usable --time-limit: finite, positive, at most :data:`guided_lfd.deadline.MAX_TIME_LIMIT`."""
+    return checked_time_limit(value)
 
 
 def check_inputs(*paths: str) -> None:

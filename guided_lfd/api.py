@@ -11,6 +11,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Sequence
 
+from guided_lfd.deadline import checked_time_limit
 from guided_lfd.pddl.model import Domain, Problem
 from guided_lfd.validation import PlanStep, ValidationReport
 
@@ -96,7 +97,7 @@ def plan(domain: Domain, problem: Problem, search: str | None = None,
     search = search or DEFAULT_SEARCH
     if search not in SEARCHES:
         raise OptionError(f"unknown search '{search}' (expected one of: {', '.join(SEARCHES)})")
-    _, result = plan_task(domain, problem, search, time_limit)
+    _, result = plan_task(domain, problem, search, checked_time_limit(time_limit, "time_limit"))
     if result.plan is None:
         return PlanReport(domain.path, problem.path, None, None, None, search, result.time_s)
     steps = [PlanStep(a.schema, a.args) for a in result.plan]

@@ -56,6 +56,24 @@ def linger(*objects: object) -> None:
         _LINGERING.extend(objects)
 
 
+#: The largest time limit taken (about 11.6 days): beyond it a deadline overflows the platform's timers.
+MAX_TIME_LIMIT = 1e6
+
+
+def checked_time_limit(value: float | None, name: str = "--time-limit") -> float | None:
+    """``value`` if it is a usable time limit (None = none; finite, > 0, at most :data:`MAX_TIME_LIMIT`), else
+    :class:`~guided_lfd.errors.OptionError` naming it as ``name`` (the option, or the library's argument)."""
+    from guided_lfd.errors import OptionError
+
+    if value is None:
+        return None
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value) \
+            or value <= 0 or value > MAX_TIME_LIMIT:
+        shown = f"{value:g}" if isinstance(value, float) else repr(value)
+        raise OptionError(f"{name} {shown}: expected a number of seconds > 0 and <= {MAX_TIME_LIMIT:g}")
+    return float(value)
+
+
 def deadline_after(seconds: float | None, start: float | None = None) -> float | None:
     """The ``time.monotonic()`` value ``seconds`` after ``start`` (default: now); None = no limit."""
     if seconds is None:

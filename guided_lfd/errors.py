@@ -126,7 +126,11 @@ class GuidedLfdError(Exception):
 
     def __str__(self) -> str:
         prefix = f"{self.location}: " if self.location is not None else ""
-        return f"{prefix}{self.kind}: {self.message}"
+        text = f"{prefix}{self.kind}: {self.message}"
+        if text.isprintable():
+            return text
+        # One line, whatever a damaged input put into the message (a NUL, a line break): as escapes.
+        return "".join(c if c.isprintable() else c.encode("unicode_escape").decode("ascii") for c in text)
 
 
 class InputFileError(GuidedLfdError):

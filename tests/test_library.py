@@ -100,3 +100,37 @@ def test_bad_names_and_options_are_the_libraries_one_line_errors():
     with pytest.raises(OptionError) as info:
         plan(domain, problem, "nope")
     assert "unknown search 'nope'" in str(info.value)
+
+
+@pytest.mark.parametrize("options, message", [
+    ({"semantics": "bogus"}, "semantics 'bogus': expected one of 'literal', 'consistent'"),
+    ({"time_limit": float("inf")}, "time_limit inf: expected a number of seconds > 0"),
+    ({"time_limit": 1e300}, "time_limit 1e+300: expected a number of seconds > 0"),
+    ({"time_limit": float("nan")}, "time_limit nan: expected a number of seconds > 0"),
+    ({"time_limit": 0}, "time_limit 0: expected a number of seconds > 0"),
+    ({"max_size": -1}, "max_size -1: expected a number of changes >= 0"),
+])
+def test_bad_excuse_options_are_option_errors(options, message):
+    """They escaped as ValueError and OverflowError (internal errors on the command line's terms; issue #25)."""
+    from guided_lfd.errors import OptionError
+
+    with pytest.raises(OptionError) as info:
+        ExcuseOptions(**options)
+    assert message in str(info.value)
+
+
+@pytest.mark.parametrize("limit", [float("inf"), 1e300, float("nan"), -1.0])
+def test_a_plan_time_limit_out_of_range_is_an_option_error(limit):
+    from guided_lfd.errors import OptionError
+
+    with pytest.raises(OptionError, match="time_limit"):
+        plan(*read_task(*kitchen(1)), time_limit=limit)
+
+
+def test_an_error_quoting_a_nul_or_a_line_break_stays_one_line():
+    domain, problem = read_task(*kitchen(1))
+    for step in ("(take redplate\0 table)", "(take redplate table)\0", "(take redplate\u2028 table)"):
+        with pytest.raises(GuidedLfdError) as info:
+            validate(domain, problem, [step])
+        text = str(info.value)
+        assert text.isprintable() and len(text.splitlines()) == 1, text

@@ -30,6 +30,7 @@ from guided_lfd.excuse.status import ExcuseStatus
 from guided_lfd.excuse.strategies import DEFAULT_STRATEGY, STRATEGIES, Progress, SearchLimits
 from guided_lfd.grounding import GroundAction, GroundTask, bits
 from guided_lfd.optimal import certified_optimal, shorten_plan
+from guided_lfd.deadline import checked_time_limit
 from guided_lfd.pddl.fit import check_model_fits
 from guided_lfd.pddl.model import Atom, Domain, Literal, Problem, pretty_atom
 from guided_lfd.validation import PlanStep, validated
@@ -56,8 +57,18 @@ class ExcuseOptions:
     started: float | None = None
 
     def __post_init__(self) -> None:
+        from guided_lfd.errors import OptionError
+
         # A library caller may write semantics="literal"; the engine compares members.
-        self.semantics = Semantics(self.semantics)
+        try:
+            self.semantics = Semantics(self.semantics)
+        except ValueError:
+            raise OptionError(f"semantics {self.semantics!r}: expected one of "
+                              f"{', '.join(repr(s.value) for s in Semantics)}") from None
+        self.time_limit = checked_time_limit(self.time_limit, "time_limit")
+        if self.max_size is not None and (isinstance(self.max_size, bool) or not isinstance(self.max_size, int)
+                                          or self.max_size < 0):
+            raise OptionError(f"max_size {self.max_size!r}: expected a number of changes >= 0 (or None)")
 
     def fixed_predicates(self, domain: Domain) -> list[str]:
         """``fixed`` plus the predicates no action of ``fixed_from`` changes (that ``domain`` has)."""
