@@ -13,7 +13,7 @@ from cli.common import (
 )
 from guided_lfd import errors
 from guided_lfd.deadline import deadline_after, watchdog
-from guided_lfd.excuse.document import excuse_summary
+from guided_lfd.excuse.document import cut_short, excuse_summary
 from guided_lfd.excuse.engine import ExcuseOptions, ExcuseReport, find_excuses
 from guided_lfd.excuse.space import Semantics
 from guided_lfd.excuse.strategies import DEFAULT_STRATEGY, STRATEGIES
@@ -130,6 +130,9 @@ def excuse(
     # Every outcome is a document (its status says what happened: a timed-out
     # run says how far it got); a non-zero one also gets its reason on stderr.
     emit(output, text, excuse_summary(report, spellings) if code else None, structured=as_json)
+    if as_json:  # the text says it itself
+        for note in cut_short(report):
+            ui.info_plain(f"warning: {note}")
     if excuse_problem and report.excuse is not None:
         header = (f"Excuse state of {problem} for {domain} ({report.semantics.value} semantics):\n"
                   + "\n".join(f"  {c}" for c in report.excuse.changes))

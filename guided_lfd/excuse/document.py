@@ -16,7 +16,7 @@ from guided_lfd.io import read_json_document
 from guided_lfd.excuse.status import ExcuseStatus
 from guided_lfd.pddl.model import Atom, Domain, Problem
 
-__all__ = ["excuse_document", "excuse_summary", "excuse_text", "read_excuse"]
+__all__ = ["excuse_document", "excuse_summary", "excuse_text", "read_excuse", "cut_short"]
 
 
 def excuse_summary(report: ExcuseReport, spellings: dict[str, str]) -> str:
@@ -111,7 +111,18 @@ def excuse_text(report: ExcuseReport, prob: Problem, spellings: dict[str, str]) 
         lines += [f"  {i}. {step}" for i, step in enumerate(e.plan, 1)]
         if k < total:
             lines.append("")
+    lines += [f"({note})" for note in cut_short(report)]
     return "\n".join(lines) + "\n"
+
+
+def cut_short(report: ExcuseReport) -> list[str]:
+    """Why the excuses listed may not be every one asked for (``--all`` at its cap or out of time), if so."""
+    stats, out = report.statistics, []
+    if stats.truncated:
+        out.append(f"--all stopped at {stats.max_excuses:,} excuses: more minimal excuses may exist")
+    if stats.incomplete:
+        out.append("the time limit ended the search: the excuses listed are minimal, but maybe not all of them")
+    return out
 
 
 def read_excuse(path: str, domain: Domain, problem: Problem) -> list[Change]:

@@ -36,6 +36,10 @@ from guided_lfd.pddl.model import Atom, Domain, Literal, Problem, pretty_atom
 from guided_lfd.validation import PlanStep, validated
 
 
+#: ``--all`` lists at most this many excuses (and says so in ``statistics.truncated`` when it stops there).
+MAX_EXCUSES = 1000
+
+
 @dataclass
 class ExcuseOptions:
     """Everything that selects which excuses count and how to search."""
@@ -364,16 +368,23 @@ class _Run:
             _verify(self.domain, self.problem, [], plan, space)
             self.robot_plan_cost = sum(a.cost for a in plan)
             return self.report(ExcuseStatus.ALREADY_SOLVABLE, _steps(plan), candidates=0, planner_calls=1)
+        return self.search(task, space, oracle, relaxed)
 
+    def search(self, task: GroundTask, space: ChangeSpace, oracle: ReachabilityOracle,
+               relaxed: RelaxedExcuseTask) -> ExcuseReport:
+        """Search the minimal excuses of an unsolvable task, then plan from each and check it."""
+        options = self.options
         self._enter("searching")
         limits = SearchLimits(all_minimal=options.all_minimal, max_size=options.max_size, deadline=self.deadline,
-                              slack=options.slack)
+                              slack=options.slack, max_solutions=MAX_EXCUSES)
         search_start = time.monotonic()
         self.stats.setup_time_s = round(search_start - self.start, 6)
         outcome = STRATEGIES[options.strategy].search(space, limits, self.progress, oracle=oracle, relaxed=relaxed)
         self.stats.search_time_s = round(time.monotonic() - search_start, 6)
         self.stats.candidates, self.stats.planner_calls = outcome.candidates, outcome.planner_calls + 1
         self.stats.nodes_expanded, self.stats.counters = outcome.expanded, dict(outcome.extra)
+        if options.all_minimal and len(outcome.solutions) >= limits.max_solutions:
+            self.stats.truncated, self.stats.max_excuses = True, limits.max_solutions
         self.phase = "robot plan"
         plans_until = robot_plan_deadline(self.start)
         for changes in outcome.solutions:

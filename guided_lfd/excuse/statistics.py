@@ -33,6 +33,8 @@ class ExcuseStatistics:
     counters: dict[str, int] = field(default_factory=dict)
     phase: str | None = None  # where a timed-out run was
     incomplete: bool | None = None  # --all ran out of time: the excuses listed are minimal, maybe not all
+    truncated: bool | None = None  # --all stopped at ``max_excuses``: more minimal excuses may exist
+    max_excuses: int | None = None  # the cap --all stopped at (set with ``truncated``)
     time_s: float | None = None  # the whole run
 
     def to_dict(self) -> dict[str, Any]:

@@ -1,0 +1,52 @@
+"""``--all`` at its cap says so (issue #25): it listed 1,000 of 10,200 minimal excuses as "every minimal excuse"
+with no sign of the cut.  Eight keys, each a minimal excuse of its own; the cap lowered to 5 for the test."""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+
+from conftest import DATA
+from guided_lfd.excuse import engine
+from guided_lfd.excuse.engine import ExcuseOptions, find_excuses
+from guided_lfd.excuse.strategies import STRATEGIES
+from guided_lfd.pddl.reader import parse_task
+
+TASK = [str(DATA / "many-excuses" / "domain.pddl"), str(DATA / "many-excuses" / "problem.pddl")]
+
+
+@pytest.mark.parametrize("strategy", sorted(STRATEGIES))
+def test_all_stops_at_the_cap_and_says_so(monkeypatch, strategy):
+    monkeypatch.setattr(engine, "MAX_EXCUSES", 5)
+    report = find_excuses(*parse_task(*TASK), ExcuseOptions(all_minimal=True, strategy=strategy))
+    assert len(report.excuses) == 5
+    assert report.statistics.truncated is True and report.statistics.max_excuses == 5
+
+
+@pytest.mark.parametrize("strategy", sorted(STRATEGIES))
+def test_all_below_the_cap_is_not_truncated(strategy):
+    report = find_excuses(*parse_task(*TASK), ExcuseOptions(all_minimal=True, strategy=strategy))
+    assert len(report.excuses) == 8 and report.statistics.truncated is None
+
+
+def test_the_text_and_the_json_say_it_and_stderr_warns_beside_json(runner, app, monkeypatch):
+    monkeypatch.setattr(engine, "MAX_EXCUSES", 5)
+    text = runner.invoke(app, ["excuse", *TASK, "--all"])
+    assert text.exit_code == 0
+    assert text.stdout.rstrip().endswith("(--all stopped at 5 excuses: more minimal excuses may exist)")
+    assert "stopped at" not in text.stderr
+    doc = runner.invoke(app, ["excuse", *TASK, "--all", "--json"])
+    stats = json.loads(doc.stdout)["statistics"]
+    assert stats["truncated"] is True and stats["max_excuses"] == 5
+    assert "warning: --all stopped at 5 excuses: more minimal excuses may exist" in doc.stderr
+
+
+def test_a_search_the_time_limit_ended_says_the_list_may_not_be_all():
+    from guided_lfd.excuse.document import cut_short
+
+    report = find_excuses(*parse_task(*TASK), ExcuseOptions(all_minimal=True))
+    assert cut_short(report) == []
+    report.statistics.incomplete = True
+    assert cut_short(report) == ["the time limit ended the search: the excuses listed are minimal, but maybe not "
+                                 "all of them"]
