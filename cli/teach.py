@@ -77,11 +77,23 @@ def _check_session(session: Path, inputs: list[str | None]) -> None:
     from guided_lfd.errors import Location, OutputError
 
     check_inputs(*[p for p in inputs if p is not None])
-    if session.exists() and not session.is_dir():
-        raise OutputError("is a file, expected a folder for the session (-o SESSION_DIR)", Location(str(session)))
-    root = session.resolve()
+    resolved = []
     for path in inputs:
-        if path is not None and path != "-" and Path(path).resolve().is_relative_to(root):
+        if path is not None and path != "-":
+            try:
+                resolved.append((path, Path(path).resolve()))
+            except (OSError, RuntimeError) as exc:  # a link loop
+                raise errors.InputFileError(f"cannot be read ({getattr(exc, 'strerror', None) or exc})",
+                                            Location(path)) from None
+    try:
+        if session.exists() and not session.is_dir():
+            raise OutputError("is a file, expected a folder for the session (-o SESSION_DIR)", Location(str(session)))
+        root = session.resolve()
+    except (OSError, RuntimeError) as exc:  # a link loop
+        raise OutputError(f"cannot be the session folder ({getattr(exc, 'strerror', None) or exc})",
+                          Location(str(session))) from None
+    for path, where in resolved:
+        if where.is_relative_to(root):
             raise errors.OptionError(f"-o {session}: holds {path}, an input of this run, which the session's files "
                                      "may replace; expected another folder")
 

@@ -24,7 +24,7 @@ from typing import Any, Callable, Protocol
 
 from guided_lfd.demonstration.vocabulary import KITCHEN, HandVocabulary, infer_vocabulary
 from guided_lfd.excuse.change import Change, excuse_state
-from guided_lfd.excuse.engine import ExcuseOptions, describe_change, find_excuses
+from guided_lfd.excuse.engine import ExcuseOptions, check_option_names, describe_change, find_excuses
 from guided_lfd.excuse.status import ExcuseStatus
 from guided_lfd.io import json_document, write_text
 from guided_lfd.pddl.fit import check_model_fits
@@ -399,13 +399,7 @@ def teach(robot: Domain, problem: Problem, demonstrator: Demonstrator, out: Path
     """
     from guided_lfd.errors import GuidedLfdError, SearchTimeout
 
-    simulated = demonstrator.human if isinstance(demonstrator, SimulatedHuman) else None
-    for model, option in ((human, "--human"), (simulated if simulated is not human else None, "--simulate")):
-        if model is not None:
-            check_human_model(model, problem)
-            check_model_fits(robot, model, option)
-    _make_folder(out)
-    options = options or ExcuseOptions()
+    options = _prepare_session(robot, problem, demonstrator, out, options or ExcuseOptions(), human)
     if human is not None:
         options = replace(options, fixed_from=human, all_minimal=options.all_minimal or prefer)
     state, current, rounds = problem.init, robot, []
@@ -484,6 +478,85 @@ def _left(deadline: float | None) -> float | None:
 
     left = remaining(deadline)
     return None if left is None else max(0.001, left)
+
+
+def _prepare_session(robot: Domain, problem: Problem, demonstrator, out: Path, options: ExcuseOptions,
+                     human: Domain | None) -> ExcuseOptions:
+    """Every check that refuses a session, before its folder is made (or a previous session's is cleared)."""
+    simulated = demonstrator.human if isinstance(demonstrator, SimulatedHuman) else None
+    for model, option in ((human, "--human"), (simulated if simulated is not human else None, "--simulate")):
+        if model is not None:
+            check_human_model(model, problem)
+            check_model_fits(robot, model, option)
+    check_option_names(robot, options)
+    previous = check_session_folder(out, problem)
+    _make_folder(out)
+    _clear_previous_session(out, previous)
+    return options
+
+
+#: What a session writes into its folder (besides ``round-N/``).
+SESSION_FILES = ("robot.pddl", "session.json", "session.md")
+
+
+def check_session_folder(out: Path, problem: Problem) -> list[Path]:
+    """Refuse (exit 40), before any work, a session folder that is neither new, nor empty, nor a previous session
+    of the same task; return what a previous session left there (it is replaced whole).
+
+    Nothing the user had is overwritten: a folder holding other files, or a link where the session writes (a
+    ``robot.pddl`` linking to the robot's own domain), is refused."""
+    from guided_lfd.errors import Location, OutputError
+
+    def refuse(why: str) -> None:
+        raise OutputError(f"{why}; expected a new or empty folder, or a previous session of this task",
+                          Location(str(out)))
+
+    try:
+        if not out.exists():
+            return []
+        if not out.is_dir():
+            raise OutputError("is a file, expected a folder for the session", Location(str(out)))
+        entries = sorted(out.iterdir())
+    except (OSError, RuntimeError) as exc:  # a link loop, a folder the OS refuses
+        raise OutputError(f"cannot use it as the session folder ({getattr(exc, 'strerror', None) or exc})",
+                          Location(str(out))) from None
+    for entry in entries:
+        ours = entry.name in SESSION_FILES or (entry.name.startswith("round-") and entry.name[6:].isdigit())
+        if not ours:
+            refuse(f"holds {entry.name}, which is no file of a teaching session")
+        if entry.is_symlink():
+            refuse(f"holds {entry.name} as a link (the session would write through it)")
+    if entries:
+        _check_same_task(out, problem, refuse)
+    return entries
+
+
+def _check_same_task(out: Path, problem: Problem, refuse) -> None:
+    """A previous session in ``out`` must be of ``problem`` (its session.json names the problem file; a session
+    without one was interrupted before its end)."""
+    import json
+
+    record = out / "session.json"
+    if not record.exists():
+        return  # a session that ended before writing it (interrupted): its rounds are replaced
+    try:
+        earlier = Path(json.loads(record.read_text(encoding="utf-8"))["problem"])
+    except (OSError, ValueError, KeyError, TypeError):
+        refuse("holds a session.json that is not a teaching session's")
+        return
+    if problem.path and earlier.name != Path(problem.path).name:
+        refuse(f"holds a session of another task ({earlier})")
+
+
+def _clear_previous_session(out: Path, previous: list[Path]) -> None:
+    """Remove what a previous session of the task left in ``out`` (checked by :func:`check_session_folder`)."""
+    import shutil
+
+    for entry in previous:
+        if entry.is_dir():
+            shutil.rmtree(entry)
+        else:
+            entry.unlink(missing_ok=True)
 
 
 def _make_folder(folder: Path) -> Path:

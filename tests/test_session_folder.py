@@ -1,0 +1,75 @@
+"""``teach``'s session folder (issue #25): new, empty, or a previous session of the same task, which it replaces
+whole; nothing the user had is overwritten, through links too; a refused run creates nothing."""
+
+from __future__ import annotations
+
+import json
+import os
+
+from conftest import ROOT
+from guided_lfd.errors import EXIT_BAD_OPTION, EXIT_INPUT_FILE, EXIT_OUTPUT
+
+KITCHEN = ROOT / "data" / "domains" / "kitchen-2"
+ROBOT, PROBLEM, HUMAN = (str(KITCHEN / f) for f in ("robot.pddl", "problem.pddl", "human.pddl"))
+
+
+def _teach(runner, app, session, *extra, robot=ROBOT):
+    return runner.invoke(app, ["teach", robot, PROBLEM, "--simulate", HUMAN, "-o", str(session), "--quiet", *extra])
+
+
+def test_a_second_session_replaces_the_first_whole(runner, app, tmp_path):
+    session = tmp_path / "session"
+    assert _teach(runner, app, session).exit_code == 0
+    (session / "round-2").mkdir()  # as a longer earlier session of the task would have left it
+    (session / "round-2" / "excuse.json").write_text("{}")
+    assert _teach(runner, app, session).exit_code == 0
+    rounds = json.loads((session / "session.json").read_text())["rounds"]
+    assert sorted(p.name for p in session.iterdir()) == ["robot.pddl", "round-1", "session.json", "session.md"]
+    assert len(rounds) == 1
+
+
+def test_a_folder_with_other_files_or_another_tasks_session_is_refused_untouched(runner, app, tmp_path):
+    notes = tmp_path / "notes"
+    notes.mkdir()
+    (notes / "todo.txt").write_text("mine")
+    result = _teach(runner, app, notes)
+    assert result.exit_code == EXIT_OUTPUT
+    assert "holds todo.txt, which is no file of a teaching session" in result.stderr
+    assert sorted(p.name for p in notes.iterdir()) == ["todo.txt"]
+    other = tmp_path / "other"
+    other.mkdir()
+    (other / "session.json").write_text(json.dumps({"format": "guided-lfd/teach", "problem": "elsewhere.pddl"}))
+    result = _teach(runner, app, other)
+    assert result.exit_code == EXIT_OUTPUT and "holds a session of another task (elsewhere.pddl)" in result.stderr
+
+
+def test_a_link_where_the_session_writes_is_refused_and_its_target_kept(runner, app, tmp_path):
+    """``session/robot.pddl`` linking to the robot's own domain: the session would have written through it
+    (exit 0, the input replaced)."""
+    robot = tmp_path / "in" / "robot.pddl"
+    robot.parent.mkdir()
+    robot.write_text((KITCHEN / "robot.pddl").read_text())
+    before = robot.read_text()
+    session = tmp_path / "session"
+    session.mkdir()
+    (session / "robot.pddl").symlink_to(robot)
+    result = _teach(runner, app, session, robot=str(robot))
+    assert result.exit_code == EXIT_OUTPUT and "holds robot.pddl as a link" in result.stderr
+    assert robot.read_text() == before
+
+
+def test_link_loops_are_named_as_an_input_or_the_session(runner, app, tmp_path):
+    os.symlink(tmp_path / "b", tmp_path / "a")
+    os.symlink(tmp_path / "a", tmp_path / "b")
+    result = _teach(runner, app, tmp_path / "a")
+    assert result.exit_code == EXIT_OUTPUT and "cannot be the session folder" in result.stderr
+    result = _teach(runner, app, tmp_path / "s", robot=str(tmp_path / "a"))
+    assert result.exit_code == EXIT_INPUT_FILE and "cannot be read" in result.stderr
+    assert not (tmp_path / "s").exists()
+
+
+def test_a_refused_option_creates_no_session_folder(runner, app, tmp_path):
+    session = tmp_path / "session"
+    result = _teach(runner, app, session, "--prefer", "demonstration", "--slack", "-1")
+    assert result.exit_code == EXIT_BAD_OPTION
+    assert not session.exists()
