@@ -68,8 +68,11 @@ def _output_target(name: str) -> Path:
     try:
         target = Path(os.path.realpath(name))
         is_dir = target.is_dir()
+        looped = target.is_symlink()  # realpath stops where links loop; writing there would replace a link
     except OSError as exc:  # a name the OS refuses (too long, a loop of links, ...)
         raise OutputError(f"cannot write ({exc.strerror or exc})", Location(name)) from None
+    if looped:
+        raise OutputError("cannot write (a loop of symbolic links)", Location(name))
     if is_dir:
         raise OutputError("is a directory, expected a file name", Location(name))
     return target

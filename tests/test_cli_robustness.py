@@ -31,6 +31,17 @@ def test_write_through_symlink_keeps_the_link(tmp_path):
     assert link.is_symlink() and target.read_text() == "new"
 
 
+def test_an_output_through_a_loop_of_links_is_refused_and_the_links_kept(tmp_path):
+    """It replaced the first link with a regular file (exit 0; issue #25)."""
+    from guided_lfd.errors import OutputError
+
+    (tmp_path / "a").symlink_to(tmp_path / "b")
+    (tmp_path / "b").symlink_to(tmp_path / "a")
+    with pytest.raises(OutputError, match="a loop of symbolic links"):
+        write_text(tmp_path / "a", "new")
+    assert (tmp_path / "a").is_symlink() and (tmp_path / "b").is_symlink()
+
+
 def test_write_to_device_writes_in_place(tmp_path):
     """A device or FIFO is written in place, never replaced by a regular file (and gets the whole text)."""
     import threading
