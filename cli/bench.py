@@ -24,8 +24,10 @@ STEPS = ("generate", "run", "report", "all")
 @command
 def bench(
     step: Annotated[str, typer.Argument(metavar="STEP", help="generate | run | report | all (run, then report).")],
-    root: Annotated[Path, typer.Option("--root", metavar="DIR", help="Repository root (data/, benchmarks/).")]
-    = Path("."),
+    root: Annotated[Path | None, typer.Option("--root", metavar="DIR", help="Repository root (data/, benchmarks/; "
+                                                                        "default: the working folder if it has "
+                                                                        "them, else the installed checkout).")]
+    = None,
     ipc: Annotated[Path | None, typer.Option("--ipc", metavar="DIR", help="IPC collection (default ROOT/data/benchmarks/ipc).")] = None,
     tasks: Annotated[str, typer.Option("--tasks", metavar="NAMES", help="Comma-separated IPC task names per domain.")]
     = ",".join(f"task{i:02d}" for i in range(1, 11)),
@@ -61,9 +63,8 @@ def bench(
         raise OptionError(f"--memory-limit {memory_limit}: expected MiB >= 0 (0 = no cap)")
     if executor not in ("local", "dask"):
         raise OptionError(f"--executor {executor}: expected local or dask")
-    ipc = ipc or root / "data" / "benchmarks" / "ipc"
-    suite = suite or root / "benchmarks" / "suite.csv"
-    results = results or root / "benchmarks" / "results"
+    root, ipc, suite, results = _paths(step, root, ipc, suite, results)
+    _check_options(time_limit, jobs, strategies, semantics)
     if step == "generate":
         tasks_found = benchmark.generate_suite(ipc, root / "data" / "domains", tasks.split(","), log=ui.info_plain)
         benchmark.write_suite(tasks_found, suite, root)
@@ -91,6 +92,44 @@ def bench(
         sys.stdout.write(text + "\n")
 
 
+def _paths(step: str, root: Path | None, ipc: Path | None, suite: Path | None,
+           results: Path | None) -> tuple[Path, Path, Path, Path]:
+    """The root (see :mod:`guided_lfd.paths`) and the folders and files a step uses, checked before any work."""
+    from cli.common import check_output_folder
+    from guided_lfd.paths import data_root, require
+
+    root = data_root(root, "benchmarks/suite.csv" if step != "generate" else "data/benchmarks/ipc")
+    ipc = ipc or root / "data" / "benchmarks" / "ipc"
+    suite = suite or root / "benchmarks" / "suite.csv"
+    results = results or root / "benchmarks" / "results"
+    if step == "generate":
+        require(ipc, root / "data" / "domains")
+    elif step != "report":
+        require(suite, hint="give an existing --suite CSV, or --root DIR")
+    if step != "generate":
+        check_output_folder(results, "--results")
+    return root, ipc, suite, results
+
+
+def _check_options(time_limit: float, jobs: int, strategies: str, semantics: str) -> None:
+    """Refuse (exit 37) a time limit, job count, strategy or semantics the runs could not use."""
+    from guided_lfd.deadline import checked_time_limit
+    from guided_lfd.excuse.space import Semantics
+    from guided_lfd.excuse.strategies import STRATEGIES
+
+    checked_time_limit(time_limit)
+    if jobs < 1:
+        raise OptionError(f"--jobs {jobs}: expected a number of runs at a time >= 1")
+    for name in strategies.split(","):
+        if name not in STRATEGIES:
+            raise OptionError(f"--strategies {strategies}: unknown strategy '{name}' (expected some of: "
+                              f"{', '.join(STRATEGIES)})")
+    for name in semantics.split(","):
+        if name not in {s.value for s in Semantics}:
+            raise OptionError(f"--semantics {semantics}: unknown semantics '{name}' (expected some of: "
+                              f"{', '.join(s.value for s in Semantics)})")
+
+
 def _run(benchmark, root: Path, suite_file: Path, results: Path, results_csv: Path, time_limit: float, jobs: int,
          memory_limit: int, strategies: str, semantics: str, only: str, stop_after_unfinished: str, executor: str,
          scheduler: str | None) -> None:
@@ -98,6 +137,9 @@ def _run(benchmark, root: Path, suite_file: Path, results: Path, results_csv: Pa
     suite = benchmark.read_suite(suite_file, root)
     if only:
         keys = only.split(",")
+        unmatched = [k for k in keys if not any(k in t.id for t in suite)]
+        if unmatched:
+            raise OptionError(f"--only {only}: '{unmatched[0]}' matches no task of {suite_file}")
         suite = [t for t in suite if any(k in t.id for k in keys)]
     done = [0]
     total = len(suite) * len(strategies.split(",")) * len(semantics.split(","))

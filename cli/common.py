@@ -210,6 +210,24 @@ def check_time_limit(value: float | None) -> float | None:
     return checked_time_limit(value)
 
 
+def check_output_folder(folder: "Path", option: str) -> None:
+    """Refuse (exit 40), before any work, an output folder that is a file or cannot be made or written."""
+    from pathlib import Path
+
+    from guided_lfd.errors import Location, OutputError
+
+    try:
+        if folder.exists() and not folder.is_dir():
+            raise OutputError(f"{option}: is a file, expected a folder (the file is kept)", Location(str(folder)))
+        existing = next((p for p in [folder, *folder.parents] if p.exists()), Path("."))
+        writable = os.access(existing, os.W_OK | os.X_OK)
+    except (OSError, RuntimeError) as exc:
+        raise OutputError(f"{option}: cannot use it as a folder ({getattr(exc, 'strerror', None) or exc})",
+                          Location(str(folder))) from None
+    if not writable:
+        raise OutputError(f"{option}: cannot write into {existing} (permission denied)", Location(str(folder)))
+
+
 def check_inputs(*paths: str) -> None:
     """Standard input can be read once: refuse ``-`` for two inputs."""
     if sum(1 for p in paths if p == "-") > 1:

@@ -7,7 +7,7 @@ from typing import Annotated
 
 import typer
 
-from cli.common import QuietOption, command, help_footer, ui
+from cli.common import QuietOption, check_output_folder, command, help_footer, ui
 from guided_lfd import errors
 
 
@@ -19,9 +19,11 @@ from guided_lfd import errors
 )
 @command
 def demos(
-    out: Annotated[Path, typer.Argument(metavar="OUT", help="Where the traces go.")] = Path("data/demos"),
-    domains: Annotated[Path, typer.Option("--domains", metavar="DIR",
-                                          help="The kitchens' domains and problems.")] = Path("data/domains"),
+    out: Annotated[Path | None, typer.Argument(metavar="OUT", help="Where the traces go (default: the shipped "
+                                                                  "data/demos).")] = None,
+    domains: Annotated[Path | None, typer.Option("--domains", metavar="DIR",
+                                                 help="The kitchens' domains and problems (default: the shipped "
+                                                      "data/domains).")] = None,
     quiet: QuietOption = False,
 ) -> None:
     """Render the study's demonstrations as hand traces.
@@ -32,5 +34,12 @@ def demos(
     """
     from guided_lfd.demonstration.study_data import render_study
 
+    from guided_lfd.paths import data_root, require
+
+    root = data_root(None, "data/domains")
+    domains = domains or root / "data" / "domains"
+    out = out or root / "data" / "demos"
+    require(domains, hint="run from the checkout, or give --domains")
+    check_output_folder(out, "OUT")
     rendered = render_study(domains, out)
     ui.info(f"rendered {len(rendered)} demonstrations into {out}")

@@ -20,11 +20,13 @@ from guided_lfd import errors
 )
 @command
 def quality(
-    demos: Annotated[Path, typer.Option("--demos", metavar="DIR",
-                                        help="Labelled demonstrations, one folder per kitchen.")] = Path("data/demos"),
-    domains: Annotated[Path, typer.Option("--domains", metavar="DIR",
-                                          help="Each kitchen's human.pddl, the reference for learning.")]
-    = Path("data/domains"),
+    demos: Annotated[Path | None, typer.Option("--demos", metavar="DIR",
+                                               help="Labelled demonstrations, one folder per kitchen (default: "
+                                                    "data/demos of the working folder or the installed checkout).")]
+    = None,
+    domains: Annotated[Path | None, typer.Option("--domains", metavar="DIR",
+                                                 help="Each kitchen's human.pddl, the reference for learning "
+                                                      "(default: data/domains beside --demos' data).")] = None,
     traces: Annotated[list[Path] | None, typer.Option("--traces", metavar="DIR",
                                                        help="Also every source and scenario: an independent trace "
                                                             "source DIR/SCENARIO/CONDITION/*.csv (repeatable), "
@@ -42,6 +44,12 @@ def quality(
     """
     from guided_lfd.demonstration.quality import quality_markdown, quality_report, sources_markdown, sources_report
 
+    from guided_lfd.paths import data_root, require
+
+    root = data_root(None, "data/demos")
+    demos = demos or root / "data" / "demos"
+    domains = domains or root / "data" / "domains"
+    require(demos, domains, *(traces or []), hint="run from the checkout, or give --demos and --domains")
     sys.stdout.write(quality_markdown(quality_report(demos, domains)))
     if traces:
         sys.stdout.write("\n## All sources\n\n" + sources_markdown(sources_report(demos, domains, traces)))

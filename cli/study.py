@@ -8,7 +8,7 @@ from typing import Annotated
 
 import typer
 
-from cli.common import QuietOption, command, help_footer, ui
+from cli.common import QuietOption, check_output_folder, command, help_footer, ui
 from guided_lfd import errors
 
 
@@ -20,7 +20,9 @@ from guided_lfd import errors
 )
 @command
 def study(
-    root: Annotated[Path, typer.Option("--root", metavar="DIR", help="Repository root (with data/).")] = Path("."),
+    root: Annotated[Path | None, typer.Option("--root", metavar="DIR", help="Repository root (with data/; default: "
+                                                                        "the working folder if it has the data, "
+                                                                        "else the installed checkout).")] = None,
     out: Annotated[Path, typer.Option("--out", metavar="DIR", help="Where the results go.")] = Path("results"),
     quiet: QuietOption = False,
 ) -> None:
@@ -34,6 +36,14 @@ def study(
     from guided_lfd.reporting import PLOTS_HINT
     from guided_lfd.study import run_study, side_by_side, write_artefacts, write_report
 
+    from guided_lfd.paths import data_root, require
+
+    root = data_root(root, "data/study")
+    study_data = root / "data" / "study"
+    require(*(study_data / f"{name}.csv" for name in ("table1-demonstration-time", "table1-ratio",
+                                                       "table2-demonstration-size")),
+            root / "data" / "demos", root / "data" / "domains")
+    check_output_folder(out, "--out")
     # What guided_lfd.study.reproduce does, keeping write_report's answer: were the plots drawn?
     paper, kitchens = run_study(root, lambda message: ui.info(f"  {message}"))
     write_artefacts(out, kitchens)

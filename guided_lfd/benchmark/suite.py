@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import csv
 import time
-from dataclasses import asdict, dataclass, replace
+from dataclasses import asdict, dataclass, fields, replace
 from pathlib import Path
 from typing import Callable, Iterable
 
@@ -94,15 +94,34 @@ def write_suite(suite: list[BenchTask], path: Path, root: Path) -> None:
     write_text(path, buf.getvalue())
 
 
+SUITE_COLUMNS = tuple(f.name for f in fields(BenchTask))
+
+
 def read_suite(path: Path, root: Path) -> list[BenchTask]:
-    """Read a suite CSV; relative paths are taken from ``root``."""
+    """Read a suite CSV; relative paths are taken from ``root``.  A file missing or without the suite's columns,
+    or a row with another number of cells, is :class:`~guided_lfd.errors.InputFileError` at its line."""
+    from guided_lfd.errors import InputFileError, Location
+
     out = []
-    with open(path, newline="", encoding="utf-8") as fh:
-        for row in csv.DictReader(fh):
-            for key in ("domain_file", "problem_file", "fixed_from"):
-                if row[key] and not Path(row[key]).is_absolute():
-                    row[key] = str(root / row[key])
-            out.append(BenchTask(**row))
+    try:
+        with open(path, newline="", encoding="utf-8") as fh:
+            reader = csv.DictReader(fh)
+            missing = [c for c in SUITE_COLUMNS if c not in (reader.fieldnames or [])]
+            if missing:
+                raise InputFileError(f"missing column(s) {', '.join(missing)} (expected a suite CSV with "
+                                     f"{', '.join(SUITE_COLUMNS)})", Location(str(path), 1))
+            for row in reader:
+                if None in row or None in row.values():
+                    raise InputFileError(f"expected {len(reader.fieldnames or [])} cells in the row",
+                                         Location(str(path), reader.line_num))
+                row = {k: row[k] for k in SUITE_COLUMNS}
+                for key in ("domain_file", "problem_file", "fixed_from"):
+                    if row[key] and not Path(row[key]).is_absolute():
+                        row[key] = str(root / row[key])
+                out.append(BenchTask(**row))
+    except (OSError, UnicodeDecodeError, csv.Error) as exc:
+        raise InputFileError(f"cannot read the suite ({getattr(exc, 'strerror', None) or exc})",
+                             Location(str(path))) from None
     return out
 
 

@@ -1,0 +1,55 @@
+"""``study``, ``quality``, ``demos`` and ``bench`` from any working folder (issue #25): they find the shipped data
+in the installed checkout, or name the file that is missing (30); an output that is a file is refused (40) and
+kept; a suite CSV that is missing or malformed, an ``--only`` that matches nothing, an unknown strategy or a
+time limit that is not a number are one-line errors.  Each was ``internal error`` (exit 1), or replaced the file."""
+
+from __future__ import annotations
+
+import pytest
+
+from conftest import ROOT
+from guided_lfd.errors import EXIT_BAD_OPTION, EXIT_INPUT_FILE, EXIT_OUTPUT
+
+
+@pytest.fixture
+def elsewhere(tmp_path, monkeypatch):
+    """A working folder outside the checkout."""
+    monkeypatch.chdir(tmp_path)
+    return tmp_path
+
+
+def test_quality_and_demos_find_the_shipped_data_from_elsewhere(runner, app, elsewhere):
+    from_elsewhere = runner.invoke(app, ["quality"])
+    assert from_elsewhere.exit_code == 0, from_elsewhere.stderr
+    at_home = runner.invoke(app, ["quality", "--demos", str(ROOT / "data/demos"),
+                                  "--domains", str(ROOT / "data/domains")])
+    assert from_elsewhere.stdout == at_home.stdout
+    rendered = runner.invoke(app, ["demos", "traces"])
+    assert rendered.exit_code == 0, rendered.stderr
+    shipped = ROOT / "data" / "demos" / "kitchen-1" / "P1-excuse.csv"
+    assert (elsewhere / "traces" / "kitchen-1" / "P1-excuse.csv").read_bytes() == shipped.read_bytes()
+
+
+@pytest.mark.parametrize("args, code, message", [
+    (["study", "--root", "."], EXIT_INPUT_FILE, "data/study/table1-demonstration-time.csv: input error: not found"),
+    (["study", "--out", "taken"], EXIT_OUTPUT, "taken: output error: --out: is a file, expected a folder"),
+    (["demos", "taken"], EXIT_OUTPUT, "taken: output error: OUT: is a file, expected a folder"),
+    (["quality", "--demos", "nowhere"], EXIT_INPUT_FILE, "nowhere: input error: not found"),
+    (["bench", "run", "--suite", "missing.csv"], EXIT_INPUT_FILE, "missing.csv: input error: not found"),
+    (["bench", "run", "--suite", "bad.csv"], EXIT_INPUT_FILE, "bad.csv:1: input error: missing column(s) task"),
+    (["bench", "run", "--suite", "short.csv"], EXIT_INPUT_FILE, "short.csv:2: input error: expected 7 cells"),
+    (["bench", "run", "--only", "no-such-task"], EXIT_BAD_OPTION, "'no-such-task' matches no task of"),
+    (["bench", "run", "--strategies", "nope"], EXIT_BAD_OPTION, "unknown strategy 'nope'"),
+    (["bench", "run", "--semantics", "nope"], EXIT_BAD_OPTION, "unknown semantics 'nope'"),
+    (["bench", "run", "--time-limit", "nan"], EXIT_BAD_OPTION, "--time-limit nan: expected a number of seconds"),
+    (["bench", "run", "--results", "taken"], EXIT_OUTPUT, "taken: output error: --results: is a file"),
+])
+def test_bad_data_and_outputs_are_one_line_errors_and_nothing_is_replaced(runner, app, elsewhere, args, code,
+                                                                        message):
+    (elsewhere / "taken").write_text("mine")
+    (elsewhere / "bad.csv").write_text("id,domain\nx,y\n")
+    (elsewhere / "short.csv").write_text("id,domain,task,removed_action,domain_file,problem_file,fixed_from\na,b\n")
+    result = runner.invoke(app, args)
+    assert result.exit_code == code, result.output
+    assert message in result.stderr and len(result.stderr.strip().splitlines()) == 1, result.stderr
+    assert (elsewhere / "taken").read_text() == "mine"
