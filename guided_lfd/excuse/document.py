@@ -28,6 +28,13 @@ def excuse_summary(report: ExcuseReport, spellings: dict[str, str]) -> str:
             goals = ", ".join(str(g) for g in report.unachievable_goals)
             return (f"no excuse exists: no robot skill achieves {goals}{while_fixed}, and no change of the initial "
                     f"state short of satisfying the goal helps; a new skill must be demonstrated")
+        in_the_way = report.statistics.invariants_in_the_way
+        if in_the_way:
+            changes = " ".join(report.statistics.literal_excuse or [])
+            return (f"no excuse keeps the state invariants{while_fixed}: only the invariants "
+                    f"{', '.join(in_the_way)} stand in the way (the literal semantics' excuse {changes} breaks "
+                    "them; they may hold only because a skill is missing: try --semantics literal, or "
+                    "--invariants-from the complete domain)")
         return (f"no excuse exists: no change of the initial state lets the robot reach the goal{while_fixed}; "
                 "a new skill must be demonstrated")
     if report.status is ExcuseStatus.NONE_WITHIN_SIZE:

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import gc
 import time
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 from guided_lfd.deadline import check as check_deadline
@@ -347,6 +347,7 @@ class _Run:
         stats.changeable_atoms, stats.relevant_atoms = space.changeable.bit_count(), space.relevant_atoms.bit_count()
         stats.relevant_actions, stats.invariant_groups = len(space.relevant_actions), len(space.groups)
         stats.fixed_predicates = fixed
+        stats.invariants_refuted_by_goal = prepared.refuted or None
         self.unachievable = unachievable_goals(task)
         # Already solvable: no excuse needed.  The compiled relaxed task and the
         # oracle are built once here and handed to the search, which reuses the
@@ -402,7 +403,27 @@ class _Run:
             if self.excuses:
                 status = ExcuseStatus.FOUND  # --all ran out of time: what was found is minimal
                 self.stats.incomplete = True
+        if status is ExcuseStatus.NONE and space.groups and not self.unachievable:
+            self._invariants_in_the_way(task, space)
         return self.report(status)
+
+    def _invariants_in_the_way(self, task: GroundTask, space: ChangeSpace) -> None:
+        """No excuse keeps the invariants: when the literal semantics finds one, name the invariants its excuse
+        state breaks (they may hold only because a skill is missing) in the statistics."""
+        literal = replace(self.options, semantics=Semantics.LITERAL, all_minimal=False, started=self.start)
+        try:
+            report = find_excuses(self.domain, self.problem, literal)
+        except SearchTimeout:
+            return
+        if report.excuse is None:
+            return
+        index = {atom: i for i, atom in enumerate(task.atoms)}
+        state = 0
+        for atom in report.excuse.state:
+            state |= 1 << index[atom] if atom in index else 0
+        broken = sorted({g.invariant for g in space.groups if g.need(state)})
+        self.stats.invariants_in_the_way = broken or None
+        self.stats.literal_excuse = [str(c) for c in report.excuse.changes]
 
 
 def _steps(plan: list[GroundAction]) -> list[PlanStep]:

@@ -95,8 +95,16 @@ def lifted_invariants(domain: Domain, problem: Problem, max_time: float | None =
     return sorted(found, key=str)
 
 
-def mutex_groups(source: Domain, task: GroundTask, deadline: float | None = None) -> list[MutexGroup]:
-    """Ground mutex groups of ``task`` from invariants of ``source`` (usually its own domain)."""
+def mutex_groups(source: Domain, task: GroundTask, deadline: float | None = None,
+                 refuted: list[str] | None = None) -> list[MutexGroup]:
+    """Ground mutex groups of ``task`` from invariants of ``source`` (usually its own domain).
+
+    An invariant the task's goal breaks (two of a group's atoms wanted true, or every atom of an exactly-one
+    group wanted false) is no law of the world: it holds only because the robot lacks a skill (without
+    pick-up, a paper is never carried again once one is delivered, so "at most one of carrying and satisfied"
+    holds for the robot, though the task wants two houses satisfied).  It is left out, and its description
+    appended to ``refuted``.
+    """
     remaining = None if deadline is None else max(1.0, deadline - time.monotonic())
     invariants = lifted_invariants(source, task.problem, remaining)
     groups: list[MutexGroup] = []
@@ -124,6 +132,12 @@ def mutex_groups(source: Domain, task: GroundTask, deadline: float | None = None
                 )
                 by_key[key] = by_key.get(key, 0) | (1 << i)
         conserved = _conserved(check_task, task, [m for m in by_key.values()])
+        # Only where the initial state keeps the group (where it does not, the group is not used anyway).
+        if any(_goal_breaks(task, mask, conserved and (task.init & mask).bit_count() == 1)
+               for mask in by_key.values() if (task.init & mask).bit_count() <= 1):
+            if refuted is not None:
+                refuted.append(describe_invariant(inv))
+            continue
         for key in sorted(by_key):
             mask = by_key[key]
             count = (task.init & mask).bit_count()
@@ -139,6 +153,11 @@ def mutex_groups(source: Domain, task: GroundTask, deadline: float | None = None
         if g.mask not in unique or (g.exactly_one and not unique[g.mask].exactly_one):
             unique[g.mask] = g
     return [unique[m] for m in sorted(unique)]
+
+
+def _goal_breaks(task: GroundTask, mask: int, exactly_one: bool) -> bool:
+    """Whether no state satisfying ``task``'s goal keeps the group ``mask`` (at most one, or exactly one, true)."""
+    return (task.goal_pos & mask).bit_count() > 1 or (exactly_one and not mask & ~task.goal_neg)
 
 
 def describe_invariant(inv) -> str:

@@ -7,7 +7,7 @@ start here.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Callable, Sequence
 
 from guided_lfd.excuse.reach import ReachabilityOracle
@@ -26,6 +26,8 @@ class PreparedTask:
     groups: list[MutexGroup]
     space: ChangeSpace
     oracle: ReachabilityOracle
+    #: Invariants left out because the task's goal breaks them (see :func:`~guided_lfd.excuse.invariants.mutex_groups`).
+    refuted: list[str] = field(default_factory=list)
 
 
 def prepare(domain: Domain, problem: Problem, semantics: Semantics = Semantics.LITERAL, fixed: Sequence[str] = (),
@@ -38,13 +40,14 @@ def prepare(domain: Domain, problem: Problem, semantics: Semantics = Semantics.L
     """
     task = ground(domain, problem, fixed=fixed, deadline=deadline)
     groups: list[MutexGroup] = []
+    refuted: list[str] = []
     if semantics is Semantics.CONSISTENT and not task.satisfies_goal(task.init):
         if on_phase:
             on_phase("invariant synthesis")
         from guided_lfd.excuse.invariants import mutex_groups
 
-        groups = mutex_groups(invariants_from or domain, task, deadline)
+        groups = mutex_groups(invariants_from or domain, task, deadline, refuted)
     if on_phase:
         on_phase("change space")
     space = build_space(task, semantics, list(fixed), list(costs), groups)
-    return PreparedTask(task, groups, space, ReachabilityOracle(space, deadline))
+    return PreparedTask(task, groups, space, ReachabilityOracle(space, deadline), refuted)

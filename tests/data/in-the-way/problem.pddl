@@ -1,0 +1,4 @@
+(define (problem press-once)
+  (:domain press)
+  (:init (at-left))
+  (:goal (pressed)))

@@ -1,0 +1,18 @@
+; Newspapers (after pddlgym's): pick papers up at the home base, drive, deliver one to each house that wants one.
+(define (domain newspapers)
+  (:requirements :strips :typing)
+  (:types loc paper)
+  (:predicates (at ?l - loc) (is-home-base ?l - loc) (satisfied ?l - loc) (wants-paper ?l - loc)
+               (safe ?l - loc) (unpacked ?p - paper) (carrying ?p - paper))
+  (:action pick-up
+    :parameters (?p - paper ?l - loc)
+    :precondition (and (at ?l) (is-home-base ?l) (unpacked ?p))
+    :effect (and (carrying ?p) (not (unpacked ?p))))
+  (:action move
+    :parameters (?from ?to - loc)
+    :precondition (and (at ?from) (safe ?from))
+    :effect (and (at ?to) (not (at ?from))))
+  (:action deliver
+    :parameters (?p - paper ?l - loc)
+    :precondition (and (at ?l) (carrying ?p))
+    :effect (and (not (carrying ?p)) (satisfied ?l))))
