@@ -134,3 +134,73 @@ def test_an_error_quoting_a_nul_or_a_line_break_stays_one_line():
             validate(domain, problem, [step])
         text = str(info.value)
         assert text.isprintable() and len(text.splitlines()) == 1, text
+
+
+def test_a_plan_time_limit_holds_in_a_thread_where_no_watchdog_runs(tmp_path):
+    """A robot program plans in a worker thread: SIGALRM cannot reach it, so grounding checks the deadline
+    itself.  The largest house of the series grounds for seconds; a 0.5 s limit ended it after 13 s with a plan
+    (issue #25)."""
+    import threading
+    import time
+
+    from guided_lfd import household
+    from guided_lfd.errors import SearchTimeout
+
+    house = household.House(*household.SERIES[-1], "no-open")
+    (tmp_path / "robot.pddl").write_text(household.domain_pddl("no-open"))
+    (tmp_path / "problem.pddl").write_text(household.problem_pddl(house))
+    domain, problem = read_task(str(tmp_path / "robot.pddl"), str(tmp_path / "problem.pddl"))
+    outcome: dict = {}
+
+    def worker() -> None:
+        start = time.monotonic()
+        try:
+            plan(domain, problem, time_limit=0.5)
+            outcome["result"] = "plan"
+        except SearchTimeout:
+            outcome["result"] = "timeout"
+        outcome["took"] = time.monotonic() - start
+
+    thread = threading.Thread(target=worker)
+    thread.start()
+    thread.join(60)
+    assert outcome["result"] == "timeout"
+    assert outcome["took"] < 2.5
+
+
+def test_find_excuses_in_a_loop_and_in_threads_leaves_the_process_as_it_was():
+    """A robot program calls the engine 200 times, and from threads: the same excuse every time, the garbage
+    collector and SIGALRM's handler as they were, nothing kept between calls (memory flat)."""
+    import gc
+    import signal
+    import threading
+    import tracemalloc
+
+    from guided_lfd import deadline
+
+    domain, problem = read_task(str(DATA / "many-excuses" / "domain.pddl"), str(DATA / "many-excuses" / "problem.pddl"))
+    handler = signal.getsignal(signal.SIGALRM)
+
+    def excuse() -> str:
+        report = find_excuses(domain, problem, ExcuseOptions(time_limit=30))
+        return " ".join(str(c) for c in report.excuse.changes)
+
+    expected = excuse()
+    tracemalloc.start()
+    for k in range(200):
+        assert excuse() == expected
+        if k == 49:
+            gc.collect()
+            early = tracemalloc.get_traced_memory()[0]
+    gc.collect()
+    late = tracemalloc.get_traced_memory()[0]
+    tracemalloc.stop()
+    assert late - early < 2_000_000, f"memory grew by {late - early:,} bytes over 150 calls"
+    results: list[str] = []
+    threads = [threading.Thread(target=lambda: results.extend(excuse() for _ in range(10))) for _ in range(4)]
+    for thread in threads:
+        thread.start()
+    for thread in threads:
+        thread.join(60)
+    assert results == [expected] * 40
+    assert gc.isenabled() and signal.getsignal(signal.SIGALRM) == handler and not deadline.lingering()
