@@ -152,7 +152,7 @@ def _prefer(report: ExcuseReport, human, dom, prob, keep_all: bool, deadline: fl
 
     try:
         with watchdog(deadline, "predicting the demonstrations"):
-            apply_preference(report, human, dom, prob, keep_all=keep_all)
+            apply_preference(report, human, dom, prob, keep_all=keep_all, deadline=deadline)
     except SearchTimeout:
         report.preference = None
         if not keep_all:

@@ -10,7 +10,7 @@ import typer
 
 from cli.common import (JsonOption, QuietOption, TimeLimitOption, check_inputs, check_time_limit, command, help_footer,
                         one_line, started_at, ui)
-from guided_lfd.deadline import deadline_after
+from guided_lfd.deadline import deadline_after, watchdog
 from guided_lfd import errors
 
 
@@ -158,10 +158,12 @@ def teach(
         raise errors.OptionError(f"--prefer {prefer}: expected 'demonstration'")
     time_limit = check_time_limit(time_limit)
     _check_session(session, [robot, problem, simulate, human_model, *(str(d) for d in demo or [])])
-    robot_domain, task = parse_task(robot, problem)
+    deadline = deadline_after(time_limit, started_at())  # the whole run: reading, every round, re-planning
+    with watchdog(deadline, "reading the input"):
+        robot_domain, task = parse_task(robot, problem)
+        human = SimulatedHuman(parse_domain(simulate), robot=robot_domain) if simulate else None
+        model = parse_domain(human_model) if human_model else human.human if human else None
     ui.reading_warnings(robot_domain)
-    human = SimulatedHuman(parse_domain(simulate), robot=robot_domain) if simulate else None
-    model = parse_domain(human_model) if human_model else human.human if human else None
     if slack and not prefer:
         raise errors.OptionError(f"--slack {slack}: needs --prefer demonstration")
     if prefer and model is None:
@@ -181,10 +183,10 @@ def teach(
         for line in lines:
             typer.echo(line, err=True) if prompt else ui.info_plain(line)
 
-    session_obj = run_teach(robot_domain, task, demonstrator, session, max_rounds,
-                            ExcuseOptions(slack=slack or 0), human=model, prefer=prefer is not None,
-                            redundancy=redundancy, deadline=deadline_after(time_limit, started_at()),
-                            on_request=show)
+    with watchdog(deadline, "teaching"):  # the rounds check it themselves; this ends what does not
+        session_obj = run_teach(robot_domain, task, demonstrator, session, max_rounds,
+                                ExcuseOptions(slack=slack or 0), human=model, prefer=prefer is not None,
+                                redundancy=redundancy, deadline=deadline, on_request=show)
     write_text(session / "session.json", session_obj.to_json())
     write_text(session / "session.md", session_obj.to_markdown())
     if json_out:

@@ -420,7 +420,8 @@ def teach(robot: Domain, problem: Problem, demonstrator: Demonstrator, out: Path
                     reason = _no_excuse_reason(report, task)
                 break
             rnd = (_new_skill_request(k, current, task, report) if report.excuse is None else
-                   _request(k, current, task, report, human if prefer else None, human if redundancy else None, human))
+                   _request(k, current, task, report, human if prefer else None, human if redundancy else None, human,
+                            deadline))
             rnd.files["excuse"] = str(folder / "excuse.json")
             rounds.append(rnd)
             if on_request:
@@ -571,7 +572,7 @@ def _make_folder(folder: Path) -> Path:
 
 
 def _request(k: int, robot: Domain, task: Problem, report, prefer_by: Domain | None,
-             reduce_by: Domain | None, human: Domain | None = None) -> Round:
+             reduce_by: Domain | None, human: Domain | None = None, deadline: float | None = None) -> Round:
     """The round's request: the (preferred) minimal excuse or its smallest sufficient part, why the robot
     needs it, what to leave as it is."""
     from guided_lfd.excuse.preference import minimal_request, prefer_demonstration
@@ -580,10 +581,11 @@ def _request(k: int, robot: Domain, task: Problem, report, prefer_by: Domain | N
     spellings = report.spellings
     chosen, preference = report.excuse, None
     if prefer_by is not None and len(report.excuses) > 1:
-        index, preference = prefer_demonstration([e.changes for e in report.excuses], prefer_by, robot, task)
+        index, preference = prefer_demonstration([e.changes for e in report.excuses], prefer_by, robot, task,
+                                                 deadline)
         chosen = report.excuses[index]
     excuse = chosen.changes
-    request = minimal_request(reduce_by, robot, task, excuse) if reduce_by is not None else list(excuse)
+    request = minimal_request(reduce_by, robot, task, excuse, deadline) if reduce_by is not None else list(excuse)
     keep = keep_facts(robot, task, task.init, excuse, chosen.plan, human)
     return Round(k, excuse, request, [describe_change(c, spellings) for c in request],
                  _why(report, robot, task, excuse), keep, [f"keep {pretty_atom(a, spellings)}" for a in keep],

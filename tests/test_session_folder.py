@@ -73,3 +73,27 @@ def test_a_refused_option_creates_no_session_folder(runner, app, tmp_path):
     result = _teach(runner, app, session, "--prefer", "demonstration", "--slack", "-1")
     assert result.exit_code == EXIT_BAD_OPTION
     assert not session.exists()
+
+
+def test_teach_ends_within_its_time_limit_whatever_phase_it_is_in(tmp_path):
+    """A 32-item house without `open`: the redundancy check (re-planning each part of the excuse) ran outside
+    the deadline, so `--time-limit 5` ended after 13.8 s (46.9 s on a larger house).  Now the whole session,
+    reading included, ends within the limit and a second (the run takes about 30 s without a limit)."""
+    import subprocess
+    import time
+
+    from guided_lfd import household
+    from guided_lfd.benchmark import cli_command
+    from guided_lfd.errors import EXIT_TIME_LIMIT
+
+    house = household.House(8, 32, 4, 1, 4, "no-open")
+    (tmp_path / "robot.pddl").write_text(household.domain_pddl("no-open"))
+    (tmp_path / "human.pddl").write_text(household.domain_pddl())
+    (tmp_path / "problem.pddl").write_text(household.problem_pddl(house))
+    start = time.monotonic()
+    proc = subprocess.run([*cli_command(), "teach", str(tmp_path / "robot.pddl"), str(tmp_path / "problem.pddl"),
+                           "--simulate", str(tmp_path / "human.pddl"), "-o", str(tmp_path / "session"),
+                           "--time-limit", "2", "--quiet"], capture_output=True, text=True, timeout=120)
+    took = time.monotonic() - start
+    assert proc.returncode == EXIT_TIME_LIMIT, proc.stderr
+    assert took < 3.0, f"{took:.1f} s for --time-limit 2"

@@ -38,24 +38,35 @@ class PredictedDemonstration:
         return None if self.plan is None else len(self.plan)
 
 
-def predict_demonstration(human: Domain, robot: Domain, task: Problem, changes: list[Change]) -> PredictedDemonstration:
-    """The human model's shortest plan from ``task``'s state to a state where ``changes`` hold."""
+def _left(deadline: float | None) -> float | None:
+    """Seconds left before ``deadline`` (None: no limit); :class:`SearchTimeout` once it has passed."""
+    from guided_lfd.deadline import check, remaining
+
+    check(deadline, "preferring and reducing excuses")
+    left = remaining(deadline)
+    return None if left is None else max(0.001, left)
+
+
+def predict_demonstration(human: Domain, robot: Domain, task: Problem, changes: list[Change],
+                          deadline: float | None = None) -> PredictedDemonstration:
+    """The human model's shortest plan from ``task``'s state to a state where ``changes`` hold (within
+    ``deadline``, a ``time.monotonic()`` value: :class:`~guided_lfd.errors.SearchTimeout` past it)."""
     from guided_lfd.evaluate import excuse_goal, optimal_plan
 
-    plan = optimal_plan(human, task, goal=excuse_goal(changes))
+    plan = optimal_plan(human, task, goal=excuse_goal(changes), time_limit=_left(deadline))
     known = {a.name for a in robot.actions}
     new = sum(step.action not in known for step in plan) / len(plan) if plan else 0.0
     return PredictedDemonstration(list(changes), plan, new)
 
 
 def prefer_demonstration(excuses: list[list[Change]], human: Domain, robot: Domain,
-                         task: Problem) -> tuple[int, str]:
+                         task: Problem, deadline: float | None = None) -> tuple[int, str]:
     """The index of the preferred excuse among ``excuses`` (all minimal) and why, in one line.
 
     Shortest predicted demonstration first, then the most new skills, then the
     search's own order; an excuse the human model cannot demonstrate comes last.
     """
-    predictions = [predict_demonstration(human, robot, task, changes) for changes in excuses]
+    predictions = [predict_demonstration(human, robot, task, changes, deadline) for changes in excuses]
     order = sorted(range(len(excuses)), key=lambda k: (predictions[k].length is None,
                                                        predictions[k].length or 0, -predictions[k].new_fraction, k))
     best = order[0]
@@ -69,7 +80,8 @@ def prefer_demonstration(excuses: list[list[Change]], human: Domain, robot: Doma
     return best, why + (f", against {'; '.join(others)}" if others else "")
 
 
-def minimal_request(human: Domain, robot: Domain, task: Problem, excuse: list[Change]) -> list[Change]:
+def minimal_request(human: Domain, robot: Domain, task: Problem, excuse: list[Change],
+                    deadline: float | None = None) -> list[Change]:
     """The smallest part of ``excuse`` whose human demonstration, learned, lets the robot plan ``task``.
 
     Parts are tried smallest first (in the excuse's order); the learned
@@ -81,23 +93,24 @@ def minimal_request(human: Domain, robot: Domain, task: Problem, excuse: list[Ch
 
     for size in range(1, len(excuse)):
         for part in combinations(excuse, size):
-            predicted = predict_demonstration(human, robot, task, list(part))
+            predicted = predict_demonstration(human, robot, task, list(part), deadline)
             if not predicted.plan:
                 continue
             after = validate_plan(human, task.init, (), predicted.plan).final_state
             used = {step.action for step in predicted.plan}
             skills = replace(human, actions=[a for a in human.actions if a.name in used])
             taught = merge_domains([robot, skills], name=robot.name).domain
-            if robot_plan(taught, replace(task, init=after)).solved:
+            if robot_plan(taught, replace(task, init=after), time_limit=_left(deadline)).solved:
                 return list(part)
     return list(excuse)
 
 
-def apply_preference(report, human: Domain, robot: Domain, task: Problem, keep_all: bool = False) -> None:
+def apply_preference(report, human: Domain, robot: Domain, task: Problem, keep_all: bool = False,
+                     deadline: float | None = None) -> None:
     """Put the preferred of ``report``'s minimal excuses first (and only it, unless ``keep_all``), saying why."""
     if len(report.excuses) < 2:
         return
-    index, why = prefer_demonstration([e.changes for e in report.excuses], human, robot, task)
+    index, why = prefer_demonstration([e.changes for e in report.excuses], human, robot, task, deadline)
     preferred = report.excuses[index]
     rest = [e for k, e in enumerate(report.excuses) if k != index]
     report.excuses = [preferred, *rest] if keep_all else [preferred]
