@@ -398,3 +398,19 @@ def test_a_fixed_atom_of_an_invariant_group_pins_its_group():
     for fixed in (["hand_free"], ["on_top"]):
         report = find_excuses(domain, problem, ExcuseOptions(fixed=fixed))
         assert [str(c) for c in report.excuse.changes] == ["+(clear pinkdrawer)"]
+
+
+def test_the_checker_rejects_a_change_to_a_fixed_predicate_and_a_cost_its_changes_do_not_have():
+    """The checker reads --fixed and --cost itself (issue #25: it ignored both): Kitchen I's excuse passes with
+    the options it was found under, and fails when the predicate it changes is fixed or its cost is misstated."""
+    from guided_lfd.excuse.check import change_cost
+
+    domain, problem = parse_task(*kitchen(1))
+    report = find_excuses(domain, problem, ExcuseOptions(costs=["open=3"]))
+    excuse = report.excuse
+    args = (domain, problem, excuse.changes, excuse.plan, report.checked_groups)
+    assert excuse.cost == 3 and change_cost(excuse.changes, ["open=3"]) == 3
+    assert check_excuse(*args, fixed=[], costs=["open=3"], cost=3) == []
+    assert check_excuse(*args, fixed=["open"]) == ["+(open pinkdrawer) changes open, which is fixed"]
+    assert check_excuse(*args, costs=["(open pinkdrawer)=5", "open=3"], cost=3) == [
+        "the excuse's cost is 3, but its changes cost 5"]

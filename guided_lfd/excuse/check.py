@@ -7,15 +7,36 @@ mistakes.  Every excuse guided-lfd prints has passed this check.
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+
 from guided_lfd.excuse.change import Change, excuse_state
 from guided_lfd.pddl.model import Atom, Domain, Literal, Problem
 from guided_lfd.validation import PlanStep, validate_plan
 
-__all__ = ["check_excuse"]
+__all__ = ["check_excuse", "change_cost"]
 
 
 def _holds(lit: Literal, state: frozenset[Atom]) -> bool:
     return (lit.atom in state) == lit.positive
+
+
+def change_cost(changes: list[Change], specs: Sequence[str]) -> int:
+    """The cost of ``changes`` under ``--cost`` ``specs`` (``PRED=N``, ``(pred arg ...)=N``; an atom's own
+    specification wins over its predicate's; 1 otherwise), read here again rather than taken from the search."""
+    by_predicate: dict[str, int] = {}
+    by_atom: dict[tuple[str, ...], int] = {}
+    for spec in specs:
+        target, _, value = spec.rpartition("=")
+        target = target.strip().lower()
+        if target.startswith("("):
+            by_atom[tuple(target.strip("()").split())] = int(value)
+        else:
+            by_predicate[target] = int(value)
+    total = 0
+    for change in changes:
+        key = (change.atom.predicate, *change.atom.args)
+        total += by_atom.get(key, by_predicate.get(change.atom.predicate, 1))
+    return total
 
 
 def check_excuse(
@@ -24,14 +45,22 @@ def check_excuse(
     changes: list[Change],
     plan: list[PlanStep],
     groups: list[tuple[frozenset[Atom], bool]] | None = None,
+    fixed: Sequence[str] = (),
+    costs: Sequence[str] | None = None,
+    cost: int | None = None,
 ) -> list[str]:
     """Reasons why ``changes`` with ``plan`` is *not* a valid excuse (empty = valid).
 
     ``groups`` are (atoms, exactly_one) invariants the excuse state must keep
     (consistent semantics), checked as stated: at most one true atom, and
-    exactly one where ``exactly_one`` is set.
+    exactly one where ``exactly_one`` is set.  No change may touch a ``fixed``
+    predicate; with ``costs`` (the ``--cost`` specifications), ``cost`` must
+    be what they give the changes (:func:`change_cost`).
     """
     problems: list[str] = []
+    problems += [f"{c} changes {c.atom.predicate}, which is fixed" for c in changes if c.atom.predicate in fixed]
+    if costs is not None and cost is not None and change_cost(changes, costs) != cost:
+        problems.append(f"the excuse's cost is {cost}, but its changes cost {change_cost(changes, costs)}")
     atoms = [c.atom for c in changes]
     if len(set(atoms)) != len(atoms):
         problems.append("an atom is changed twice")

@@ -393,7 +393,7 @@ class _Run:
             plan, optimal = _robot_plan(task, space, oracle, state, outcome.plans[changes], options.optimal_plans,
                                         self.deadline, plans_until)
             change_list = _changes_of(task, changes)
-            _verify(self.domain, self.problem, change_list, plan, space)
+            _verify(self.domain, self.problem, change_list, plan, space, options)
             self.excuses.append(Excuse(change_list, space.cost(changes),
                                        excuse_state(self.problem.init, change_list), _steps(plan), optimal,
                                        sum(a.cost for a in plan)))
@@ -426,6 +426,12 @@ class _Run:
         self.stats.literal_excuse = [str(c) for c in report.excuse.changes]
 
 
+def _mask(space: ChangeSpace, changes: list[Change]) -> int:
+    """The change set of ``changes`` over ``space``'s atoms."""
+    index = {atom: i for i, atom in enumerate(space.task.atoms)}
+    return sum(1 << index[c.atom] for c in changes)
+
+
 def _steps(plan: list[GroundAction]) -> list[PlanStep]:
     return [PlanStep(a.schema, a.args) for a in plan]
 
@@ -440,13 +446,15 @@ def _group_atoms(space: ChangeSpace) -> list[tuple[frozenset[Atom], bool]]:
 
 
 def _verify(domain: Domain, problem: Problem, changes: list[Change], plan: list[GroundAction],
-            space: ChangeSpace) -> None:
+            space: ChangeSpace, options: ExcuseOptions | None = None) -> None:
     """Refuse to return an excuse the independent checker rejects (a bug)."""
     steps = [PlanStep(a.schema, a.args) for a in plan]
     groups = _group_atoms(space)
     if not changes:
         validated(domain, problem, steps, "the robot plan")
         return
-    problems = check_excuse(domain, problem, changes, steps, groups)
+    fixed = options.fixed_predicates(domain) if options is not None else ()
+    costs = options.costs if options is not None else None
+    problems = check_excuse(domain, problem, changes, steps, groups, fixed, costs, space.cost(_mask(space, changes)))
     if problems:
         raise RuntimeError("internal check failed for excuse " + " ".join(map(str, changes)) + ": " + "; ".join(problems))
