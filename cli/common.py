@@ -220,6 +220,8 @@ def check_output_folder(folder: "Path", option: str) -> None:
         if folder.exists() and not folder.is_dir():
             raise OutputError(f"{option}: is a file, expected a folder (the file is kept)", Location(str(folder)))
         existing = next((p for p in [folder, *folder.parents] if p.exists()), Path("."))
+        if not existing.is_dir():
+            raise OutputError(f"{option}: {existing} is a file, expected a folder", Location(str(folder)))
         writable = os.access(existing, os.W_OK | os.X_OK)
     except (OSError, RuntimeError) as exc:
         raise OutputError(f"{option}: cannot use it as a folder ({getattr(exc, 'strerror', None) or exc})",

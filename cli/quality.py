@@ -26,7 +26,7 @@ def quality(
     = None,
     domains: Annotated[Path | None, typer.Option("--domains", metavar="DIR",
                                                  help="Each kitchen's human.pddl, the reference for learning "
-                                                      "(default: data/domains beside --demos' data).")] = None,
+                                                      "(default: the domains folder beside --demos).")] = None,
     traces: Annotated[list[Path] | None, typer.Option("--traces", metavar="DIR",
                                                        help="Also every source and scenario: an independent trace "
                                                             "source DIR/SCENARIO/CONDITION/*.csv (repeatable), "
@@ -47,8 +47,8 @@ def quality(
     from guided_lfd.paths import data_root, require
 
     root = data_root(None, "data/demos")
+    domains = domains or (demos.parent / "domains" if demos is not None else root / "data" / "domains")
     demos = demos or root / "data" / "demos"
-    domains = domains or root / "data" / "domains"
     require(demos, domains, *(traces or []), hint="run from the checkout, or give --demos and --domains")
     sys.stdout.write(quality_markdown(quality_report(demos, domains)))
     if traces:

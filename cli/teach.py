@@ -27,7 +27,9 @@ class _Prompted:
             except typer.Abort as exc:
                 if isinstance(exc.__context__, EOFError):
                     return None  # end of input (Ctrl-D, a closed pipe): the demonstrator stopped
-                raise KeyboardInterrupt from None  # Ctrl-C: interrupted, as anywhere else
+                # Ctrl-C (or SIGTERM, raised as Terminated): interrupted, as anywhere else.
+                raise (exc.__context__ if isinstance(exc.__context__, KeyboardInterrupt)
+                       else KeyboardInterrupt()) from None
             if not answer:
                 return None
             try:

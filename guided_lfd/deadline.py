@@ -67,9 +67,10 @@ def checked_time_limit(value: float | None, name: str = "--time-limit") -> float
 
     if value is None:
         return None
-    if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value) \
-            or value <= 0 or value > MAX_TIME_LIMIT:
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or not value <= MAX_TIME_LIMIT \
+            or not math.isfinite(value) or value <= 0:
         shown = f"{value:g}" if isinstance(value, float) else repr(value)
+        shown = shown if len(shown) <= 24 else shown[:20] + "..."
         raise OptionError(f"{name} {shown}: expected a number of seconds > 0 and <= {MAX_TIME_LIMIT:g}")
     return float(value)
 

@@ -18,9 +18,10 @@ that does (its request is those atoms).
 
 from __future__ import annotations
 
+from contextlib import contextmanager
 from dataclasses import dataclass, field, replace
 from pathlib import Path
-from typing import Any, Callable, Protocol
+from typing import Any, Callable, Iterator, Protocol
 
 from guided_lfd.demonstration.vocabulary import KITCHEN, HandVocabulary, infer_vocabulary
 from guided_lfd.excuse.change import Change, excuse_state
@@ -397,9 +398,18 @@ def teach(robot: Domain, problem: Problem, demonstrator: Demonstrator, out: Path
     ``out/robot.pddl`` is the robot's domain after each round;
     ``session.json`` and ``session.md`` are written by the caller.
     """
+    options = _prepare_session(robot, problem, demonstrator, out, options or ExcuseOptions(), human)
+    with replacing_previous_session(out):
+        return _rounds(robot, problem, demonstrator, out, max_rounds, options, human, prefer, redundancy, deadline,
+                       on_request)
+
+
+def _rounds(robot: Domain, problem: Problem, demonstrator: Demonstrator, out: Path, max_rounds: int,
+            options: ExcuseOptions, human: Domain | None, prefer: bool, redundancy: bool, deadline: float | None,
+            on_request: Callable[[Round], None] | None) -> TeachSession:
+    """The session's rounds, then its judgement on the original task (see :func:`teach`)."""
     from guided_lfd.errors import GuidedLfdError, SearchTimeout
 
-    options = _prepare_session(robot, problem, demonstrator, out, options or ExcuseOptions(), human)
     if human is not None:
         options = replace(options, fixed_from=human, all_minimal=options.all_minimal or prefer)
     state, current, rounds = problem.init, robot, []
@@ -490,9 +500,8 @@ def _prepare_session(robot: Domain, problem: Problem, demonstrator, out: Path, o
             check_human_model(model, problem)
             check_model_fits(robot, model, option)
     check_option_names(robot, options)
-    previous = check_session_folder(out, problem)
+    check_session_folder(out, problem)
     _make_folder(out)
-    _clear_previous_session(out, previous)
     return options
 
 
@@ -549,15 +558,30 @@ def _check_same_task(out: Path, problem: Problem, refuse) -> None:
         refuse(f"holds a session of another task ({earlier})")
 
 
-def _clear_previous_session(out: Path, previous: list[Path]) -> None:
-    """Remove what a previous session of the task left in ``out`` (checked by :func:`check_session_folder`)."""
+@contextmanager
+def replacing_previous_session(out: Path) -> Iterator[None]:
+    """Set aside what a previous session of the task left in ``out`` (checked by :func:`check_session_folder`)
+    while the new one runs: it is deleted when the new one ends, and put back as it was if the new one is
+    interrupted (Ctrl-C, SIGTERM), so an interrupted run loses nothing."""
     import shutil
+    import tempfile
 
+    previous = sorted(out.iterdir()) if out.is_dir() else []
+    aside = Path(tempfile.mkdtemp(prefix=f".{out.name}.previous-", dir=out.parent)) if previous else None
     for entry in previous:
-        if entry.is_dir():
-            shutil.rmtree(entry)
-        else:
-            entry.unlink(missing_ok=True)
+        entry.rename(aside / entry.name)
+    try:
+        yield
+    except KeyboardInterrupt:
+        if aside is not None:
+            for entry in out.iterdir():
+                shutil.rmtree(entry) if entry.is_dir() and not entry.is_symlink() else entry.unlink()
+            for entry in aside.iterdir():
+                entry.rename(out / entry.name)
+        raise
+    finally:
+        if aside is not None:
+            shutil.rmtree(aside, ignore_errors=True)
 
 
 def _make_folder(folder: Path) -> Path:

@@ -43,6 +43,8 @@ def test_quality_and_demos_find_the_shipped_data_from_elsewhere(runner, app, els
     (["bench", "run", "--semantics", "nope"], EXIT_BAD_OPTION, "unknown semantics 'nope'"),
     (["bench", "run", "--time-limit", "nan"], EXIT_BAD_OPTION, "--time-limit nan: expected a number of seconds"),
     (["bench", "run", "--results", "taken"], EXIT_OUTPUT, "taken: output error: --results: is a file"),
+    (["demos", "taken/traces"], EXIT_OUTPUT, "OUT: taken is a file, expected a folder"),
+    (["study", "--out", "taken/results"], EXIT_OUTPUT, "--out: taken is a file, expected a folder"),
 ])
 def test_bad_data_and_outputs_are_one_line_errors_and_nothing_is_replaced(runner, app, elsewhere, args, code,
                                                                         message):
@@ -53,3 +55,14 @@ def test_bad_data_and_outputs_are_one_line_errors_and_nothing_is_replaced(runner
     assert result.exit_code == code, result.output
     assert message in result.stderr and len(result.stderr.strip().splitlines()) == 1, result.stderr
     assert (elsewhere / "taken").read_text() == "mine"
+
+
+def test_quality_takes_the_domains_beside_the_demos_it_is_given(runner, app, elsewhere):
+    """``--demos`` elsewhere without ``--domains``: the domains folder beside it, named when missing (it took the
+    checkout's without a word)."""
+    import shutil
+
+    shutil.copytree(ROOT / "data" / "demos" / "kitchen-1", elsewhere / "data" / "demos" / "kitchen-1")
+    result = runner.invoke(app, ["quality", "--demos", str(elsewhere / "data" / "demos")])
+    assert result.exit_code == EXIT_INPUT_FILE
+    assert f"{elsewhere / 'data' / 'domains'}: input error: not found" in result.stderr

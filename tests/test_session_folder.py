@@ -97,3 +97,28 @@ def test_teach_ends_within_its_time_limit_whatever_phase_it_is_in(tmp_path):
     took = time.monotonic() - start
     assert proc.returncode == EXIT_TIME_LIMIT, proc.stderr
     assert took < 3.0, f"{took:.1f} s for --time-limit 2"
+
+
+def test_an_interrupted_session_puts_the_previous_one_back(tmp_path):
+    """Ctrl-C (or SIGTERM) during a second session of the task: the first session's files are as they were
+    (it was deleted before the first round: only the interrupted round's excuse.json stayed)."""
+    import pytest
+
+    from guided_lfd.pddl.reader import parse_domain, parse_task
+    from guided_lfd.teach import SimulatedHuman, teach
+
+    robot, problem = parse_task(ROBOT, PROBLEM)
+    human = SimulatedHuman(parse_domain(HUMAN), robot=robot)
+    session = tmp_path / "session"
+    teach(robot, problem, human, session)
+    (session / "session.json").write_text('{"problem": "problem.pddl"}')  # as the command line writes it
+    before = {p.relative_to(session): p.read_bytes() for p in session.rglob("*") if p.is_file()}
+
+    def interrupt(rnd) -> None:
+        raise KeyboardInterrupt
+
+    with pytest.raises(KeyboardInterrupt):
+        teach(robot, problem, human, session, on_request=interrupt)
+    after = {p.relative_to(session): p.read_bytes() for p in session.rglob("*") if p.is_file()}
+    assert after == before
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["session"]  # nothing set aside is left behind

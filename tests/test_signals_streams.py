@@ -104,3 +104,41 @@ def test_ctrl_c_at_the_teach_prompt_is_an_interruption(monkeypatch):
     monkeypatch.setattr("sys.stdin", Interrupted())
     with pytest.raises(KeyboardInterrupt):
         _Prompted().demonstrate(None, None, None, None)
+
+
+def test_sigterm_at_the_teach_prompt_is_termination_not_an_interruption(monkeypatch):
+    """click turns whatever interrupts its prompt into Abort: SIGTERM (raised as Terminated) must stay itself,
+    so that the run ends with 143, not 130 (found by review)."""
+    import io
+
+    import pytest
+
+    from cli.teach import _Prompted
+    from guided_lfd.errors import Terminated
+
+    class Killed(io.StringIO):
+        def readline(self, *args: object) -> str:
+            raise Terminated
+
+    monkeypatch.setattr("sys.stdin", Killed())
+    with pytest.raises(Terminated):
+        _Prompted().demonstrate(None, None, None, None)
+
+
+def test_sigterm_stops_a_benchmark_run_at_once_and_records_no_interrupted_run(tmp_path):
+    """``bench run`` waited for every queued run after SIGTERM (20 s for three depot runs) and recorded the
+    interrupted one as ``crashed``, which a resumed run kept.  Now it ends at once with 143, terminating its
+    runs; the partial results hold only finished runs."""
+    proc = subprocess.Popen([*cli_command(), "bench", "run", "--root", str(ROOT), "--only", "depot-task05",
+                             "--strategies", "baseline", "--stop-after-unfinished", "", "--time-limit", "30",
+                             "--results", str(tmp_path / "results")],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    time.sleep(3.0)
+    start = time.monotonic()
+    proc.send_signal(signal.SIGTERM)
+    _, err = proc.communicate(timeout=60)
+    assert proc.returncode == EXIT_TERMINATED, err
+    assert time.monotonic() - start < 5
+    partial = tmp_path / "results" / "results.partial.csv"
+    rows = partial.read_text().splitlines()[1:] if partial.exists() else []
+    assert not [r for r in rows if "crashed" in r or "interrupted" in r], rows

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import sys
+import threading
 import time
 from pathlib import Path
 from typing import Callable, Iterable
@@ -42,6 +43,14 @@ def command_line(task: BenchTask, strategy: str, semantics: str, time_limit: flo
     return cmd
 
 
+#: The status of a run the benchmark's own stop interrupted (never written to the results).
+INTERRUPTED = "interrupted"
+_STOP = threading.Event()
+_RUNNING: set = set()  # the guided-lfd processes running now
+_RUNNING_LOCK = threading.Lock()
+_EXIT_INTERRUPTED, _EXIT_TERMINATED = 130, 143
+
+
 def run_one(task: BenchTask, strategy: str, semantics: str, time_limit: float,
             memory_limit_mb: int | None = None, workdir: Path | None = None) -> ResultRow:
     """One whole run of ``guided-lfd excuse`` in its own process; its result row (never raises).
@@ -67,6 +76,8 @@ def run_one(task: BenchTask, strategy: str, semantics: str, time_limit: float,
     # The memory cap is set on the started process (prlimit), not in a pre-exec hook:
     # those are unsafe while other threads run, and the local executor is threads.
     proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    with _RUNNING_LOCK:
+        _RUNNING.add(proc)
     if memory_limit_mb:
         cap_memory(proc.pid, memory_limit_mb)
     try:
@@ -76,6 +87,12 @@ def run_one(task: BenchTask, strategy: str, semantics: str, time_limit: float,
         proc.kill()
         proc.communicate()
         code, stdout, stderr = None, "", ""
+    finally:
+        with _RUNNING_LOCK:
+            _RUNNING.discard(proc)
+    if _STOP.is_set() or code in (_EXIT_INTERRUPTED, _EXIT_TERMINATED, -2, -15):
+        row.status = INTERRUPTED  # the benchmark was stopped under it: no result, not recorded
+        return row
     row.wall_s, row.exit_code = round(time.perf_counter() - start, 4), code
     try:
         doc = json.loads(stdout)
@@ -163,10 +180,14 @@ def run_chain(chain: list[Run], time_limit: float, memory_limit_mb: int | None =
         key = (task.id, strategy, sem)
         if previous and key in previous:
             row, fresh = previous[key], False
+        elif stopped():
+            break  # the benchmark is being stopped (Ctrl-C, SIGTERM): start nothing more
         elif stopped_at is not None:
             row, fresh = not_run(task, strategy, sem, f"not run: {stopped_at} was not finished"), True
         else:
             row, fresh = run_one(task, strategy, sem, time_limit, memory_limit_mb), True
+            if row.status == INTERRUPTED:
+                break
         if stop and stopped_at is None and row.status not in SOLVED:
             stopped_at = task.task
         rows.append(row)
@@ -203,7 +224,6 @@ def run_suite(
     done = {r.key: r for r in previous or []}
     if executor == "dask":
         return _run_dask(work, time_limit, scheduler, on_row, memory_limit_mb, done, stopping)
-    import threading
     from concurrent.futures import ThreadPoolExecutor
 
     lock = threading.Lock()
@@ -214,12 +234,33 @@ def run_suite(
                 on_row(row)
 
     rows: list[ResultRow] = []
-    with ThreadPoolExecutor(max_workers=max(1, jobs)) as pool:
+    _STOP.clear()
+    pool = ThreadPoolExecutor(max_workers=max(1, jobs))
+    try:
         futures = [pool.submit(run_chain, chain, time_limit, memory_limit_mb, done, report,
                                chain[0][1] in stopping) for chain in work]
         for fut in futures:
             rows.extend(fut.result())
+    except KeyboardInterrupt:
+        stop_running()
+        raise
+    finally:
+        pool.shutdown(wait=True, cancel_futures=True)
     return sorted(rows, key=lambda r: (r.id, r.semantics, r.strategy))
+
+
+def stopped() -> bool:
+    """Whether :func:`stop_running` was called (a function, so that a chain pickled for Dask names it)."""
+    return _STOP.is_set()
+
+
+def stop_running() -> None:
+    """Stop the benchmark at once (Ctrl-C, SIGTERM): no run starts any more, the running ones are terminated,
+    and their rows are not recorded (a resumed run makes them again)."""
+    _STOP.set()
+    with _RUNNING_LOCK:
+        for proc in _RUNNING:
+            proc.terminate()
 
 
 def _run_dask(work, time_limit, scheduler, on_row, memory_limit_mb, done, stopping):

@@ -104,7 +104,7 @@ def read_suite(path: Path, root: Path) -> list[BenchTask]:
 
     out = []
     try:
-        with open(path, newline="", encoding="utf-8") as fh:
+        with open(path, newline="", encoding="utf-8-sig") as fh:  # -sig: a spreadsheet's byte-order mark
             reader = csv.DictReader(fh)
             missing = [c for c in SUITE_COLUMNS if c not in (reader.fieldnames or [])]
             if missing:
