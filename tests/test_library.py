@@ -119,7 +119,7 @@ def test_bad_excuse_options_are_option_errors(options, message):
     assert message in str(info.value)
 
 
-@pytest.mark.parametrize("limit", [float("inf"), 1e300, float("nan"), -1.0])
+@pytest.mark.parametrize("limit", [float("inf"), 1e300, float("nan"), -1.0, 10**400])
 def test_a_plan_time_limit_out_of_range_is_an_option_error(limit):
     from guided_lfd.errors import OptionError
 

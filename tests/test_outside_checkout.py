@@ -66,3 +66,12 @@ def test_quality_takes_the_domains_beside_the_demos_it_is_given(runner, app, els
     result = runner.invoke(app, ["quality", "--demos", str(elsewhere / "data" / "demos")])
     assert result.exit_code == EXIT_INPUT_FILE
     assert f"{elsewhere / 'data' / 'domains'}: input error: not found" in result.stderr
+
+
+def test_a_suite_csv_saved_with_a_byte_order_mark_is_read(tmp_path):
+    """A spreadsheet saves CSV with a byte-order mark: the first column is still ``id``."""
+    from guided_lfd.benchmark import read_suite
+
+    text = (ROOT / "benchmarks" / "suite.csv").read_text(encoding="utf-8")
+    (tmp_path / "suite.csv").write_text("\ufeff" + text, encoding="utf-8")
+    assert read_suite(tmp_path / "suite.csv", ROOT) == read_suite(ROOT / "benchmarks" / "suite.csv", ROOT)
