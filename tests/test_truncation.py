@@ -50,3 +50,9 @@ def test_a_search_the_time_limit_ended_says_the_list_may_not_be_all():
     report.statistics.incomplete = True
     assert cut_short(report) == ["the time limit ended the search: the excuses listed are minimal, but maybe not "
                                  "all of them"]
+
+
+def test_a_one_step_plan_is_one_step(runner, app):
+    """The text said "(1 steps, ...)" (issue #27)."""
+    result = runner.invoke(app, ["excuse", *TASK])
+    assert "then the robot's own plan (1 step, optimal, validated):" in result.stdout

@@ -95,7 +95,7 @@ def excuse_text(report: ExcuseReport, prob: Problem, spellings: dict[str, str]) 
     if report.status is ExcuseStatus.ALREADY_SOLVABLE:
         plan = report.robot_plan or []
         lines.append(f"{name}: already solvable, no excuse needed (empty excuse).")
-        lines.append(f"Robot plan ({len(plan)} steps{_cost_words(report.robot_plan_cost, prob)}, validated):")
+        lines.append(f"Robot plan ({_steps_words(len(plan))}{_cost_words(report.robot_plan_cost, prob)}, validated):")
         lines += [f"  {i}. {step}" for i, step in enumerate(plan, 1)]
         return "\n".join(lines) + "\n"
     if not report.excuses:
@@ -114,12 +114,17 @@ def excuse_text(report: ExcuseReport, prob: Problem, spellings: dict[str, str]) 
         for c in e.changes:
             lines.append(f"  {describe_change(c, spellings):<{width}}   {c}")
         kind = "optimal, validated" if e.plan_optimal else "validated"
-        lines.append(f"then the robot's own plan ({len(e.plan)} steps{_cost_words(e.plan_cost, prob)}, {kind}):")
+        lines.append(f"then the robot's own plan ({_steps_words(len(e.plan))}{_cost_words(e.plan_cost, prob)}, {kind}):")
         lines += [f"  {i}. {step}" for i, step in enumerate(e.plan, 1)]
         if k < total:
             lines.append("")
     lines += [f"({note})" for note in cut_short(report)]
     return "\n".join(lines) + "\n"
+
+
+def _steps_words(n: int) -> str:
+    """``1 step``, ``2 steps``."""
+    return f"{n} step" if n == 1 else f"{n} steps"
 
 
 def cut_short(report: ExcuseReport) -> list[str]:
