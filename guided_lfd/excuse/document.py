@@ -23,7 +23,7 @@ def excuse_summary(report: ExcuseReport, spellings: dict[str, str]) -> str:
     """Why no excuse is given, in one line (empty when one is)."""
     if report.status is ExcuseStatus.NONE:
         fixed = report.statistics.fixed_predicates or []
-        while_fixed = f" while {', '.join(fixed)} stay fixed" if fixed else ""
+        while_fixed = f" with {', '.join(fixed)} held fixed" if fixed else ""
         if report.unachievable_goals:
             goals = ", ".join(str(g) for g in report.unachievable_goals)
             return (f"no excuse exists: no robot skill achieves {goals}{while_fixed}, and no change of the initial "
