@@ -203,7 +203,8 @@ def _one_line_usage_errors() -> None:
     def show(self, file=None) -> None:
         out = file or sys.stderr
         command = self.ctx.command_path if getattr(self, "ctx", None) is not None else "guided-lfd"
-        message = " ".join(self.format_message().split())
+        # pydantic's wording inside typer's ("Value error, 'x' is not one of ..."): the reason alone.
+        message = " ".join(self.format_message().split()).replace(": Value error, ", ": ")
         bad_value = isinstance(self, click_exceptions.BadParameter) and not isinstance(
             self, click_exceptions.MissingParameter)
         kind = "option error" if bad_value else "usage error"

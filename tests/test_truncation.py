@@ -51,17 +51,3 @@ def test_a_search_the_time_limit_ended_says_the_list_may_not_be_all():
     assert cut_short(report) == ["the time limit ended the search: the excuses listed are minimal, but maybe not "
                                  "all of them"]
 
-
-def test_a_one_step_plan_is_one_step(runner, app):
-    """The text said "(1 steps, ...)" (issue #27)."""
-    result = runner.invoke(app, ["excuse", *TASK])
-    assert "then the robot's own plan (1 step, optimal, validated):" in result.stdout
-
-
-def test_no_excuse_with_a_fixed_predicate_says_it_was_held_fixed(runner, app):
-    """It read "while open stay fixed" (issue #27)."""
-    from conftest import kitchen
-
-    result = runner.invoke(app, ["excuse", *kitchen(1), "--fixed", "open"])
-    assert result.exit_code == 11
-    assert " with open held fixed" in result.stderr
