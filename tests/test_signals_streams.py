@@ -11,9 +11,11 @@ import signal
 import subprocess
 import time
 
+import pytest
+
 from conftest import ROOT
 from guided_lfd.benchmark import cli_command
-from guided_lfd.errors import EXIT_INPUT_FILE, EXIT_OK, EXIT_OUTPUT, EXIT_TERMINATED
+from guided_lfd.errors import EXIT_INPUT_FILE, EXIT_OK, EXIT_OUTPUT, EXIT_TERMINATED, Terminated
 
 KITCHEN = ROOT / "data" / "domains" / "kitchen-1"
 EXCUSE = [*cli_command(), "excuse", str(KITCHEN / "robot.pddl"), str(KITCHEN / "problem.pddl")]
@@ -30,6 +32,16 @@ def _run(args: list[str], close: int | None = None, broken_stdout: bool = False)
     if broken_stdout:
         os.close(stdout)
     return proc.returncode, proc.stderr
+
+
+def _terminated_after(args: list[str], seconds: float) -> tuple[int, str, float]:
+    """Start ``args``, send SIGTERM after ``seconds``: (exit code, stderr, seconds from the signal to the end)."""
+    proc = subprocess.Popen(args, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    time.sleep(seconds)
+    start = time.monotonic()
+    proc.send_signal(signal.SIGTERM)
+    _, err = proc.communicate(timeout=60)
+    return proc.returncode, err, time.monotonic() - start
 
 
 def test_a_closed_stdout_is_an_output_error_in_one_line():
@@ -62,16 +74,11 @@ def test_sigterm_ends_a_run_as_ctrl_c_does_with_its_own_code_and_nothing_written
     robot = robot_domain_file(task, tmp_path)
     out = tmp_path / "out" / "excuse.json"
     out.parent.mkdir()
-    proc = subprocess.Popen([*cli_command(), "excuse", str(robot), task.problem_file, "--strategy", "baseline",
-                             "--time-limit", "100", "--quiet", "--json", "-o", str(out)],
-                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    time.sleep(2.0)
-    start = time.monotonic()
-    proc.send_signal(signal.SIGTERM)
-    _, err = proc.communicate(timeout=60)
-    assert proc.returncode == EXIT_TERMINATED, err
+    code, err, took = _terminated_after([*cli_command(), "excuse", str(robot), task.problem_file, "--strategy",
+                                         "baseline", "--time-limit", "100", "--quiet", "--json", "-o", str(out)], 2.0)
+    assert code == EXIT_TERMINATED, err
     assert err == "terminated (SIGTERM)\n"
-    assert time.monotonic() - start < 10
+    assert took < 10
     assert list(out.parent.iterdir()) == []
 
 
@@ -90,38 +97,20 @@ def test_the_teach_prompt_treats_end_of_input_as_stop_and_checks_a_path_like_the
     assert "not a path: OSError" in err and "File name too long" in err
 
 
-def test_ctrl_c_at_the_teach_prompt_is_an_interruption(monkeypatch):
+@pytest.mark.parametrize("signal_raised", [KeyboardInterrupt, Terminated])
+def test_ctrl_c_or_sigterm_at_the_teach_prompt_stays_what_it_is(monkeypatch, signal_raised):
+    """click turns whatever interrupts its prompt into Abort: Ctrl-C must stay an interruption (130), and
+    SIGTERM, raised as Terminated, termination (143; it became 130, found by review)."""
     import io
-
-    import pytest
 
     from cli.teach import _Prompted
 
-    class Interrupted(io.StringIO):
+    class Stopped(io.StringIO):
         def readline(self, *args: object) -> str:
-            raise KeyboardInterrupt
+            raise signal_raised
 
-    monkeypatch.setattr("sys.stdin", Interrupted())
-    with pytest.raises(KeyboardInterrupt):
-        _Prompted().demonstrate(None, None, None, None)
-
-
-def test_sigterm_at_the_teach_prompt_is_termination_not_an_interruption(monkeypatch):
-    """click turns whatever interrupts its prompt into Abort: SIGTERM (raised as Terminated) must stay itself,
-    so that the run ends with 143, not 130 (found by review)."""
-    import io
-
-    import pytest
-
-    from cli.teach import _Prompted
-    from guided_lfd.errors import Terminated
-
-    class Killed(io.StringIO):
-        def readline(self, *args: object) -> str:
-            raise Terminated
-
-    monkeypatch.setattr("sys.stdin", Killed())
-    with pytest.raises(Terminated):
+    monkeypatch.setattr("sys.stdin", Stopped())
+    with pytest.raises(signal_raised):
         _Prompted().demonstrate(None, None, None, None)
 
 
@@ -129,16 +118,11 @@ def test_sigterm_stops_a_benchmark_run_at_once_and_records_no_interrupted_run(tm
     """``bench run`` waited for every queued run after SIGTERM (20 s for three depot runs) and recorded the
     interrupted one as ``crashed``, which a resumed run kept.  Now it ends at once with 143, terminating its
     runs; the partial results hold only finished runs."""
-    proc = subprocess.Popen([*cli_command(), "bench", "run", "--root", str(ROOT), "--only", "depot-task05",
-                             "--strategies", "baseline", "--stop-after-unfinished", "", "--time-limit", "30",
-                             "--results", str(tmp_path / "results")],
-                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    time.sleep(3.0)
-    start = time.monotonic()
-    proc.send_signal(signal.SIGTERM)
-    _, err = proc.communicate(timeout=60)
-    assert proc.returncode == EXIT_TERMINATED, err
-    assert time.monotonic() - start < 5
+    code, err, took = _terminated_after([*cli_command(), "bench", "run", "--root", str(ROOT), "--only",
+                                         "depot-task05", "--strategies", "baseline", "--stop-after-unfinished", "",
+                                         "--time-limit", "30", "--results", str(tmp_path / "results")], 3.0)
+    assert code == EXIT_TERMINATED, err
+    assert took < 5
     partial = tmp_path / "results" / "results.partial.csv"
     rows = partial.read_text().splitlines()[1:] if partial.exists() else []
     assert not [r for r in rows if "crashed" in r or "interrupted" in r], rows
