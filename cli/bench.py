@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import sys
 from pathlib import Path
 from typing import Annotated
 
@@ -89,7 +88,7 @@ def bench(
         from guided_lfd.io import write_text
 
         write_text(results / "summary.md", text)
-        sys.stdout.write(text + "\n")
+        write_text("-", text + "\n")
 
 
 def _paths(step: str, root: Path | None, ipc: Path | None, suite: Path | None,
@@ -104,11 +103,24 @@ def _paths(step: str, root: Path | None, ipc: Path | None, suite: Path | None,
     results = results or root / "benchmarks" / "results"
     if step == "generate":
         require(ipc, root / "data" / "domains")
+        _not_inside(suite, [ipc, root / "data" / "domains"], "--suite")
     elif step != "report":
         require(suite, hint="give an existing --suite CSV, or --root DIR")
     if step != "generate":
         check_output_folder(results, "--results")
+        _not_inside(suite, [results], "--suite")
+    if step == "report":
+        require(results / "results.csv", hint="run the benchmark first (bench run), or give --results DIR")
     return root, ipc, suite, results
+
+
+def _not_inside(path: Path, folders: list[Path], option: str) -> None:
+    """Refuse (exit 37) a file the step reads or writes inside a folder it writes or reads (one would replace
+    the other: a suite written over a domain file, results over the suite)."""
+    for folder in folders:
+        if folder.exists() and path.resolve().is_relative_to(folder.resolve()):
+            raise OptionError(f"{option} {path}: lies in {folder}, which this step also uses; expected a file "
+                              "elsewhere")
 
 
 def _check_options(time_limit: float, jobs: int, strategies: str, semantics: str) -> None:

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import sys
 from pathlib import Path
 from typing import Annotated
 
@@ -50,6 +49,13 @@ def quality(
     domains = domains or (demos.parent / "domains" if demos is not None else root / "data" / "domains")
     demos = demos or root / "data" / "demos"
     require(demos, domains, *(traces or []), hint="run from the checkout, or give --demos and --domains")
-    sys.stdout.write(quality_markdown(quality_report(demos, domains)))
+    from guided_lfd.errors import InputFileError, Location
+    from guided_lfd.io import write_text
+
+    for folder in traces or []:
+        if not folder.is_dir():
+            raise InputFileError("expected a folder of trace sources (SCENARIO/CONDITION/*.csv)", Location(str(folder)))
+    text = quality_markdown(quality_report(demos, domains))
     if traces:
-        sys.stdout.write("\n## All sources\n\n" + sources_markdown(sources_report(demos, domains, traces)))
+        text += "\n## All sources\n\n" + sources_markdown(sources_report(demos, domains, traces))
+    write_text("-", text)

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import sys
 from pathlib import Path
 from typing import Annotated
 
@@ -49,5 +48,7 @@ def study(
     write_artefacts(out, kitchens)
     if write_report(out, paper, kitchens) is None:
         ui.info_plain(f"plots skipped: {PLOTS_HINT}")
-    sys.stdout.write(side_by_side(paper, kitchens))
+    from guided_lfd.io import write_text
+
+    write_text("-", side_by_side(paper, kitchens))
     ui.info(f"wrote {out / 'study.md'}")

@@ -159,7 +159,10 @@ def teach(
     if prefer not in (None, "demonstration"):
         raise errors.OptionError(f"--prefer {prefer}: expected 'demonstration'")
     time_limit = check_time_limit(time_limit)
-    _check_session(session, [robot, problem, simulate, human_model, *(str(d) for d in demo or [])])
+    from guided_lfd.demonstration.trace import default_state_path
+
+    _check_session(session, [robot, problem, simulate, human_model, *(str(d) for d in demo or []),
+                             *(default_state_path(str(d)) for d in demo or [])])
     deadline = deadline_after(time_limit, started_at())  # the whole run: reading, every round, re-planning
     with watchdog(deadline, "reading the input"):
         robot_domain, task = parse_task(robot, problem)
@@ -173,7 +176,7 @@ def teach(
     for human_domain in (model, human.human if human else None):
         if human_domain is not None:  # a model of another world: exit 34 before any round
             check_human_model(human_domain, task)
-    prompt = sys.stdin.isatty() and not json_out and human is None
+    prompt = sys.stdin is not None and sys.stdin.isatty() and not json_out and human is None
     demonstrator = _Chain(human, list(demo or []), prompt=prompt)
 
     def show(rnd) -> None:

@@ -44,17 +44,26 @@ def test_quality_and_demos_find_the_shipped_data_from_elsewhere(runner, app, els
     (["bench", "run", "--time-limit", "nan"], EXIT_BAD_OPTION, "--time-limit nan: expected a number of seconds"),
     (["bench", "run", "--results", "taken"], EXIT_OUTPUT, "taken: output error: --results: is a file"),
     (["demos", "taken/traces"], EXIT_OUTPUT, "OUT: taken is a file, expected a folder"),
+    (["bench", "generate", "--ipc", ".", "--suite", "taken"], EXIT_BAD_OPTION, "--suite taken: lies in ."),
+    (["bench", "run", "--suite", "res/results.csv", "--results", "res"], EXIT_BAD_OPTION,
+     "--suite res/results.csv: lies in res"),
+    (["bench", "report", "--results", "empty"], EXIT_INPUT_FILE, "empty/results.csv: input error: not found"),
+    (["quality", "--traces", "taken"], EXIT_INPUT_FILE, "taken: input error: expected a folder of trace sources"),
     (["study", "--out", "taken/results"], EXIT_OUTPUT, "--out: taken is a file, expected a folder"),
 ])
 def test_bad_data_and_outputs_are_one_line_errors_and_nothing_is_replaced(runner, app, elsewhere, args, code,
                                                                         message):
     (elsewhere / "taken").write_text("mine")
+    (elsewhere / "res").mkdir()
+    (elsewhere / "empty").mkdir()
+    (elsewhere / "res" / "results.csv").write_text((ROOT / "benchmarks" / "suite.csv").read_text())
     (elsewhere / "bad.csv").write_text("id,domain\nx,y\n")
     (elsewhere / "short.csv").write_text("id,domain,task,removed_action,domain_file,problem_file,fixed_from\na,b\n")
     result = runner.invoke(app, args)
     assert result.exit_code == code, result.output
     assert message in result.stderr and len(result.stderr.strip().splitlines()) == 1, result.stderr
     assert (elsewhere / "taken").read_text() == "mine"
+    assert (elsewhere / "res" / "results.csv").read_text() == (ROOT / "benchmarks" / "suite.csv").read_text()
 
 
 def test_quality_takes_the_domains_beside_the_demos_it_is_given(runner, app, elsewhere):

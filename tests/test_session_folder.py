@@ -122,3 +122,18 @@ def test_an_interrupted_session_puts_the_previous_one_back(tmp_path):
     after = {p.relative_to(session): p.read_bytes() for p in session.rglob("*") if p.is_file()}
     assert after == before
     assert sorted(p.name for p in tmp_path.iterdir()) == ["session"]  # nothing set aside is left behind
+
+
+def test_the_state_file_beside_a_demonstration_is_an_input_too(runner, app, tmp_path):
+    """A ``--demo`` trace whose state file links into the session folder: the session would replace it (it was
+    deleted; the trace itself was refused already)."""
+    session = tmp_path / "session"
+    assert _teach(runner, app, session).exit_code == 0
+    demo = ROOT / "data" / "demos" / "kitchen-2" / "P1-excuse"
+    (tmp_path / "t.csv").write_text(demo.with_suffix(".csv").read_text())
+    kept = session / "robot.pddl"
+    (tmp_path / "t.state.csv").symlink_to(kept)
+    result = runner.invoke(app, ["teach", ROBOT, PROBLEM, "--demo", str(tmp_path / "t.csv"), "-o", str(session),
+                                 "--quiet"])
+    assert result.exit_code == EXIT_BAD_OPTION and "an input of this run" in result.stderr
+    assert kept.exists()
