@@ -326,12 +326,13 @@ def command(fn: F) -> F:
         except GuidedLfdError as exc:
             ui.error(str(exc))
             raise typer.Exit(exc.exit_code) from None
-        except Terminated:
-            ui.error("terminated (SIGTERM)")
-            raise typer.Exit(EXIT_TERMINATED) from None
-        except KeyboardInterrupt:
-            ui.error("interrupted")
-            raise typer.Exit(EXIT_INTERRUPTED) from None
+        except KeyboardInterrupt as exc:
+            import cli
+
+            terminated = isinstance(exc, Terminated)
+            ui.error("terminated (SIGTERM)" if terminated else "interrupted")
+            cli.interruption_reported = True
+            raise typer.Exit(EXIT_TERMINATED if terminated else EXIT_INTERRUPTED) from None
         except RecursionError:
             ui.error("internal error: input nested too deeply")
             raise typer.Exit(EXIT_INTERNAL) from None

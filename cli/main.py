@@ -259,7 +259,8 @@ def run() -> None:
     cli.run_started = cli.PROCESS_STARTED  # --time-limit counts start-up too
     pause_gc()  # until the command starts its work: see cli/startup.py
     keep_until_exit()
-    signal.signal(signal.SIGTERM, _terminate)
+    signal.signal(signal.SIGTERM, _terminate)  # from here on, as Ctrl-C (see cli/__init__.py for start-up)
+    signal.signal(signal.SIGINT, signal.default_int_handler)
     stdout_was_null = _stdout_is_null()
     try:
         app()
@@ -272,11 +273,20 @@ def run() -> None:
             code = EXIT_OUTPUT
     except KeyboardInterrupt as exc:  # outside a command (its --help, the group's options)
         code = EXIT_TERMINATED if isinstance(exc, Terminated) else EXIT_INTERRUPTED
+    if code in (EXIT_INTERRUPTED, EXIT_TERMINATED) and not cli.interruption_reported:
+        # Stopped while typer parsed the options: typer calls every KeyboardInterrupt 130, without a word.
+        code = EXIT_TERMINATED if _TERMINATED else EXIT_INTERRUPTED
+        _say("terminated (SIGTERM)" if _TERMINATED else "interrupted")
     _end(code)
+
+
+_TERMINATED = False
 
 
 def _terminate(signum: int, frame: Any) -> None:
     """SIGTERM: raised as :class:`~guided_lfd.errors.Terminated` where the process is, to end as Ctrl-C does."""
+    global _TERMINATED
+    _TERMINATED = True
     raise Terminated()
 
 

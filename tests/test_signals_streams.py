@@ -126,3 +126,18 @@ def test_sigterm_stops_a_benchmark_run_at_once_and_records_no_interrupted_run(tm
     partial = tmp_path / "results" / "results.partial.csv"
     rows = partial.read_text().splitlines()[1:] if partial.exists() else []
     assert not [r for r in rows if "crashed" in r or "interrupted" in r], rows
+
+
+@pytest.mark.parametrize("delay", [0.2, 0.5])
+@pytest.mark.parametrize("signum, code, line", [(signal.SIGTERM, EXIT_TERMINATED, "terminated (SIGTERM)"),
+                                                (signal.SIGINT, 130, "interrupted")])
+def test_a_signal_early_in_a_run_is_its_code_and_one_line(delay, signum, code, line):
+    """While typer still parsed the options, SIGTERM was 130 without a word and Ctrl-C in ``import typer`` a
+    traceback (the adversarial round's start-up cases)."""
+    ipc = ROOT / "data" / "benchmarks" / "ipc" / "depot"
+    proc = subprocess.Popen([*cli_command(), "plan", str(ipc / "domain.pddl"), str(ipc / "task05.pddl")],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    time.sleep(delay)
+    proc.send_signal(signum)
+    _, err = proc.communicate(timeout=60)
+    assert (proc.returncode, err) == (code, line + "\n")
