@@ -84,3 +84,21 @@ def test_a_suite_csv_saved_with_a_byte_order_mark_is_read(tmp_path):
     text = (ROOT / "benchmarks" / "suite.csv").read_text(encoding="utf-8")
     (tmp_path / "suite.csv").write_text("\ufeff" + text, encoding="utf-8")
     assert read_suite(tmp_path / "suite.csv", ROOT) == read_suite(ROOT / "benchmarks" / "suite.csv", ROOT)
+
+
+@pytest.mark.parametrize("labels, message", [(None, "cannot read the labels"),
+                                             ("x,y\n1,2\n", "missing column(s) time, hand, activity")])
+def test_a_trace_source_without_good_labels_is_named(runner, app, elsewhere, labels, message):
+    """``quality --traces`` on a tree whose trace lacks its labels, or has labels of another shape: it was
+    ``internal error`` (FileNotFoundError, KeyError)."""
+    import shutil
+
+    folder = elsewhere / "tr" / "kitchen-2" / "cond"
+    folder.mkdir(parents=True)
+    for suffix in (".csv", ".state.csv"):
+        shutil.copy(ROOT / "data" / "demos" / "kitchen-2" / f"P1-complete{suffix}", folder / f"P1-complete{suffix}")
+    if labels is not None:
+        (folder / "P1-complete.labels.csv").write_text(labels)
+    result = runner.invoke(app, ["quality", "--traces", "tr"])
+    assert result.exit_code == EXIT_INPUT_FILE, result.output
+    assert message in result.stderr and "P1-complete.labels.csv" in result.stderr

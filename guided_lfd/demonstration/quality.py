@@ -44,8 +44,7 @@ def segmentation_quality(trace: Path) -> SegmentationQuality:
     """Frame F1 and segment counts of one demonstration with a ``.labels.csv``."""
     demo = load_demonstration(str(trace))
     segments = segment(demo)
-    with open(str(trace).replace(".csv", ".labels.csv"), encoding="utf-8", newline="") as fh:
-        labels = list(csv.DictReader(fh))
+    labels = _labels(Path(str(trace).replace(".csv", ".labels.csv")))
     truth, predicted = [], []
     for row in labels:
         t, hand = float(row["time"]), row["hand"]
@@ -58,6 +57,31 @@ def segmentation_quality(trace: Path) -> SegmentationQuality:
         count += sum(1 for i, a in enumerate(seq) if a != "Idle" and (i == 0 or seq[i - 1] != a))
     return SegmentationQuality(f"{trace.parent.name}/{trace.stem}", frame_f1(truth, predicted), count,
                                sum(1 for s in segments if s.activity != "Idle"))
+
+
+def _labels(path: Path) -> list[dict[str, str]]:
+    """The rows of a ``.labels.csv`` (time, hand, activity); a file missing or not of that shape is an
+    :class:`~guided_lfd.errors.InputFileError` naming it."""
+    from guided_lfd.errors import InputFileError, Location
+
+    try:
+        with open(path, encoding="utf-8", newline="") as fh:
+            reader = csv.DictReader(fh)
+            rows = list(reader)
+    except (OSError, UnicodeDecodeError, csv.Error) as exc:
+        raise InputFileError(f"cannot read the labels ({getattr(exc, 'strerror', None) or exc}); expected a "
+                             ".labels.csv beside each trace", Location(str(path))) from None
+    missing = [c for c in ("time", "hand", "activity") if c not in (reader.fieldnames or [])]
+    if missing:
+        raise InputFileError(f"missing column(s) {', '.join(missing)}; expected time,hand,activity",
+                             Location(str(path), 1))
+    for number, row in enumerate(rows, start=2):
+        try:
+            float(row["time"])
+        except (TypeError, ValueError):
+            raise InputFileError(f"column 'time': {row['time']!r} is not a number", Location(str(path), number)) \
+                from None
+    return rows
 
 
 def _sets(action: ActionSchema, mapping: dict[str, str]):
