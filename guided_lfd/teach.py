@@ -398,8 +398,9 @@ def teach(robot: Domain, problem: Problem, demonstrator: Demonstrator, out: Path
     ``out/robot.pddl`` is the robot's domain after each round;
     ``session.json`` and ``session.md`` are written by the caller.
     """
+    was_there = out.exists()
     options = _prepare_session(robot, problem, demonstrator, out, options or ExcuseOptions(), human)
-    with replacing_previous_session(out):
+    with replacing_previous_session(out, was_there):
         return _rounds(robot, problem, demonstrator, out, max_rounds, options, human, prefer, redundancy, deadline,
                        on_request)
 
@@ -559,10 +560,11 @@ def _check_same_task(out: Path, problem: Problem, refuse) -> None:
 
 
 @contextmanager
-def replacing_previous_session(out: Path) -> Iterator[None]:
+def replacing_previous_session(out: Path, was_there: bool = True) -> Iterator[None]:
     """Set aside what a previous session of the task left in ``out`` (checked by :func:`check_session_folder`)
     while the new one runs: it is deleted when the new one ends, and put back as it was if the new one is
-    interrupted (Ctrl-C, SIGTERM), so an interrupted run loses nothing."""
+    interrupted (Ctrl-C, SIGTERM), so an interrupted run loses nothing and leaves nothing (``was_there``:
+    whether ``out`` existed before the run; if not, it is removed again)."""
     import shutil
     import tempfile
 
@@ -573,11 +575,13 @@ def replacing_previous_session(out: Path) -> Iterator[None]:
     try:
         yield
     except KeyboardInterrupt:
+        for entry in out.iterdir():  # what this run made
+            shutil.rmtree(entry) if entry.is_dir() and not entry.is_symlink() else entry.unlink()
         if aside is not None:
-            for entry in out.iterdir():
-                shutil.rmtree(entry) if entry.is_dir() and not entry.is_symlink() else entry.unlink()
             for entry in aside.iterdir():
                 entry.rename(out / entry.name)
+        elif not was_there:
+            out.rmdir()
         raise
     finally:
         if aside is not None:

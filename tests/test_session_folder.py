@@ -137,3 +137,21 @@ def test_the_state_file_beside_a_demonstration_is_an_input_too(runner, app, tmp_
                                  "--quiet"])
     assert result.exit_code == EXIT_BAD_OPTION and "an input of this run" in result.stderr
     assert kept.exists()
+
+
+def test_an_interrupted_first_session_leaves_no_folder(tmp_path):
+    """It left an empty round-1/ in a folder the run had made (the adversarial round)."""
+    import pytest
+
+    from guided_lfd.pddl.reader import parse_domain, parse_task
+    from guided_lfd.teach import SimulatedHuman, teach
+
+    robot, problem = parse_task(ROBOT, PROBLEM)
+    human = SimulatedHuman(parse_domain(HUMAN), robot=robot)
+
+    def interrupt(rnd) -> None:
+        raise KeyboardInterrupt
+
+    with pytest.raises(KeyboardInterrupt):
+        teach(robot, problem, human, tmp_path / "session", on_request=interrupt)
+    assert list(tmp_path.iterdir()) == []
