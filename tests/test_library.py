@@ -109,9 +109,15 @@ def test_bad_names_and_options_are_the_libraries_one_line_errors():
     ({"time_limit": float("nan")}, "time_limit nan: expected a number of seconds > 0"),
     ({"time_limit": 0}, "time_limit 0: expected a number of seconds > 0"),
     ({"max_size": -1}, "max_size -1: expected a number of changes >= 0"),
+    ({"slack": "2"}, "slack '2': expected a whole cost >= 0"),
+    ({"slack": 1.5}, "slack 1.5: expected a whole cost >= 0"),
+    ({"fixed": "clear"}, "fixed 'clear': expected a list of strings"),
+    ({"costs": [5]}, "costs [5]: expected a list of strings"),
+    ({"invariants_from": "human.pddl"}, "invariants_from: expected a Domain"),
 ])
 def test_bad_excuse_options_are_option_errors(options, message):
-    """They escaped as ValueError and OverflowError (internal errors on the command line's terms; issue #25)."""
+    """They escaped as ValueError, OverflowError, TypeError or AttributeError, or were read letter by letter
+    (``fixed='clear'``): internal errors on the command line's terms (issue #25)."""
     from guided_lfd.errors import OptionError
 
     with pytest.raises(OptionError) as info:

@@ -73,6 +73,16 @@ class ExcuseOptions:
         if self.max_size is not None and (isinstance(self.max_size, bool) or not isinstance(self.max_size, int)
                                           or self.max_size < 0):
             raise OptionError(f"max_size {self.max_size!r}: expected a number of changes >= 0 (or None)")
+        if isinstance(self.slack, bool) or not isinstance(self.slack, int) or self.slack < 0:
+            raise OptionError(f"slack {self.slack!r}: expected a whole cost >= 0")
+        for name in ("fixed", "costs"):
+            value = getattr(self, name)
+            if isinstance(value, str) or not all(isinstance(v, str) for v in value):
+                raise OptionError(f"{name} {value!r}: expected a list of strings (as --{name.rstrip('s')} takes them)")
+        for name in ("invariants_from", "fixed_from"):
+            if getattr(self, name) is not None and not isinstance(getattr(self, name), Domain):
+                raise OptionError(f"{name}: expected a Domain (guided_lfd.read_task or parse_domain), got "
+                                  f"{type(getattr(self, name)).__name__}")
 
     def fixed_predicates(self, domain: Domain) -> list[str]:
         """``fixed`` plus the predicates no action of ``fixed_from`` changes (that ``domain`` has)."""
