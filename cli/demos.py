@@ -33,7 +33,6 @@ def demos(
     byte the shipped data/demos.
     """
     from guided_lfd.demonstration.study_data import render_study
-
     from guided_lfd.paths import data_root, require
 
     root = data_root(None, "data/domains")

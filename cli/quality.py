@@ -42,16 +42,14 @@ def quality(
     against the scenario's human.pddl and the targets of issue 14 missed.
     """
     from guided_lfd.demonstration.quality import quality_markdown, quality_report, sources_markdown, sources_report
-
+    from guided_lfd.errors import InputFileError, Location
+    from guided_lfd.io import write_text
     from guided_lfd.paths import data_root, require
 
     root = data_root(None, "data/demos")
     domains = domains or (demos.parent / "domains" if demos is not None else root / "data" / "domains")
     demos = demos or root / "data" / "demos"
     require(demos, domains, *(traces or []), hint="run from the checkout, or give --demos and --domains")
-    from guided_lfd.errors import InputFileError, Location
-    from guided_lfd.io import write_text
-
     for folder in traces or []:
         if not folder.is_dir():
             raise InputFileError("expected a folder of trace sources (SCENARIO/CONDITION/*.csv)", Location(str(folder)))

@@ -33,9 +33,9 @@ def study(
     the paper's.
     """
     from guided_lfd.reporting import PLOTS_HINT
-    from guided_lfd.study import run_study, side_by_side, write_artefacts, write_report
-
+    from guided_lfd.io import write_text
     from guided_lfd.paths import data_root, require
+    from guided_lfd.study import run_study, side_by_side, write_artefacts, write_report
 
     root = data_root(root, "data/study")
     study_data = root / "data" / "study"
@@ -48,7 +48,5 @@ def study(
     write_artefacts(out, kitchens)
     if write_report(out, paper, kitchens) is None:
         ui.info_plain(f"plots skipped: {PLOTS_HINT}")
-    from guided_lfd.io import write_text
-
     write_text("-", side_by_side(paper, kitchens))
     ui.info(f"wrote {out / 'study.md'}")

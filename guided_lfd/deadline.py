@@ -87,6 +87,15 @@ def remaining(deadline: float | None) -> float | None:
     return None if deadline is None else deadline - time.monotonic()
 
 
+def seconds_left(deadline: float | None, what: str | None = None) -> float | None:
+    """Seconds left before ``deadline`` as a time limit for a call (None: no limit; at least 1 ms, so that the
+    call ends as its own timeout); with ``what``, :class:`SearchTimeout` once the deadline has passed."""
+    if what is not None:
+        check(deadline, what)
+    left = remaining(deadline)
+    return None if left is None else max(0.001, left)
+
+
 def check(deadline: float | None, what: str = "run") -> None:
     """Raise :class:`SearchTimeout` if ``deadline`` has passed."""
     if deadline is not None and time.monotonic() > deadline:

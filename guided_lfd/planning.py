@@ -140,11 +140,9 @@ def _guided_astar(task: GroundTask, init: int | None, actions: list[GroundAction
 def plan_task(domain, problem, search: str = DEFAULT_SEARCH, time_limit_s: float | None = None) -> tuple[GroundTask, PlanResult]:
     """Ground ``problem`` for planning (static atoms pruned) and plan for it; ``time_limit_s`` bounds both (the
     grounding checks it cooperatively, so the limit holds in a thread too, where no watchdog can run)."""
-    from guided_lfd.deadline import check, deadline_after, remaining
+    from guided_lfd.deadline import deadline_after, seconds_left
     from guided_lfd.grounding import ground
 
     deadline = deadline_after(time_limit_s)
     task = ground(domain, problem, fixed=domain.predicates, deadline=deadline)
-    check(deadline, "grounding")
-    left = remaining(deadline)
-    return task, find_plan(task, search=search, time_limit_s=None if left is None else max(0.001, left))
+    return task, find_plan(task, search=search, time_limit_s=seconds_left(deadline, "grounding"))

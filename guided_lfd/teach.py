@@ -486,10 +486,9 @@ def _judge_original(taught: Domain, problem: Problem, rounds: list[Round], statu
 
 def _left(deadline: float | None) -> float | None:
     """Seconds left before ``deadline`` (at least a little: the search then ends as a timeout)."""
-    from guided_lfd.deadline import remaining
+    from guided_lfd.deadline import seconds_left
 
-    left = remaining(deadline)
-    return None if left is None else max(0.001, left)
+    return seconds_left(deadline)
 
 
 def _prepare_session(robot: Domain, problem: Problem, demonstrator, out: Path, options: ExcuseOptions,
@@ -510,9 +509,9 @@ def _prepare_session(robot: Domain, problem: Problem, demonstrator, out: Path, o
 SESSION_FILES = ("robot.pddl", "session.json", "session.md")
 
 
-def check_session_folder(out: Path, problem: Problem) -> list[Path]:
+def check_session_folder(out: Path, problem: Problem) -> None:
     """Refuse (exit 40), before any work, a session folder that is neither new, nor empty, nor a previous session
-    of the same task; return what a previous session left there (it is replaced whole).
+    of the same task (which :func:`replacing_previous_session` then replaces whole).
 
     Nothing the user had is overwritten: a folder holding other files, or a link where the session writes (a
     ``robot.pddl`` linking to the robot's own domain), is refused."""
@@ -524,7 +523,7 @@ def check_session_folder(out: Path, problem: Problem) -> list[Path]:
 
     try:
         if not out.exists():
-            return []
+            return
         if not out.is_dir():
             raise OutputError("is a file, expected a folder for the session", Location(str(out)))
         entries = sorted(out.iterdir())
@@ -539,7 +538,6 @@ def check_session_folder(out: Path, problem: Problem) -> list[Path]:
             refuse(f"holds {entry.name} as a link (the session would write through it)")
     if entries:
         _check_same_task(out, problem, refuse)
-    return entries
 
 
 def _check_same_task(out: Path, problem: Problem, refuse) -> None:

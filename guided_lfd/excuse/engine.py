@@ -15,7 +15,7 @@ from dataclasses import dataclass, field, replace
 from typing import Any
 
 from guided_lfd.deadline import check as check_deadline
-from guided_lfd.deadline import deadline_after, linger, lingering, watchdog
+from guided_lfd.deadline import checked_time_limit, deadline_after, linger, lingering, watchdog
 from guided_lfd.errors import SearchTimeout
 from guided_lfd.excuse.change import Change, excuse_state
 from guided_lfd.excuse.check import check_excuse
@@ -30,7 +30,6 @@ from guided_lfd.excuse.status import ExcuseStatus
 from guided_lfd.excuse.strategies import DEFAULT_STRATEGY, STRATEGIES, Progress, SearchLimits
 from guided_lfd.grounding import GroundAction, GroundTask, bits
 from guided_lfd.optimal import certified_optimal, shorten_plan
-from guided_lfd.deadline import checked_time_limit
 from guided_lfd.pddl.fit import check_model_fits
 from guided_lfd.pddl.model import Atom, Domain, Literal, Problem, pretty_atom
 from guided_lfd.validation import PlanStep, validated
@@ -403,7 +402,7 @@ class _Run:
             plan, optimal = _robot_plan(task, space, oracle, state, outcome.plans[changes], options.optimal_plans,
                                         self.deadline, plans_until)
             change_list = _changes_of(task, changes)
-            _verify(self.domain, self.problem, change_list, plan, space, options)
+            _verify(self.domain, self.problem, change_list, plan, space, options, space.cost(changes))
             self.excuses.append(Excuse(change_list, space.cost(changes),
                                        excuse_state(self.problem.init, change_list), _steps(plan), optimal,
                                        sum(a.cost for a in plan)))
@@ -436,12 +435,6 @@ class _Run:
         self.stats.literal_excuse = [str(c) for c in report.excuse.changes]
 
 
-def _mask(space: ChangeSpace, changes: list[Change]) -> int:
-    """The change set of ``changes`` over ``space``'s atoms."""
-    index = {atom: i for i, atom in enumerate(space.task.atoms)}
-    return sum(1 << index[c.atom] for c in changes)
-
-
 def _steps(plan: list[GroundAction]) -> list[PlanStep]:
     return [PlanStep(a.schema, a.args) for a in plan]
 
@@ -456,8 +449,9 @@ def _group_atoms(space: ChangeSpace) -> list[tuple[frozenset[Atom], bool]]:
 
 
 def _verify(domain: Domain, problem: Problem, changes: list[Change], plan: list[GroundAction],
-            space: ChangeSpace, options: ExcuseOptions | None = None) -> None:
-    """Refuse to return an excuse the independent checker rejects (a bug)."""
+            space: ChangeSpace, options: ExcuseOptions | None = None, cost: int | None = None) -> None:
+    """Refuse to return an excuse the independent checker rejects (a bug); ``cost`` is the search's, which the
+    checker recomputes from the options' ``--cost`` specifications."""
     steps = [PlanStep(a.schema, a.args) for a in plan]
     groups = _group_atoms(space)
     if not changes:
@@ -465,6 +459,6 @@ def _verify(domain: Domain, problem: Problem, changes: list[Change], plan: list[
         return
     fixed = options.fixed_predicates(domain) if options is not None else ()
     costs = options.costs if options is not None else None
-    problems = check_excuse(domain, problem, changes, steps, groups, fixed, costs, space.cost(_mask(space, changes)))
+    problems = check_excuse(domain, problem, changes, steps, groups, fixed, costs, cost)
     if problems:
         raise RuntimeError("internal check failed for excuse " + " ".join(map(str, changes)) + ": " + "; ".join(problems))

@@ -40,11 +40,9 @@ class PredictedDemonstration:
 
 def _left(deadline: float | None) -> float | None:
     """Seconds left before ``deadline`` (None: no limit); :class:`SearchTimeout` once it has passed."""
-    from guided_lfd.deadline import check, remaining
+    from guided_lfd.deadline import seconds_left
 
-    check(deadline, "preferring and reducing excuses")
-    left = remaining(deadline)
-    return None if left is None else max(0.001, left)
+    return seconds_left(deadline, "preferring and reducing excuses")
 
 
 def predict_demonstration(human: Domain, robot: Domain, task: Problem, changes: list[Change],
