@@ -2,12 +2,14 @@
 
 from __future__ import annotations
 
+import signal
 import sys
 import threading
 import time
 from pathlib import Path
 from typing import Callable, Iterable
 
+from guided_lfd.errors import EXIT_INTERRUPTED, EXIT_MEMORY, EXIT_TERMINATED
 from guided_lfd.memory import cap_memory
 from guided_lfd.benchmark.suite import BenchTask, robot_domain_file
 from guided_lfd.benchmark.results import SOLVED, ResultRow
@@ -23,8 +25,6 @@ STOP_AFTER_UNFINISHED = ("baseline",)
 KILL_GRACE_S = 60.0
 
 
-#: Exit code of a run whose memory ran out (see guided_lfd.errors.EXIT_MEMORY).
-_EXIT_MEMORY = 22
 
 
 def cli_command() -> list[str]:
@@ -48,7 +48,6 @@ INTERRUPTED = "interrupted"
 _STOP = threading.Event()
 _RUNNING: set = set()  # the guided-lfd processes running now
 _RUNNING_LOCK = threading.Lock()
-_EXIT_INTERRUPTED, _EXIT_TERMINATED = 130, 143
 
 
 def run_one(task: BenchTask, strategy: str, semantics: str, time_limit: float,
@@ -90,7 +89,7 @@ def run_one(task: BenchTask, strategy: str, semantics: str, time_limit: float,
     finally:
         with _RUNNING_LOCK:
             _RUNNING.discard(proc)
-    if _STOP.is_set() or code in (_EXIT_INTERRUPTED, _EXIT_TERMINATED, -2, -15):
+    if _STOP.is_set() or code in (EXIT_INTERRUPTED, EXIT_TERMINATED, -signal.SIGINT, -signal.SIGTERM):
         row.status = INTERRUPTED  # the benchmark was stopped under it: no result, not recorded
         return row
     row.wall_s, row.exit_code = round(time.perf_counter() - start, 4), code
@@ -101,7 +100,7 @@ def run_one(task: BenchTask, strategy: str, semantics: str, time_limit: float,
     if doc is None:
         if code is None:
             status, note = "timeout", f"killed {KILL_GRACE_S:g} s past the limit"
-        elif code == _EXIT_MEMORY:
+        elif code == EXIT_MEMORY:
             status, note = "memout", ""
         else:
             status = "crashed"
