@@ -53,6 +53,8 @@ MAX_GAP_S = 0.5
 #: without a target yet, after the hand was idle, is a reach from its start, not a Release.
 DETECTOR_LATENCY_S = 0.15
 # EFFECT_DELAY_S (from trace): fluent changes this long after a segment still belong to it (s).
+#: The names a Manipulate segment takes after what it changed.
+MANIPULATIONS = frozenset({"Open", "Close", "Push", "Manipulate"})
 #: Frames read at a segment boundary for what the hand holds or targets.
 BOUNDARY_FRAMES = 4
 
@@ -384,7 +386,7 @@ def segment(demo: Demonstration) -> list[Segment]:
                 (after.add if value else after.discard)(atom)
             seg.before, seg.after = frozenset(before), frozenset(after)
             if seg.activity == "Manipulate":
-                seg.activity = _name_manipulation(seg.object, seg.before, seg.after)
+                seg.activity = name_manipulation(seg.object, seg.before, seg.after)
             out.append(seg)
     out.sort(key=lambda s: (s.start, s.hand))
     for i, seg in enumerate(out):
@@ -415,7 +417,7 @@ def _roles(label: str, held, target) -> tuple[str, str]:
     return _most_common(target), ""
 
 
-def _name_manipulation(obj: str, before: frozenset[Atom], after: frozenset[Atom]) -> str:
+def name_manipulation(obj: str, before: frozenset[Atom], after: frozenset[Atom]) -> str:
     """Open/Close for a drawer's ``open`` fluent, Push when the object moved otherwise."""
     if Atom("open", (obj,)) in after - before:
         return "Open"
