@@ -1,11 +1,17 @@
-"""The files beside the code: the licence and citation agree with pyproject.toml."""
+"""The files beside the code: the licence and citation agree with pyproject.toml; no issue numbers where users
+read."""
 
 from __future__ import annotations
 
+import ast
 import re
 import tomllib
+from pathlib import Path
 
 from conftest import ROOT
+
+#: an issue number (#14), not a link to a page's own heading (](#section))
+ISSUE = re.compile(r"(?<![(\w])#\d+\b")
 
 
 def _pyproject() -> dict:
@@ -37,3 +43,27 @@ def test_citation_file_names_this_version_and_licence_and_the_paper():
     assert title == ("Enabling Robots to Identify Missing Steps in Robot Tasks for Guided Learning from "
                      "Demonstration")
     assert re.findall(r"family-names: (\S+)", paper) == ["Diehl", "Chakraborti", "Ramirez-Amaro"]
+
+
+def _strings(path: Path, *, docstrings: bool) -> list[tuple[int, str]]:
+    tree = ast.parse(path.read_text())
+    skip = set()
+    if not docstrings:
+        for node in ast.walk(tree):
+            body = getattr(node, "body", None)
+            if isinstance(body, list) and body and isinstance(body[0], ast.Expr) and isinstance(body[0].value, ast.Constant):
+                skip.add(id(body[0].value))
+    return [(n.lineno, n.value) for n in ast.walk(tree)
+            if isinstance(n, ast.Constant) and isinstance(n.value, str) and id(n) not in skip]
+
+
+def test_no_issue_number_in_what_the_program_prints():
+    """Messages, tables and help say what they mean, not which tracker issue asked for them; in cli/ the
+    docstrings are help text too."""
+    found = []
+    for root, docstrings in (("cli", True), ("guided_lfd", False)):
+        for path in sorted((ROOT / root).rglob("*.py")):
+            found += [(str(path.relative_to(ROOT)), line, text[:60]) for line, text in _strings(path, docstrings=docstrings)
+                      if ISSUE.search(text)]
+    assert found == []
+
