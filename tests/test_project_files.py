@@ -67,3 +67,8 @@ def test_no_issue_number_in_what_the_program_prints():
                       if ISSUE.search(text)]
     assert found == []
 
+
+def test_no_issue_number_in_the_documentation():
+    pages = [ROOT / "README.md", ROOT / "benchmarks" / "README.md", *sorted((ROOT / "docs").glob("*.md"))]
+    found = [(p.name, m.group(0)) for p in pages for m in ISSUE.finditer(p.read_text())]
+    assert found == []
