@@ -182,7 +182,7 @@ def teach(
     def show(rnd) -> None:
         """The request as the demonstrator reads it: on a terminal always, else as a diagnostic."""
         lines = [f"round {rnd.index}, please demonstrate: {'; '.join(rnd.request_text)}",
-                 *(f"  why: {w}" for w in rnd.why)]
+                 *([f"  {rnd.excuse_text()}"] if rnd.excuse_text() else []), *(f"  why: {w}" for w in rnd.why)]
         if rnd.keep_text:
             lines.append("  leave as it is: " + "; ".join(rnd.keep_text))
         for line in lines:
