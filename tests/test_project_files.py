@@ -10,8 +10,8 @@ from pathlib import Path
 
 from conftest import ROOT
 
-#: an issue number (#14), not a link to a page's own heading (](#section))
-ISSUE = re.compile(r"(?<![(\w])#\d+\b")
+#: an issue number (#14, issue 14), not a link to a page's own heading (](#section))
+ISSUE = re.compile(r"(?<![(\w])#\d+\b|\bissues? #?\d+", re.IGNORECASE)
 
 
 def _pyproject() -> dict:
