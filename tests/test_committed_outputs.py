@@ -29,7 +29,8 @@ def test_the_guided_teaching_table_is_regenerated_from_its_csv_and_is_the_one_th
     finally:
         sys.path.remove(str(ROOT / "benchmarks"))
     results = ROOT / "benchmarks" / "teach_results"
-    text = teach_bench.summary(teach_bench.read_rows(results / "teach.csv"), "python benchmarks/teach_bench.py --jobs 2")
+    rows = teach_bench.read_rows(results / "teach.csv")
+    text = teach_bench.summary(rows, "python benchmarks/teach_bench.py --jobs 2")
     assert text + "\n![demonstrated actions](teach.png)\n" == (results / "summary.md").read_text()
     table = [line for line in text.splitlines() if line.startswith("|")]
     assert table[0].startswith("| task | robot | guided |") and table[1] == "|" + "---|" * 7

@@ -51,8 +51,9 @@ def _strings(path: Path, *, docstrings: bool) -> list[tuple[int, str]]:
     if not docstrings:
         for node in ast.walk(tree):
             body = getattr(node, "body", None)
-            if isinstance(body, list) and body and isinstance(body[0], ast.Expr) and isinstance(body[0].value, ast.Constant):
-                skip.add(id(body[0].value))
+            first = body[0] if isinstance(body, list) and body else None
+            if isinstance(first, ast.Expr) and isinstance(first.value, ast.Constant):
+                skip.add(id(first.value))
     return [(n.lineno, n.value) for n in ast.walk(tree)
             if isinstance(n, ast.Constant) and isinstance(n.value, str) and id(n) not in skip]
 
@@ -63,7 +64,8 @@ def test_no_issue_number_in_what_the_program_prints():
     found = []
     for root, docstrings in (("cli", True), ("guided_lfd", False)):
         for path in sorted((ROOT / root).rglob("*.py")):
-            found += [(str(path.relative_to(ROOT)), line, text[:60]) for line, text in _strings(path, docstrings=docstrings)
+            name = str(path.relative_to(ROOT))
+            found += [(name, line, text[:60]) for line, text in _strings(path, docstrings=docstrings)
                       if ISSUE.search(text)]
     assert found == []
 
@@ -72,3 +74,16 @@ def test_no_issue_number_in_the_documentation():
     pages = [ROOT / "README.md", ROOT / "benchmarks" / "README.md", *sorted((ROOT / "docs").glob("*.md"))]
     found = [(p.name, m.group(0)) for p in pages for m in ISSUE.finditer(p.read_text())]
     assert found == []
+
+
+def test_the_readme_fits_and_its_command_table_names_every_subcommand():
+    from cli.main import SUBCOMMANDS
+
+    readme = (ROOT / "README.md").read_text()
+    assert len(readme.splitlines()) <= 300
+    table = readme.split("\n## Commands\n", 1)[1].split("\n## ", 1)[0]
+    listed = re.findall(r"^\| `([a-z-]+)[ `]", table, re.MULTILINE)
+    assert sorted(listed) == sorted(SUBCOMMANDS), listed
+    for section in ("Set up and run", "Bring your own robot", "From Python", "Supported PDDL", "Documentation",
+                    "Citing", "Licence"):
+        assert f"\n## {section}" in readme, section

@@ -90,8 +90,10 @@ def test_only_the_part_of_the_excuse_that_suffices_is_requested(runner, app, tmp
     # The why explains the request, and says how the rest of the excuse gets made without being asked for.
     assert rnd["why"] == [
         "Open PinkDrawer: no skill of the robot does this, and its plan to Inside RedPlate, PinkDrawer needs it",
-        "Clear PinkDrawer: also in the minimal excuse, not asked for: demonstrating Open PinkDrawer makes it on the way"]
-    reconcile = "the minimal excuse is +(clear pinkdrawer) +(open pinkdrawer); the request is the part of it that suffices"
+        "Clear PinkDrawer: also in the minimal excuse, not asked for: demonstrating Open PinkDrawer makes it on the "
+        "way"]
+    reconcile = ("the minimal excuse is +(clear pinkdrawer) +(open pinkdrawer); the request is the part of it that "
+                 "suffices")
     assert f"- {reconcile}\n" in (tmp_path / "session.md").read_text()
     # The text the demonstrator reads (stderr without --quiet) says the same, in the same order.
     text = runner.invoke(app, ["teach", robot, problem, "--simulate", HUMAN[2], "-o", str(tmp_path / "text")])
