@@ -2,6 +2,7 @@
 """Guided-teaching benchmark: `guided-lfd teach --simulate` against the unguided baseline.
 
     python benchmarks/teach_bench.py --jobs 2        # -> benchmarks/teach_results/{teach.csv,summary.md}
+    python benchmarks/teach_bench.py --jobs 2 --report   # summary.md again from the committed teach.csv
 
 For every kitchen task and every household task of the scaling series up to
 ``--max-items`` (both robots: without the skill that opens, and without the
@@ -109,30 +110,50 @@ def run_unguided(task: dict) -> dict:
     return {**row, "wall_s": round(time.perf_counter() - start, 3)}
 
 
+HEADER = ("task", "robot", "guided", "excuse (no redundancy, no preference)", "unguided (whole task)",
+          "guided < unguided", "wall guided (s)")
+
+
+def _cell(row: dict | None) -> str:
+    """One configuration's outcome: demonstrated actions (of which the robot already had), rounds, misdirected."""
+    if row is None or row.get("demonstrated", "") == "":
+        return "-"
+    taught = "" if row.get("plans_task") in (True, "") else ", **not taught**"
+    return (f"{row['demonstrated']} ({row['already_had']}), {row['rounds']} round(s), {row['misdirected']} "
+            f"misdirected{taught}")
+
+
 def summary(rows: list[dict], command: str) -> str:
     """The markdown table: per task and robot, each configuration's demonstration length beside the baseline's."""
+    from guided_lfd.reporting import markdown_table
+
     by = {(r["task"], r["robot"], r["config"]): r for r in rows}
     keys = sorted({(r["task"], r["robot"]) for r in rows}, key=lambda k: (not k[0].startswith("kitchen"), k))
-    lines = ["# Guided teaching vs demonstrating the whole task", "", f"Regenerate with: `{command}`", "",
-             "Demonstrated actions (of which the robot already had), rounds, misdirected demonstrations, "
-             "and whether the taught robot then plans its task; wall time of the whole teaching run.", "",
-             "| task | robot | guided | excuse (no redundancy, no preference) | unguided (whole task) | "
-             "guided < unguided | wall guided (s) |", "|---|---|---|---|---|---|---|"]
-    better = total = 0
+    table = []
     for task, robot in keys:
         g, e, u = (by.get((task, robot, c)) for c in ("guided", "excuse", "unguided"))
-        cell = (lambda r: "-" if r is None or "demonstrated" not in r else
-                f"{r['demonstrated']} ({r['already_had']}), {r['rounds']} round(s), {r['misdirected']} misdirected"
-                + ("" if r.get("plans_task") in (True, "") else ", **not taught**"))
-        wins = g is not None and u is not None and "demonstrated" in g and g["solved"] and \
-            g["demonstrated"] < u["demonstrated"]
-        total += 1
-        better += wins
-        lines.append(f"| {task} | {robot} | {cell(g)} | {cell(e)} | {cell(u)} | {'yes' if wins else 'no'} | "
-                     f"{g['wall_s'] if g else '-'} |")
-    lines += ["", f"Guided teaching needs fewer demonstrated actions than the whole task on {better} of {total} "
-              "tasks."]
-    return "\n".join(lines) + "\n"
+        wins = _cell(g) != "-" and _cell(u) != "-" and g["solved"] is True and g["demonstrated"] < u["demonstrated"]
+        table.append([task, robot, _cell(g), _cell(e), _cell(u), "yes" if wins else "no",
+                      str(g["wall_s"]) if g else "-"])
+    better = sum(row[5] == "yes" for row in table)
+    return "\n".join(["# Guided teaching vs demonstrating the whole task", "", f"Regenerate with: `{command}`", "",
+                      "Demonstrated actions (of which the robot already had), rounds, misdirected demonstrations, "
+                      "and whether the taught robot then plans its task; wall time of the whole teaching run.", "",
+                      markdown_table(HEADER, table), "",
+                      f"Guided teaching needs fewer demonstrated actions than the whole task on {better} of "
+                      f"{len(table)} tasks."]) + "\n"
+
+
+def read_rows(path: Path) -> list[dict]:
+    """The rows of a ``teach.csv``, typed as the run made them (counts, flags and wall times)."""
+    flags = {"True": True, "False": False, "": ""}
+    with open(path, encoding="utf-8", newline="") as fh:
+        rows = list(csv.DictReader(fh))
+    for row in rows:
+        row.update({k: int(row[k]) for k in ("rounds", "demonstrated", "already_had", "misdirected") if row[k]})
+        row.update({k: flags[row[k]] for k in ("solved", "plans_task")})
+        row["wall_s"] = float(row["wall_s"])
+    return rows
 
 
 def plot(rows: list[dict], path: Path) -> Path | None:
@@ -160,13 +181,10 @@ def plot(rows: list[dict], path: Path) -> Path | None:
     return save_figure(fig, path, 110)
 
 
-def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--max-items", type=int, default=32, help="largest household task (items)")
-    parser.add_argument("--jobs", type=int, default=2)
-    parser.add_argument("--time-limit", type=float, default=60.0, help="per excuse search, in seconds")
-    parser.add_argument("--out", type=Path, default=OUT)
-    args = parser.parse_args(argv)
+def run_all(args: argparse.Namespace) -> list[dict]:
+    """Every task in every configuration; the rows, also written to ``--out``'s ``teach.csv``."""
+    from guided_lfd.io import write_text
+
     with tempfile.TemporaryDirectory() as scratch:
         work = tasks(args.max_items, Path(scratch))
         with ThreadPoolExecutor(max_workers=max(1, args.jobs)) as pool:
@@ -178,13 +196,28 @@ def main(argv: list[str] | None = None) -> int:
     writer = csv.DictWriter(buf, fieldnames=FIELDS, lineterminator="\n", restval="")
     writer.writeheader()
     writer.writerows(sorted(rows, key=lambda r: (r["task"], r["robot"], r["config"])))
-    (args.out / "teach.csv").write_text(buf.getvalue(), encoding="utf-8")
-    command = "python benchmarks/teach_bench.py " + " ".join(argv if argv is not None else sys.argv[1:])
-    text = summary(rows, command.strip())
+    write_text(args.out / "teach.csv", buf.getvalue())
+    return rows
+
+
+def main(argv: list[str] | None = None) -> int:
+    from guided_lfd.io import write_text
+
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--max-items", type=int, default=32, help="largest household task (items)")
+    parser.add_argument("--jobs", type=int, default=2)
+    parser.add_argument("--time-limit", type=float, default=60.0, help="per excuse search, in seconds")
+    parser.add_argument("--out", type=Path, default=OUT)
+    parser.add_argument("--report", action="store_true", help="only rewrite summary.md and the plot from --out's "
+                        "teach.csv (give the run's other options to keep its 'Regenerate with' line)")
+    args = parser.parse_args(argv)
+    rows = read_rows(args.out / "teach.csv") if args.report else run_all(args)
+    given = [a for a in (argv if argv is not None else sys.argv[1:]) if a != "--report"]
+    text = summary(rows, " ".join(["python benchmarks/teach_bench.py", *given]))
     picture = plot(rows, args.out / "teach.png")
     if picture is not None:
         text += f"\n![demonstrated actions]({picture.name})\n"
-    (args.out / "summary.md").write_text(text, encoding="utf-8")
+    write_text(args.out / "summary.md", text)
     print(text)
     return 0
 

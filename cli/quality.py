@@ -39,7 +39,8 @@ def quality(
     preconditions and effects against each kitchen's human.pddl. Markdown on
     stdout. With --traces, a second table follows: per source, scenario
     and recording condition, frame macro-F1, segment counts, learning
-    against the scenario's human.pddl and the targets of issue 14 missed.
+    against the scenario's human.pddl, and the quality targets each row
+    misses (the table's last line lists them).
     """
     from guided_lfd.demonstration.quality import quality_markdown, quality_report, sources_markdown, sources_report
     from guided_lfd.errors import InputFileError, Location

@@ -182,7 +182,7 @@ def teach(
     def show(rnd) -> None:
         """The request as the demonstrator reads it: on a terminal always, else as a diagnostic."""
         lines = [f"round {rnd.index}, please demonstrate: {'; '.join(rnd.request_text)}",
-                 *(f"  why: {w}" for w in rnd.why)]
+                 *([f"  {rnd.excuse_text()}"] if rnd.excuse_text() else []), *(f"  why: {w}" for w in rnd.why)]
         if rnd.keep_text:
             lines.append("  leave as it is: " + "; ".join(rnd.keep_text))
         for line in lines:
@@ -207,7 +207,7 @@ def _report(session_obj, session: Path) -> None:
         ui.info(f"round {r.index}: {'; '.join(r.request_text)}; demonstrated {r.demonstration_length} action(s), "
                 f"learned {', '.join(r.learned_actions) or 'nothing new'}"
                 + ("" if r.request_met is not False else f"; not done: {', '.join(str(c) for c in r.unmet)}"))
-        if r.vocabulary:  # which hand facts were chosen, and from where (the issue asks that it be said)
+        if r.vocabulary:  # which hand facts were chosen, and from where, so a wrong binding shows
             ui.info(f"[dim]round {r.index}: hand facts: {r.vocabulary}[/]")
     if session_obj.error is not None:  # the demonstration's own error, its own exit code
         ui.error(f"{session_obj.error} (teaching ended; see {session / 'session.md'})")

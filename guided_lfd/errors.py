@@ -5,7 +5,9 @@ code and, where it stems from a file, a :class:`Location`.  The command-line
 layer prints ``str(error)`` as one line on stderr and exits with
 ``error.exit_code``; nothing else should ever reach the user as a traceback.
 
-Exit codes are grouped by meaning, as in Fast Downward's driver:
+Exit codes are grouped by meaning (tens: an answer other than success,
+twenties: a resource limit, thirties: bad input); docs/exit-codes.md says
+what Fast Downward's driver means by the same numbers, mostly something else:
 
 ====  ==========================================================
 code  meaning

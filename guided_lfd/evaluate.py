@@ -411,7 +411,10 @@ def report_rows(report: dict[str, Any]) -> list[tuple[str, str, str]]:
     mis = report["misdirected_guidance"]
     rows = [
         ("excuse", " ".join(report["excuse"]), f"{len(report['excuse'])} change(s)"),
-        ("f1_savings", _fmt(size["f1"]), "|pi'_H| / |pi_H|: human plan from the excuse state over the full one"),
+        # The paper's F1 (III-A-1): the part of the whole-task demonstration the human no longer gives.
+        ("f1_savings", _fmt(size["f1"]), "higher = more saved: the share of the whole-task demonstration the "
+         f"human need not give, |pi'_H| / |pi_H| = {_fmt(pred['remaining_after_excuse'])} / {_fmt(pred['goal'])} "
+         "(human plan from the excuse state over the full one)"),
         ("predicted_size_minimal_excuse", _fmt(pred["minimal_excuse"]), "human plan to the minimal excuse"),
         ("predicted_size_nonminimal_excuse", _fmt(pred["nonminimal_excuse"]),
          "human plan to " + (" ".join(size["nonminimal_excuse"]) or "-")),

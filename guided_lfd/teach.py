@@ -71,6 +71,13 @@ class Round:
     error: str | None = None  # why the demonstration could not be used (it ended the session)
     vocabulary: str | None = None  # the hand facts the demonstration was learned in, and where they came from
 
+    def excuse_text(self) -> str | None:
+        """How the request relates to the minimal excuse when it asks for only part of it, else None."""
+        if not self.excuse or self.request == self.excuse:
+            return None
+        return (f"the minimal excuse is {' '.join(str(c) for c in self.excuse)}; the request is the part of it "
+                "that suffices")
+
     def to_dict(self) -> dict[str, Any]:
         """The round as ``session.json`` has it."""
         return {
@@ -126,9 +133,8 @@ class TeachSession:
             lines += [f"## Round {r.index}", "", "Request: " + "; ".join(r.request_text) + ".", ""]
             if not r.excuse:
                 lines.append("- no excuse exists: a new skill that makes this true must be demonstrated")
-            elif r.request != r.excuse:
-                lines.append("- the minimal excuse is " + " ".join(str(c) for c in r.excuse)
-                             + "; demonstrating the request makes the rest")
+            elif r.excuse_text():
+                lines.append(f"- {r.excuse_text()}")
             if r.preference:
                 lines.append(f"- {r.preference}")
             lines += [f"- why: {w}" for w in r.why]
@@ -207,6 +213,19 @@ def _why(report, robot: Domain, problem: Problem, excuse: list[Change]) -> list[
         what = describe_change(change, spellings)
         out.append(f"{what}: no skill of the robot does this, and its plan to {goal} needs it" if not can else
                    f"{what}: the robot cannot do this from here, and its plan to {goal} needs it")
+    return out
+
+
+def _why_rest(excuse: list[Change], request: list[Change], after: frozenset[Atom] | None, spellings) -> list[str]:
+    """Why the excuse's changes left out of the request are not asked for: the predicted demonstration of the
+    request makes them on the way (``after`` is the state it leaves), or the robot then makes them itself."""
+    asked = " and ".join(describe_change(c, spellings) for c in request)
+    out = []
+    for change in (c for c in excuse if c not in request):
+        made = after is not None and (change.atom in after) == change.added
+        how = (f"demonstrating {asked} makes it on the way" if made else
+               "the robot then makes it itself, with the skills it learns from the demonstration")
+        out.append(f"{describe_change(change, spellings)}: also in the minimal excuse, not asked for: {how}")
     return out
 
 
@@ -601,7 +620,7 @@ def _request(k: int, robot: Domain, task: Problem, report, prefer_by: Domain | N
              reduce_by: Domain | None, human: Domain | None = None, deadline: float | None = None) -> Round:
     """The round's request: the (preferred) minimal excuse or its smallest sufficient part, why the robot
     needs it, what to leave as it is."""
-    from guided_lfd.excuse.preference import minimal_request, prefer_demonstration
+    from guided_lfd.excuse.preference import prefer_demonstration, sufficient_part
     from guided_lfd.pddl.model import pretty_atom
 
     spellings = report.spellings
@@ -611,11 +630,13 @@ def _request(k: int, robot: Domain, task: Problem, report, prefer_by: Domain | N
                                                  deadline)
         chosen = report.excuses[index]
     excuse = chosen.changes
-    request = minimal_request(reduce_by, robot, task, excuse, deadline) if reduce_by is not None else list(excuse)
+    request, after = (sufficient_part(reduce_by, robot, task, excuse, deadline) if reduce_by is not None
+                      else (list(excuse), None))
+    # The why explains what is asked for; the rest of the excuse says how it gets made without being asked.
+    why = _why(report, robot, task, request) + _why_rest(excuse, request, after, spellings)
     keep = keep_facts(robot, task, task.init, excuse, chosen.plan, human)
-    return Round(k, excuse, request, [describe_change(c, spellings) for c in request],
-                 _why(report, robot, task, excuse), keep, [f"keep {pretty_atom(a, spellings)}" for a in keep],
-                 preference=preference)
+    return Round(k, excuse, request, [describe_change(c, spellings) for c in request], why, keep,
+                 [f"keep {pretty_atom(a, spellings)}" for a in keep], preference=preference)
 
 
 def _goal_text(report, task: Problem) -> str:

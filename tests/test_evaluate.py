@@ -97,6 +97,11 @@ def test_cli_evaluate_text_json_and_csv(runner, app, tmp_path):
     text = runner.invoke(app, ["evaluate", *_args(2), "-q"])
     assert text.exit_code == 0, text.stderr
     assert "f1_savings" in text.stdout and "misdirected_guidance" in text.stdout
+    # F1 says what it means: the share saved (higher saves more), with the plan lengths behind it.
+    (f1_line,) = [line for line in text.stdout.splitlines() if line.startswith("f1_savings")]
+    assert f1_line.split(None, 2)[1:] == ["0.750", "higher = more saved: the share of the whole-task demonstration "
+                                          "the human need not give, |pi'_H| / |pi_H| = 3 / 4 (human plan from the "
+                                          "excuse state over the full one)"]
     doc = json.loads(runner.invoke(app, ["evaluate", *_args(2), "--json", "-q"]).stdout)
     assert doc["format"] == "guided-lfd/evaluation" and doc["format_version"] == 1
     assert doc["excuse"] == ["+(clear pinkdrawer)"]

@@ -1,4 +1,5 @@
-"""The library a robot program imports: docs/python.md's example runs, and it gives the command line's documents."""
+"""The library a robot program imports: the README's and docs/python.md's examples run, and it gives the command
+line's documents."""
 
 from __future__ import annotations
 
@@ -14,8 +15,9 @@ import guided_lfd
 from guided_lfd import ExcuseOptions, GuidedLfdError, find_excuses, plan, read_task, validate
 
 
-def test_the_readme_example_runs():
-    section = (ROOT / "docs" / "python.md").read_text()
+@pytest.mark.parametrize("page", ["README.md", "docs/python.md"])
+def test_the_readme_example_runs(page):
+    section = (ROOT / page).read_text()
     code = re.search(r"```python\n(.*?)```", section, re.S).group(1)
     out = fresh_interpreter(code)
     assert out.splitlines()[:2] == ["excuse-found", "+(clear pinkdrawer)"]

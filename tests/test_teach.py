@@ -87,7 +87,19 @@ def test_only_the_part_of_the_excuse_that_suffices_is_requested(runner, app, tmp
     assert (rnd["request"], rnd["request_text"]) == (["+(open pinkdrawer)"], ["Open PinkDrawer"])
     assert rnd["request_met"] and set(rnd["learned_actions"]) == {"move_chair", "open_drawer"}
     assert doc["solved"] and doc["plans_original_task"]  # the learned robot plans the original task
-    assert "the minimal excuse is +(clear pinkdrawer) +(open pinkdrawer)" in (tmp_path / "session.md").read_text()
+    # The why explains the request, and says how the rest of the excuse gets made without being asked for.
+    assert rnd["why"] == [
+        "Open PinkDrawer: no skill of the robot does this, and its plan to Inside RedPlate, PinkDrawer needs it",
+        "Clear PinkDrawer: also in the minimal excuse, not asked for: demonstrating Open PinkDrawer makes it on the "
+        "way"]
+    reconcile = ("the minimal excuse is +(clear pinkdrawer) +(open pinkdrawer); the request is the part of it that "
+                 "suffices")
+    assert f"- {reconcile}\n" in (tmp_path / "session.md").read_text()
+    # The text the demonstrator reads (stderr without --quiet) says the same, in the same order.
+    text = runner.invoke(app, ["teach", robot, problem, "--simulate", HUMAN[2], "-o", str(tmp_path / "text")])
+    assert text.exit_code == 0, text.output
+    assert text.stderr.startswith("round 1, please demonstrate: Open PinkDrawer\n"
+                                  f"  {reconcile}\n" + "".join(f"  why: {w}\n" for w in rnd["why"]))
     # Without the redundancy step, the whole excuse is asked for.
     plain = runner.invoke(app, ["teach", robot, problem, "--simulate", HUMAN[2], "-o", str(tmp_path / "plain"),
                                 "--json", "--quiet", "--no-redundancy"])
@@ -260,6 +272,27 @@ def test_why_respects_types_a_cupboard_door_skill_does_not_open_a_drawer(tmp_pat
     (rnd,) = session.rounds
     assert rnd.why[0].endswith("no skill of the robot does this, and its plan to Inside plate1, drawer1_1 needs it")
     assert session.status == "solved"
+
+
+def test_the_rest_of_the_excuse_the_robot_makes_itself_is_said_so(tmp_path):
+    """Two closed goal drawers, a robot that cannot open drawers: one drawer opened is asked for; the why says
+    the robot opens the other itself with the skill it learns (no demonstration makes it on the way)."""
+    data = Path(__file__).parent / "data" / "determinism"
+    robot, problem = parse_task(str(data / "robot-no-open.pddl"), str(data / "house-r4-i8.pddl"))
+    human = parse_domain(str(data / "human.pddl"))
+
+    class Nobody:
+        def demonstrate(self, *args):
+            return None
+
+    session = teach(robot, problem, Nobody(), tmp_path, human=human)
+    (rnd,) = session.rounds
+    assert [str(c) for c in rnd.excuse] == ["+(open drawer1_1)", "+(open drawer3_1)"]
+    assert rnd.request_text == ["Open drawer1_1"]
+    assert rnd.why[1:] == ["Open drawer3_1: also in the minimal excuse, not asked for: the robot then makes it "
+                           "itself, with the skills it learns from the demonstration"]
+    assert rnd.excuse_text() == ("the minimal excuse is +(open drawer1_1) +(open drawer3_1); the request is the "
+                                 "part of it that suffices")
 
 
 def test_predicting_demonstrations_for_prefer_stays_within_the_time_limit(runner, app, monkeypatch):

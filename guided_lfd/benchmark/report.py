@@ -60,7 +60,7 @@ def _parts_table(rows: list[ResultRow]) -> list[str]:
     if parts == ["first"]:
         return []
     out = ["", "## Coverage by suite part", "",
-           "*first*: IPC task01-04 and the kitchens (the first suite); *grown*: IPC task05-10.", ""]
+           "*first*: IPC task01-04 and the kitchens (the smaller tasks); *grown*: IPC task05-10.", ""]
     table = []
     for part in parts:
         for se in sorted({r.semantics for r in rows}):

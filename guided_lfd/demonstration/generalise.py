@@ -1,4 +1,4 @@
-"""Generalising repeated demonstrations of a skill (paper, section III-D-1; issue #14).
+"""Generalising repeated demonstrations of a skill (paper, section III-D-1).
 
 Repeats are grouped by what they *do*: two demonstrations of an activity are
 one skill when their lifted effects are equal under some renaming of their

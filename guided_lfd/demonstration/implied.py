@@ -1,4 +1,4 @@
-"""Positive preconditions a learned action need not state (issue #14).
+"""Positive preconditions a learned action need not state.
 
 The nodes-of-interest rule keeps every fact about the objects a skill
 handles, so facts that hold whenever the skill can run at all become

@@ -1,4 +1,4 @@
-"""Naming learned skills as the robot's domain would (issue #23).
+"""Naming learned skills as the robot's domain would.
 
 A skill is learned under its activity's name (``push_door``, ``take_block``);
 with a human model (the demonstrator's domain) a skill whose lifted effects

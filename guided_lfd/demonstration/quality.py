@@ -1,4 +1,4 @@
-"""How well demonstrations are segmented and learned: the #4 quality report.
+"""How well demonstrations are segmented and learned: the quality report.
 
 ``guided-lfd quality`` prints, for the shipped
 demonstrations, the frame-level activity F1 against the rendered ground truth,
@@ -6,12 +6,12 @@ whether the segment count matches exactly, and the precision and recall of
 the learned actions' preconditions and effects against the human domain (the
 measures of action-model-learning benchmarks).
 
-With ``--traces DIR`` (issue #14) it also measures every source and scenario:
+With ``--traces DIR`` it also measures every source and scenario:
 the shipped rendered demonstrations and an independent trace source laid out
 as ``DIR/<scenario>/<condition>/*.csv`` (``tests/data/traces``, made by its
 own generator), one row per source, scenario and recording condition, with
 learning scored against the scenario's ``human.pddl`` (``DIR/<scenario>/``,
-else ``--domains``/<scenario>/), and the issue's targets each row misses.
+else ``--domains``/<scenario>/), and the quality targets (``TARGET_*``) each row misses.
 """
 
 from __future__ import annotations
@@ -205,7 +205,8 @@ def quality_markdown(report: QualityReport) -> str:
     return "\n".join(lines) + "\n"
 
 
-#: The targets of issue #14, acceptance 1.
+#: The quality targets a row of ``--traces`` must meet: segment counts exact from 20 Hz up, the lowest frame
+#: F1 and the learned skills' precision and recall at least these (the table's last line prints them).
 TARGET_F1 = 0.95
 TARGET_F1_LOW_RATE = 0.9  # at 15 Hz (below 20 Hz)
 TARGET_LEARNING = 0.9
@@ -249,7 +250,7 @@ class ConditionQuality:
         return [s for s in self.skills if re.search(r"_\d+$", s)]
 
     def misses(self) -> list[str]:
-        """The issue's targets this row does not meet."""
+        """The quality targets this row does not meet (short labels, as the table's last column has them)."""
         out = []
         if self.rate_hz >= 19.5 and self.exact < len(self.segmentation):
             out.append("counts")
@@ -334,7 +335,7 @@ def sources_report(demos: Path = Path("data/demos"), domains: Path = Path("data/
 def sources_markdown(rows: list[ConditionQuality]) -> str:
     """The all-sources table ``guided-lfd quality --traces DIR`` prints after the shipped demonstrations' report."""
     lines = ["| source | scenario | condition | Hz | demos | frame macro-F1 (lowest) | segments (truth / found) "
-             "| counts exact | preconditions P / R | effects P / R | skills (near-duplicates) | misses #14 targets |",
+             "| counts exact | preconditions P / R | effects P / R | skills (near-duplicates) | targets missed |",
              "|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
         lq = r.learning
@@ -346,7 +347,7 @@ def sources_markdown(rows: list[ConditionQuality]) -> str:
                      f"| {lq['eff_precision']:.2f} / {lq['eff_recall']:.2f} | {len(r.skills)}{dupes} "
                      f"| {', '.join(r.misses()) or '-'} |")
     meets = sum(not r.misses() for r in rows)
-    lines += ["", f"rows meeting every #14 target: {meets} / {len(rows)} (targets: segment counts exact at 20-120 Hz; "
+    lines += ["", f"rows meeting every target: {meets} / {len(rows)} (targets: segment counts exact at 20-120 Hz; "
               f"lowest frame macro-F1 >= {TARGET_F1} (>= {TARGET_F1_LOW_RATE} at 15 Hz); preconditions and effects "
               f"precision and recall >= {TARGET_LEARNING}; no near-duplicate skills)"]
     return "\n".join(lines) + "\n"

@@ -1,4 +1,4 @@
-"""Segmenting a trace while it is recorded (issue #30): bounded memory, segments out as soon as they close.
+"""Segmenting a trace while it is recorded: bounded memory, segments out as soon as they close.
 
 A recorder pipes frames in (``guided-lfd segment - --state S --csv``); the
 trace is read in batches of rows, and each batch is segmented together with

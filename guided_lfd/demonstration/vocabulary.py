@@ -1,4 +1,4 @@
-"""The hand's facts in the robot's own words: a demonstration's vocabulary binding (issue #23).
+"""The hand's facts in the robot's own words: a demonstration's vocabulary binding.
 
 A hand trace says what each hand holds (its ``in_hand`` column); the robot's
 domain says it in its own predicates: ``(in_hand ?i)``/``(hand_free)`` in the

@@ -17,11 +17,11 @@ from dataclasses import dataclass, replace
 from itertools import combinations
 
 from guided_lfd.excuse.change import Change
-from guided_lfd.pddl.model import Domain, Problem
+from guided_lfd.pddl.model import Atom, Domain, Problem
 from guided_lfd.validation import PlanStep, validate_plan
 
 __all__ = ["PredictedDemonstration", "apply_preference", "predict_demonstration", "prefer_demonstration",
-           "minimal_request"]
+           "minimal_request", "sufficient_part"]
 
 
 @dataclass
@@ -78,13 +78,14 @@ def prefer_demonstration(excuses: list[list[Change]], human: Domain, robot: Doma
     return best, why + (f", against {'; '.join(others)}" if others else "")
 
 
-def minimal_request(human: Domain, robot: Domain, task: Problem, excuse: list[Change],
-                    deadline: float | None = None) -> list[Change]:
-    """The smallest part of ``excuse`` whose human demonstration, learned, lets the robot plan ``task``.
+def sufficient_part(human: Domain, robot: Domain, task: Problem, excuse: list[Change],
+                    deadline: float | None = None) -> tuple[list[Change], frozenset[Atom] | None]:
+    """The smallest part of ``excuse`` whose human demonstration, learned, lets the robot plan ``task``, and
+    the state that predicted demonstration leaves (which of the rest it makes on the way).
 
     Parts are tried smallest first (in the excuse's order); the learned
     skills are predicted as the human model's actions the demonstration uses.
-    The whole excuse is the answer when no smaller part does.
+    The whole excuse, with no state, is the answer when no smaller part does.
     """
     from guided_lfd.api import plan as robot_plan
     from guided_lfd.merge import merge_domains
@@ -99,8 +100,15 @@ def minimal_request(human: Domain, robot: Domain, task: Problem, excuse: list[Ch
             skills = replace(human, actions=[a for a in human.actions if a.name in used])
             taught = merge_domains([robot, skills], name=robot.name).domain
             if robot_plan(taught, replace(task, init=after), time_limit=_left(deadline)).solved:
-                return list(part)
-    return list(excuse)
+                return list(part), after
+    return list(excuse), None
+
+
+def minimal_request(human: Domain, robot: Domain, task: Problem, excuse: list[Change],
+                    deadline: float | None = None) -> list[Change]:
+    """The smallest part of ``excuse`` whose human demonstration, learned, lets the robot plan ``task`` (see
+    :func:`sufficient_part`)."""
+    return sufficient_part(human, robot, task, excuse, deadline)[0]
 
 
 def apply_preference(report, human: Domain, robot: Domain, task: Problem, keep_all: bool = False,
