@@ -1,8 +1,9 @@
-"""The household scaling plot, drawn from its committed results without running anything."""
+"""The household scaling and guided-teaching plots, drawn from their committed results without running anything."""
 
 from __future__ import annotations
 
 import importlib.util
+import shutil
 from pathlib import Path
 
 import pytest
@@ -21,6 +22,11 @@ def _script(path: Path):
 @pytest.fixture(scope="module")
 def scaling():
     return _script(ROOT / "benchmarks" / "household" / "scaling.py")
+
+
+@pytest.fixture(scope="module")
+def teach():
+    return _script(ROOT / "benchmarks" / "teach_bench.py")
 
 
 def test_the_scaling_report_draws_one_line_per_variant_strategy_and_semantics(scaling, monkeypatch, tmp_path):
@@ -48,6 +54,30 @@ def test_the_scaling_report_draws_one_line_per_variant_strategy_and_semantics(sc
     legend = [t.get_text() for t in drawn["scaling.png"].legends[0].get_texts()]
     assert legend[-2:] == ["not finished within the limit (the baseline is not run on larger tasks)",
                            "time limit (60 s per run)"]
+
+
+def test_the_teach_plot_spells_out_its_task_names(teach, monkeypatch, tmp_path):
+    pytest.importorskip("matplotlib")
+    drawn = record_figures(monkeypatch, teach)
+    out = tmp_path / "out"
+    out.mkdir()
+    shutil.copy(ROOT / "benchmarks" / "teach_results" / "teach.csv", out)
+    assert teach.main(["--plot-only", "--out", str(out)]) == 0  # no runs: only the picture
+    assert sorted(p.name for p in out.iterdir()) == ["teach.csv", "teach.png"]
+    fig, (ax,) = drawn["teach.png"], drawn["teach.png:axes"]
+    labels = [t.get_text() for t in ax.get_yticklabels()]
+    assert labels[:3] == ["Kitchen I: robot cannot open drawers", "Kitchen II: robot cannot move the chair",
+                          "Kitchen II: robot cannot open drawers or move the chair"]
+    assert labels.index("r4-i8-d8-c4-g2: robot cannot open drawers") < labels.index(
+        "r4-i16-d16-c4-g2: robot cannot open drawers")  # houses by size, not by spelling
+    assert not any(label.startswith("house-") for label in labels)
+    assert fig.get_supxlabel() == (
+        "House tasks are named r<rooms>-i<items>-d<drawers>-c<cupboards>-g<goals>:\n"
+        "e.g. r8-i32-d32-c8-g4 has 8 rooms, 32 items, 32 drawers, 8 cupboards, 4 goals (items to put into a goal "
+        "container).")
+    assert [len(bars) for bars in ax.containers] == [len(labels)] * 3
+    assert [t.get_text() for t in ax.get_legend().get_texts()] == [label for *_, label in teach.CONFIGS]
+    assert all(float(x).is_integer() for x in ax.get_xticks())
 
 
 def test_house_names_give_back_their_sizes():
