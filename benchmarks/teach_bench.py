@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """Guided-teaching benchmark: `guided-lfd teach --simulate` against the unguided baseline.
 
-    python benchmarks/teach_bench.py --jobs 2        # -> benchmarks/teach_results/{teach.csv,summary.md}
-    python benchmarks/teach_bench.py --jobs 2 --report   # summary.md again from the committed teach.csv
+    python benchmarks/teach_bench.py --jobs 2        # -> benchmarks/teach_results/{teach.csv,summary.md,teach.png}
+    python benchmarks/teach_bench.py --jobs 2 --report   # summary.md and teach.png again from the committed teach.csv
+    python benchmarks/teach_bench.py --plot-only     # no runs: teach.png again from teach.csv
 
 For every kitchen task and every household task of the scaling series up to
 ``--max-items`` (both robots: without the skill that opens, and without the
@@ -41,6 +42,8 @@ sys.path.insert(0, str(ROOT))
 
 from guided_lfd import household  # noqa: E402
 from guided_lfd.benchmark import cli_command  # noqa: E402
+from guided_lfd.reporting import PlotsUnavailable, pyplot, save_figure  # noqa: E402
+from guided_lfd.study.paper import KITCHEN_NAMES  # noqa: E402
 
 OUT = ROOT / "benchmarks" / "teach_results"
 FIELDS = ["task", "robot", "config", "status", "solved", "plans_task", "rounds", "demonstrated", "already_had",
@@ -156,28 +159,68 @@ def read_rows(path: Path) -> list[dict]:
     return rows
 
 
+#: What the kitchens' robots cannot do (data/domains/kitchen-*/robot*.pddl).
+KITCHEN_ROBOTS = {("kitchen-1", "robot"): "cannot open drawers",
+                  ("kitchen-2", "robot"): "cannot move the chair",
+                  ("kitchen-2", "robot-no-open"): "cannot open drawers or move the chair"}
+
+#: The plot's bars: (configuration, colour, legend entry).
+CONFIGS = (("guided", "tab:green", "guided: the part of the excuse that suffices, shortest demonstration preferred"),
+           ("excuse", "tab:orange", "the plain minimal excuse (--no-redundancy)"),
+           ("unguided", "tab:grey", "unguided: the human demonstrates the whole task"))
+
+
+def _task_order(key: tuple[str, str]) -> tuple:
+    """Kitchens first, then the houses from small to large, each size's variants together."""
+    sizes = household.name_sizes(key[0])
+    return (0, key) if sizes is None else (1, sizes, key)
+
+
+def _task_label(task: str, robot: str) -> str:
+    """A row's label: the task (a house by its sizes, without the 'house-' and variant) and what its robot lacks."""
+    sizes = household.name_sizes(task)
+    if sizes is None:
+        return f"{KITCHEN_NAMES.get(task, task)}: robot {KITCHEN_ROBOTS.get((task, robot), robot)}"
+    short = "-".join(f"{letter}{n}" for (letter, _), n in zip(household.NAME_PARTS, sizes[0]))
+    return f"{short}: robot {household.VARIANT_TEXT.get(sizes[1], sizes[1])}"
+
+
+def _name_caption(tasks: list[str]) -> str:
+    """What a house's name says, spelt out on the last (largest) house of ``tasks``."""
+    houses = [(t, sizes) for t in tasks if (sizes := household.name_sizes(t)) is not None]
+    if not houses:
+        return ""
+    pattern = "-".join(f"{letter}<{what.split()[0]}>" for letter, what in household.NAME_PARTS)
+    task, (numbers, _) = houses[-1]
+    example = "-".join(f"{letter}{n}" for (letter, _), n in zip(household.NAME_PARTS, numbers))
+    spelt = ", ".join(f"{n} {what}" for (_, what), n in zip(household.NAME_PARTS, numbers))
+    return f"House tasks are named {pattern}:\ne.g. {example} has {spelt}."
+
+
 def plot(rows: list[dict], path: Path) -> Path | None:
     """Demonstrated actions per task: guided, the plain excuse, and the whole task (None without matplotlib)."""
-    from guided_lfd.reporting import PlotsUnavailable, pyplot, save_figure
-
     try:
         plt = pyplot()
     except PlotsUnavailable as exc:
         print(f"plot skipped: {exc}", file=sys.stderr)
         return None
+    from matplotlib.ticker import MaxNLocator
+
     by = {(r["task"], r["robot"], r["config"]): r for r in rows}
-    keys = sorted({(r["task"], r["robot"]) for r in rows}, key=lambda k: (not k[0].startswith("kitchen"), k))
-    fig, ax = plt.subplots(figsize=(10, 4.5))
-    width = 0.27
-    for j, (config, label) in enumerate((("guided", "guided (redundancy, preference)"),
-                                         ("excuse", "the minimal excuse"), ("unguided", "the whole task"))):
-        values = [by.get((t, r, config), {}).get("demonstrated", 0) or 0 for t, r in keys]
-        ax.bar([k + (j - 1) * width for k in range(len(keys))], values, width, label=label)
-    ax.set_xticks(range(len(keys)))
-    ax.set_xticklabels([f"{t.replace('house-', '')}\n{r}" for t, r in keys], rotation=60, ha="right", fontsize=7)
-    ax.set_ylabel("demonstrated actions")
-    ax.set_title("What the human demonstrates: guided teaching vs the whole task")
-    ax.legend()
+    keys = sorted({(r["task"], r["robot"]) for r in rows}, key=_task_order)
+    fig, ax = plt.subplots(figsize=(10, 1.5 + 0.5 * len(keys)), layout="constrained")
+    height = 0.27
+    for j, (config, colour, label) in enumerate(CONFIGS):
+        values = [int(by.get((t, r, config), {}).get("demonstrated") or 0) for t, r in keys]
+        bars = ax.barh([k + (j - 1) * height for k in range(len(keys))], values, height, color=colour, label=label)
+        ax.bar_label(bars, fontsize=7, padding=2)
+    ax.set_yticks(range(len(keys)), [_task_label(t, r) for t, r in keys], fontsize=8)
+    ax.invert_yaxis()  # the first task on top
+    ax.xaxis.set_major_locator(MaxNLocator(integer=True))  # actions are counted
+    ax.set_xlabel("demonstrated actions (all rounds of teaching)")
+    fig.suptitle("What the human demonstrates: guided teaching vs the whole task (fewer is better)")
+    ax.legend(fontsize=8, loc="upper right")  # the kitchens' bars are short: room beside them
+    fig.supxlabel(_name_caption([t for t, _ in keys]), fontsize=8)
     return save_figure(fig, path, 110)
 
 
@@ -210,7 +253,10 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--out", type=Path, default=OUT)
     parser.add_argument("--report", action="store_true", help="only rewrite summary.md and the plot from --out's "
                         "teach.csv (give the run's other options to keep its 'Regenerate with' line)")
+    parser.add_argument("--plot-only", action="store_true", help="no runs: redraw teach.png from --out's teach.csv")
     args = parser.parse_args(argv)
+    if args.plot_only:
+        return 0 if plot(read_rows(args.out / "teach.csv"), args.out / "teach.png") else 1
     rows = read_rows(args.out / "teach.csv") if args.report else run_all(args)
     given = [a for a in (argv if argv is not None else sys.argv[1:]) if a != "--report"]
     text = summary(rows, " ".join(["python benchmarks/teach_bench.py", *given]))

@@ -20,6 +20,7 @@ The module only builds text; the benchmark script writes the files.
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 
 #: The human's skills; robot domains drop some of them (see :data:`VARIANTS`).
@@ -97,6 +98,22 @@ VARIANTS: dict[str, tuple[str, ...]] = {
     "no-door": ("open_door",),
 }
 
+#: What the robot of each variant cannot do, in words (plot titles and captions).
+VARIANT_TEXT: dict[str, str] = {
+    "no-push": "cannot push obstacles aside",
+    "no-open": "cannot open drawers",
+    "no-open-no-push": "cannot open drawers or push obstacles aside",
+    "no-door": "cannot open cupboard doors",
+}
+
+#: The sizes a task name carries (:attr:`House.name`), in its order: (letter, what the number counts).
+NAME_PARTS: tuple[tuple[str, str], ...] = (
+    ("r", "rooms"), ("i", "items"), ("d", "drawers"), ("c", "cupboards"),
+    ("g", "goals (items to put into a goal container)"),
+)
+
+_NAME = re.compile(r"house-" + "-".join(rf"{letter}(\d+)" for letter, _ in NAME_PARTS) + r"-(.+)")
+
 _HEADER = """(define (domain household)
   (:requirements :strips :typing :negative-preconditions)
   (:types item furniture obstacle - object
@@ -156,6 +173,13 @@ class House:
         targets = self.rooms * (self.cupboards_per_room if self.variant == "no-door" else self.drawers_per_room)
         if self.goals > targets:
             raise ValueError(f"{self.goals} goals need at least as many goal containers (got {targets})")
+
+
+def name_sizes(name: str) -> tuple[tuple[int, ...], str] | None:
+    """The sizes (in :data:`NAME_PARTS` order) and the variant a task name (:attr:`House.name`) says; None for
+    a name that is not a house's."""
+    found = _NAME.fullmatch(name)
+    return None if found is None else (tuple(int(n) for n in found.groups()[:-1]), found.groups()[-1])
 
 
 def problem_pddl(house: House) -> str:

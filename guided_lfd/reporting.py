@@ -99,10 +99,12 @@ def pyplot() -> Any:
 
 
 def save_figure(fig: Any, path: Path, dpi: int) -> Path:
-    """Lay out ``fig``, write it as PNG without version metadata (reruns are byte-identical), close it."""
+    """Lay out ``fig`` (tightly, unless it has a layout of its own), write it as PNG without version metadata
+    (reruns are byte-identical), close it."""
     import matplotlib.pyplot as plt
 
-    fig.tight_layout()
+    if fig.get_layout_engine() is None:
+        fig.tight_layout()
     fig.savefig(path, dpi=dpi, metadata={"Software": None})
     plt.close(fig)
     return path

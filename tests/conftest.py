@@ -78,3 +78,18 @@ def damaged_tasks(tmp_path: Path, domain_text: str, problem_text: str, pieces: l
         domain.write_text(damaged if damage_domain else domain_text)
         problem.write_text(problem_text if damage_domain else damaged)
         yield str(domain), str(problem)
+
+
+def record_figures(monkeypatch: pytest.MonkeyPatch, module: object) -> dict[str, object]:
+    """Draw with ``module.save_figure`` recording each figure by file name (and still saving it)."""
+    drawn = {}
+    save = module.save_figure
+
+    def record(fig, path, dpi):
+        drawn[path.name] = fig
+        axes = fig.axes  # kept for inspection: save_figure closes the figure, not its artists
+        drawn[path.name + ":axes"] = axes
+        return save(fig, path, dpi)
+
+    monkeypatch.setattr(module, "save_figure", record)
+    return drawn

@@ -8,7 +8,7 @@ from pathlib import Path
 
 import pytest
 
-from conftest import ROOT
+from conftest import ROOT, record_figures
 from guided_lfd.study import headline, load_paper_data, reproduce, size_reduction, time_ratios
 
 
@@ -114,21 +114,6 @@ def test_the_committed_results_are_what_the_study_writes(study):
     assert [name for name in fresh if not name.endswith(".png") and fresh[name] != committed[name]] == []
 
 
-def _figures(monkeypatch, module) -> dict[str, object]:
-    """Draw with ``module.save_figure`` recording each figure by file name (and still saving it)."""
-    drawn = {}
-    save = module.save_figure
-
-    def record(fig, path, dpi):
-        drawn[path.name] = fig
-        axes = fig.axes  # kept for inspection: save_figure closes the figure, not its artists
-        drawn[path.name + ":axes"] = axes
-        return save(fig, path, dpi)
-
-    monkeypatch.setattr(module, "save_figure", record)
-    return drawn
-
-
 def test_the_study_plots_name_their_marks_and_leave_p3_out(study, monkeypatch, tmp_path):
     pytest.importorskip("matplotlib")
     import math
@@ -136,7 +121,7 @@ def test_the_study_plots_name_their_marks_and_leave_p3_out(study, monkeypatch, t
     from guided_lfd.study import report
 
     _, paper, kitchens = study
-    drawn = _figures(monkeypatch, report)
+    drawn = record_figures(monkeypatch, report)
     assert [p.name for p in report.plot(paper, kitchens, tmp_path)] == ["study-time.png", "study-sizes.png"]
     time_axes = drawn["study-time.png:axes"]
     assert [t.get_text() for t in time_axes[0].get_legend().get_texts()] == [
@@ -144,17 +129,24 @@ def test_the_study_plots_name_their_marks_and_leave_p3_out(study, monkeypatch, t
         "rendered trace (reproduced), either demonstration"]
     assert time_axes[0].get_ylabel() == "demonstration time (s)"
     sizes = drawn["study-sizes.png:axes"]
-    assert sizes[0].get_ylabel() == "size (planning actions)"
-    assert [t.get_text() for t in sizes[1].get_legend().get_texts()] == [
-        "paper (Table II)", "reproduced (planned on the learned domains)"]
-    names = [t.get_text() for t in sizes[0].get_legend().get_texts()]
-    assert names[3] == "O(G): observed, complete demonstration"
-    for ax in sizes:  # the paper's O(G) line has a gap at P3, not a segment from P2 to P4
-        og = [line for line in ax.get_lines() if line.get_marker() == "d"]
-        assert len(og) == 1
-        ys = list(og[0].get_ydata())
-        assert math.isnan(ys[2]) and not any(math.isnan(y) for y in ys[:2] + ys[3:])
-        assert any(t.get_text() == "P3: no paper value" for t in ax.texts)
+    assert [ax.get_ylabel().split(":")[0] for ax in sizes[::2]] == ["P", "O"]
+    assert [t.get_text() for t in drawn["study-sizes.png"].legends[0].get_texts()] == [
+        label for *_, label in report.SIZE_BARS]
+    for ax, (kitchen, row) in zip(sizes, [(k, row) for row in ("P", "O") for k in kitchens]):
+        assert ax.get_lines() == []  # bars only: nothing joins two demonstrators
+        assert [len(bars) for bars in ax.containers] == [5, 5, 5, 5]  # four bars per demonstrator
+        assert all(float(y).is_integer() for y in ax.get_yticks())
+        # The reproduced bar stands beside the paper's, not behind it.
+        xs = [[bar.get_x() for bar in bars] for bars in ax.containers]
+        assert all(len({group[p] for group in xs}) == 4 for p in range(5))
+        reproduced_goal = [bar.get_height() for bar in ax.containers[3]]
+        expected = ([d.predicted["goal"] for d in kitchen.demonstrators] if row == "P"
+                    else [d.demos["complete"].demonstrated_actions for d in kitchen.demonstrators])
+        assert reproduced_goal == expected
+    for ax in sizes[2:]:  # the paper has no O(G) for P3: no bar, and the gap says so
+        paper_goal = [bar.get_height() for bar in ax.containers[2]]
+        assert math.isnan(paper_goal[2]) and not any(math.isnan(y) for y in paper_goal[:2] + paper_goal[3:])
+        assert [t.get_text() for t in ax.texts if "paper" in t.get_text()] == ["P3: no paper value"]
 
 
 def test_the_benchmark_plots_label_the_limit_the_time_and_whole_sizes(monkeypatch, tmp_path):
@@ -162,13 +154,34 @@ def test_the_benchmark_plots_label_the_limit_the_time_and_whole_sizes(monkeypatc
     from guided_lfd.benchmark import read_results
     from guided_lfd.benchmark import report
 
-    drawn = _figures(monkeypatch, report)
+    drawn = record_figures(monkeypatch, report)
     rows = read_results(ROOT / "benchmarks" / "results" / "results.csv")
     first = [p.read_bytes() for p in report.plot(rows, tmp_path / "one", 60.0)]
     cactus = drawn["cactus.png:axes"][0]
-    assert "time limit (60 s per run)" in [t.get_text() for t in cactus.get_legend().get_texts()]
+    legend = [t.get_text() for t in cactus.get_legend().get_texts()]
+    assert "time limit (60 s per run)" in legend
     assert "whole run" in cactus.get_ylabel() and "whole-run" in cactus.get_title()
+    # One line per strategy and semantics, each told apart by its colour and line style.
+    series = [line for line in cactus.get_lines() if not line.get_label().startswith("time limit")]
+    assert sorted(line.get_label() for line in series) == sorted(label for label in legend
+                                                                 if not label.startswith("time limit"))
+    assert len(series) == 4 and len({(line.get_color(), line.get_linestyle()) for line in series}) == 4
     for ax in drawn["time_vs_size.png:axes"]:
         assert ax.get_xlabel().startswith("minimal excuse size")
         assert all(float(x).is_integer() for x in ax.get_xticks())
     assert [p.read_bytes() for p in report.plot(rows, tmp_path / "two", 60.0)] == first  # deterministic
+
+
+def test_a_small_cactus_plot_ticks_whole_tasks(monkeypatch, tmp_path):
+    """Two solved tasks: matplotlib's own ticks would stand at 0.5, 1.5, ... tasks."""
+    pytest.importorskip("matplotlib")
+    from guided_lfd.benchmark import ResultRow
+    from guided_lfd.benchmark import report
+
+    drawn = record_figures(monkeypatch, report)
+    rows = [ResultRow(tid, "d", "t", "a", "literal", strategy, "excuse-found", size=1, time_s=t)
+            for tid, t in (("t1", 0.2), ("t2", 0.4)) for strategy in ("landmark", "baseline")]
+    report.plot(rows, tmp_path, 60.0)
+    cactus = drawn["cactus.png:axes"][0]
+    ticks = [x for x in cactus.get_xticks() if cactus.get_xlim()[0] <= x <= cactus.get_xlim()[1]]
+    assert len(ticks) >= 2 and all(float(x).is_integer() for x in ticks)

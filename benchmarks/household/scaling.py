@@ -33,6 +33,8 @@ sys.path.insert(0, str(ROOT))
 
 from guided_lfd import household  # noqa: E402
 from guided_lfd.benchmark import cli_command, limit_section  # noqa: E402
+from guided_lfd.benchmark.report import series_style  # noqa: E402
+from guided_lfd.reporting import PlotsUnavailable, pyplot, save_figure  # noqa: E402
 
 TASKS = HERE / "tasks"
 RESULTS = HERE / "results"
@@ -174,6 +176,7 @@ def report(rows: list[dict], time_limit: float, out_dir: Path) -> str:
     lines += ["", f"Size disagreements between the strategies where both finish: {disagreements}."]
     lines += limit_section([(float(r["wall_s"]), f"{r['task']} {r['strategy']} {r['semantics']}", r["status"])
                             for r in rows if r.get("wall_s") not in ("", None)], time_limit) + [""]
+    # The slope of a strategy and semantics is over both variants' runs.
     series: dict[str, list[tuple[float, float]]] = {}
     for r in rows:
         if _solved(r) and r["task"] in actions:
@@ -184,37 +187,50 @@ def report(rows: list[dict], time_limit: float, out_dir: Path) -> str:
     for name in sorted(series):
         s = slope(series[name])
         lines.append(f"| {name} | {len(series[name])} | {'-' if s is None else f'{s:.2f}'} |")
-    plot = _plot(series, out_dir / "scaling.png", time_limit)
+    plot = _plot(rows, actions, out_dir / "scaling.png", time_limit)
     if plot:
         lines += ["", f"![scaling]({plot.name})"]
     return "\n".join(lines) + "\n"
 
 
-def _plot(series: dict[str, list[tuple[float, float]]], path: Path, time_limit: float) -> Path | None:
-    try:
-        import matplotlib
+def _plot(rows: list[dict], actions: dict[str, int], path: Path, time_limit: float) -> Path | None:
+    """A panel per robot variant: one line per (strategy, semantics), wall time against ground actions.
 
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-    except ImportError:
-        print("matplotlib missing (pip install 'guided-lfd[plots]'): no plot", file=sys.stderr)
+    The variants' tasks differ in size, so a line never joins two variants; a run that did not finish is a
+    marker at its wall time (the time limit), outside the line.
+    """
+    try:
+        plt = pyplot()
+    except PlotsUnavailable as exc:
+        print(f"no plot: {exc}", file=sys.stderr)
         return None
-    fig, ax = plt.subplots(figsize=(6.4, 4.4))
-    for name in sorted(series):
-        pts = sorted(series[name])
-        ax.plot([x for x, _ in pts], [y for _, y in pts], marker="o", label=name)
-    ax.axhline(time_limit, color="grey", linestyle=":", linewidth=1, label=f"time limit ({time_limit:g} s)")
-    ax.set_xscale("log")
-    ax.set_yscale("log")
-    ax.set_xlabel("ground actions")
-    ax.set_ylabel("whole-run wall time (s)")
-    ax.set_title("guided-lfd excuse on household tasks")
-    ax.legend(fontsize=8)
-    fig.tight_layout()
+    from matplotlib.lines import Line2D
+
+    fig, axes = plt.subplots(1, len(VARIANTS), figsize=(11, 4.8), sharey=True, layout="constrained")
+    for ax, variant in zip(axes, VARIANTS):
+        mine = [r for r in rows if r["variant"] == variant and r["task"] in actions]
+        for strategy, semantics in sorted({(r["strategy"], r["semantics"]) for r in mine}):
+            runs = sorted((actions[r["task"]], float(r["wall_s"]), _solved(r)) for r in mine
+                          if r["strategy"] == strategy and r["semantics"] == semantics)
+            style = series_style(strategy, semantics)
+            ax.plot([x for x, _, ok in runs if ok], [y for _, y, ok in runs if ok], **style)
+            ax.plot([x for x, _, ok in runs if not ok], [y for _, y, ok in runs if not ok], ls="",
+                    marker="v", markersize=9, markerfacecolor="none", color=style["color"])
+        ax.axhline(time_limit, color="grey", linestyle=":", linewidth=1)
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set_xlabel("ground actions of the task (log scale)")
+        ax.set_title(f"robot {household.VARIANT_TEXT[variant]} ({variant})", fontsize=10)
+    axes[0].set_ylabel("whole-run wall time (s, log scale)")
+    handles, labels = axes[0].get_legend_handles_labels()
+    handles += [Line2D([], [], ls="", marker="v", markerfacecolor="none", color="black"),
+                Line2D([], [], color="grey", ls=":")]
+    labels += ["not finished within the limit (the baseline is not run on larger tasks)",
+               f"time limit ({time_limit:g} s per run)"]
+    fig.legend(handles, labels, loc="outside lower center", ncol=2, fontsize=8)
+    fig.suptitle("guided-lfd excuse on the household series: one line per strategy and semantics")
     path.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(path, dpi=120, metadata={"Software": None})
-    plt.close(fig)
-    return path
+    return save_figure(fig, path, 120)
 
 
 def main(argv: list[str] | None = None) -> int:

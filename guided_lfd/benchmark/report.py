@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import statistics
 from pathlib import Path
+from typing import Any
 
 from guided_lfd.benchmark.results import SOLVED, ResultRow
 from guided_lfd.benchmark.analysis import (NONTRIVIAL_S, SIZE_BUCKETS, SIZE_COUNTS, Comparison, compare, speedups_by_size,
@@ -13,45 +14,79 @@ from guided_lfd.reporting import markdown_table, plots_markdown, pyplot, save_fi
 #: Resolution of the benchmark's PNG plots.
 DPI = 120
 
+#: How every benchmark plot draws a strategy (colour, marker, legend name); one colour per strategy in all plots.
+STRATEGY_STYLE: dict[str, tuple[str, str, str]] = {
+    "landmark": ("tab:orange", "o", "landmark (default)"),
+    "baseline": ("tab:blue", "x", "baseline (the paper's method)"),
+}
+
+#: How every benchmark plot draws a semantics (line style): one line per (strategy, semantics), told apart.
+SEMANTICS_STYLE: dict[str, str] = {"literal": "-", "consistent": "--"}
+
+
+def series_style(strategy: str, semantics: str) -> dict[str, str | None]:
+    """Keyword arguments for the line of one (strategy, semantics) series: colour, marker, line style, label.
+
+    A strategy or semantics without a style of its own gets matplotlib's next colour, a plain marker and a
+    dotted line, still under its own name.
+    """
+    colour, marker, name = STRATEGY_STYLE.get(strategy, (None, ".", strategy))
+    return {"color": colour, "marker": marker, "linestyle": SEMANTICS_STYLE.get(semantics, ":"),
+            "label": f"{name}, {semantics} semantics"}
+
 
 def plot(rows: list[ResultRow], folder: Path, time_limit: float) -> list[Path]:
     """Cactus plot and time-vs-size plot as PNG files (:class:`~guided_lfd.reporting.PlotsUnavailable` without
     matplotlib: the caller skips them and passes ``plots=None`` to :func:`summary_markdown`)."""
     plt = pyplot()
+    folder.mkdir(parents=True, exist_ok=True)
+    return [_cactus(plt, rows, folder / "cactus.png", time_limit), _time_vs_size(plt, rows, folder / "time_vs_size.png")]
+
+
+def _cactus(plt: Any, rows: list[ResultRow], path: Path, time_limit: float) -> Path:
+    """Per (strategy, semantics), one step line: the n-th fastest solved task's whole-run time against n."""
     from matplotlib.ticker import MaxNLocator
 
-    folder.mkdir(parents=True, exist_ok=True)
-    configs = sorted({(r.strategy, r.semantics) for r in rows})
-    fig, ax = plt.subplots(figsize=(6.4, 4.2))
-    for st, se in configs:
+    fig, ax = plt.subplots(figsize=(6.8, 5.0))
+    for st, se in sorted({(r.strategy, r.semantics) for r in rows}):
         times = sorted(whole_run_s(r) for r in rows
                        if r.strategy == st and r.semantics == se and r.status in SOLVED)
-        ax.step(range(1, len(times) + 1), times, where="post", label=f"{st} ({se})")
+        style = series_style(st, se)
+        del style["marker"]  # hundreds of steps: markers would hide the line
+        ax.step(range(1, len(times) + 1), times, where="post", **style)
     ax.set_yscale("log")
-    ax.set_xlabel("tasks solved")
+    ax.xaxis.set_major_locator(MaxNLocator(integer=True))  # tasks are counted: no tick at 1.5 tasks
+    ax.set_xlabel("tasks solved (fastest first)")
     # whole_run_s: the time the summary's "whole run" columns use (not the search phase alone).
     ax.set_ylabel("whole run per task (s, log scale)")
-    ax.axhline(time_limit, color="grey", lw=0.8, ls="--", label=f"time limit ({time_limit:g} s per run)")
-    ax.set_title("Cactus plot: whole-run time of the solved tasks")
-    ax.legend(fontsize=8)
-    cactus = save_figure(fig, folder / "cactus.png", DPI)
+    ax.axhline(time_limit, color="grey", lw=0.8, ls=":", label=f"time limit ({time_limit:g} s per run)")
+    ax.set_title("Cactus plot: whole-run time of the solved tasks\n(further right = more tasks solved; "
+                 "lower = faster)", fontsize=10)
+    ax.legend(fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.16), ncol=2)  # below: not over the lines
+    return save_figure(fig, path, DPI)
+
+
+def _time_vs_size(plt: Any, rows: list[ResultRow], path: Path) -> Path:
+    """A panel per semantics: each found excuse's whole-run time against its size, a marker per strategy."""
+    from matplotlib.ticker import MaxNLocator
+
     fig, axes = plt.subplots(1, 2, figsize=(9, 4.0), sharey=True)
     for ax, se in zip(axes, sorted({r.semantics for r in rows})):
-        for st, marker in (("baseline", "x"), ("landmark", "o")):
+        for st in sorted({r.strategy for r in rows}):
             pts = [(r.size, whole_run_s(r)) for r in rows
                    if r.strategy == st and r.semantics == se and r.status == "excuse-found"]
             if pts:
                 xs, ys = zip(*pts)
-                ax.scatter(xs, ys, marker=marker, alpha=0.6, label=st)
+                colour, marker, name = STRATEGY_STYLE.get(st, (None, ".", st))
+                ax.scatter(xs, ys, marker=marker, color=colour, alpha=0.6, label=name)
         ax.set_yscale("log")
         ax.set_xlabel("minimal excuse size (changes)")
         ax.xaxis.set_major_locator(MaxNLocator(integer=True, steps=[1, 2, 5, 10]))
         ax.set_title(f"{se} semantics")
         ax.legend(fontsize=8)
     axes[0].set_ylabel("whole run (s, log scale)")
-    fig.suptitle("Whole-run time vs minimal excuse size (tasks with an excuse found)")
-    scatter = save_figure(fig, folder / "time_vs_size.png", DPI)
-    return [cactus, scatter]
+    fig.suptitle("Whole-run time vs minimal excuse size (one mark per run that found an excuse)")
+    return save_figure(fig, path, DPI)
 
 
 def _parts_table(rows: list[ResultRow]) -> list[str]:

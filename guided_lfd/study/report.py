@@ -108,47 +108,63 @@ def _plot_times(plt: Any, paper: PaperData, kitchens: list[KitchenResult], path:
     return save_figure(fig, path, DPI)
 
 
-def _plot_sizes(plt: Any, paper: PaperData, kitchens: list[KitchenResult], path: Path) -> Path:
-    """Table II: predicted (P) and observed (O) sizes; dashed the paper's, solid reproduced.
+#: Table II's quantities as the sizes plot draws them: (row of panels, what it measures, [(target, the paper's
+#: key, the reproduced value)]); a target is "excuse" (E, the excuse demonstration) or "goal" (G, the complete one).
+SIZE_ROWS: list[tuple[str, str, list[tuple[str, str, Any]]]] = [
+    ("predicted (P)", "P: predicted size\n(optimal plan, actions)",
+     [("excuse", "predicted_minimal_excuse", lambda d: d.predicted["minimal_excuse"]),
+      ("goal", "predicted_goal", lambda d: d.predicted["goal"])]),
+    ("observed (O)", "O: observed size\n(demonstrated actions)",
+     [("excuse", "observed_minimal_excuse", lambda d: d.demos["excuse"].demonstrated_actions),
+      ("goal", "observed_goal", lambda d: d.demos["complete"].demonstrated_actions)]),
+]
 
-    A missing value (the paper has no O for P3's complete demonstrations) is a gap in its line, not a line
-    drawn past it.
+#: Each bar of a demonstrator's group in the sizes plot: (target, source, colour, hatch, legend entry).
+SIZE_BARS: list[tuple[str, str, str, str, str]] = [
+    ("excuse", "paper", "#b7e4b7", "///", "E (to the minimal excuse; excuse demonstration): paper"),
+    ("excuse", "reproduced", "tab:green", "", "E (to the minimal excuse; excuse demonstration): reproduced"),
+    ("goal", "paper", "#f2b8b8", "///", "G (to the goal; complete demonstration): paper"),
+    ("goal", "reproduced", "tab:red", "", "G (to the goal; complete demonstration): reproduced"),
+]
+
+
+def _plot_sizes(plt: Any, paper: PaperData, kitchens: list[KitchenResult], path: Path) -> Path:
+    """Table II as grouped bars: a row of panels for P (predicted) and one for O (observed), a column per kitchen.
+
+    Each demonstrator has its own group of four bars (E and G, the paper's hatched beside the reproduced), so
+    no mark joins two demonstrators and no reproduced value hides behind the paper's.  A missing paper value
+    (the paper has no O(G) for P3) is no bar, and the gap says so.
     """
-    from matplotlib.lines import Line2D
     from matplotlib.ticker import MaxNLocator
 
-    fig, axes = plt.subplots(1, 2, figsize=(10, 4.6), sharey=True)
-    quantities = [  # (key in the paper's table, reproduced values or None, name, marker, colour)
-        ("predicted_minimal_excuse", lambda d: d.predicted["minimal_excuse"],
-         "P(E): predicted, to the minimal excuse", "o", "tab:green"),
-        ("observed_minimal_excuse", None, "O(E): observed, excuse demonstration", "s", "tab:blue"),
-        ("predicted_goal", lambda d: d.predicted["goal"], "P(G): predicted, to the goal", "^", "tab:red"),
-        ("observed_goal", None, "O(G): observed, complete demonstration", "d", "tab:purple"),
-    ]
-    nan = float("nan")
-    xs = list(range(len(DEMONSTRATORS)))
-    for ax, k in zip(axes, kitchens):
-        for key, ours, _, marker, colour in quantities:
-            theirs = [paper.sizes[(k.kitchen, p)][key] for p in DEMONSTRATORS]
-            ax.plot(xs, [nan if y is None else y for y in theirs], marker=marker, ls="--", color=colour)
-            if ours is not None:
-                ax.plot(xs, [nan if (y := ours(d)) is None else y for d in k.demonstrators], marker=marker, ls="-",
-                        color=colour)
-            for x, y in enumerate(theirs):
-                if y is None:  # say so in the gap, halfway between the neighbours
-                    near = [v for v in theirs[max(x - 1, 0):x + 2] if v is not None]
-                    ax.annotate(f"{DEMONSTRATORS[x]}: no paper value", (x, statistics.fmean(near) if near else 0),
-                                ha="center", va="center", fontsize=7, color=colour)
-        ax.set_xticks(xs, DEMONSTRATORS)
-        ax.set_xlabel("demonstrator")
-        ax.yaxis.set_major_locator(MaxNLocator(integer=True, steps=[1, 2, 5, 10]))
-        ax.set_title(f"{KITCHEN_NAMES[k.kitchen]}: demonstration size (Table II)")
-    axes[0].set_ylabel("size (planning actions)")
-    axes[0].legend([Line2D([], [], marker=m, ls="", color=c) for _, _, _, m, c in quantities],
-                   [name for _, _, name, _, _ in quantities], fontsize=7, loc="upper right")
-    axes[1].legend([Line2D([], [], ls="--", color="black"), Line2D([], [], ls="-", color="black")],
-                   ["paper (Table II)", "reproduced (planned on the learned domains)"], fontsize=7,
-                   loc="upper right")
+    fig, axes = plt.subplots(2, 2, figsize=(10, 6.6), sharex=True, sharey="row", layout="constrained")
+    width, xs = 0.2, range(len(DEMONSTRATORS))
+    for (measure, ylabel, quantities), row in zip(SIZE_ROWS, axes):
+        for ax, k in zip(row, kitchens):
+            for j, (target, source, colour, hatch, label) in enumerate(SIZE_BARS):
+                key, ours = next((key, ours) for t, key, ours in quantities if t == target)
+                values = ([paper.sizes[(k.kitchen, p)][key] for p in DEMONSTRATORS] if source == "paper"
+                          else [ours(d) for d in k.demonstrators])
+                at = [x + (j - 1.5) * width for x in xs]
+                bars = ax.bar(at, [float("nan") if v is None else v for v in values], width, color=colour,
+                              hatch=hatch, edgecolor="black", linewidth=0.5, label=label)
+                ax.bar_label(bars, ["" if v is None else str(v) for v in values], fontsize=6, padding=1)
+                for x, p, v in zip(at, DEMONSTRATORS, values):
+                    if v is None:  # say so in the gap
+                        ax.annotate(f"{p}: no paper value", (x, 0.5), rotation=90, ha="center", va="bottom",
+                                    fontsize=7)
+            ax.yaxis.set_major_locator(MaxNLocator(integer=True, steps=[1, 2, 5, 10]))
+            ax.margins(y=0.12)  # room for the value labels
+            ax.set_title(f"{KITCHEN_NAMES[k.kitchen]}: {measure}", fontsize=10)
+        row[0].set_ylabel(ylabel)
+    for ax in axes[1]:
+        ax.set_xticks(list(xs), DEMONSTRATORS)
+        ax.set_xlabel("demonstrator (each group of bars is one person)")
+    handles, labels = axes[0][0].get_legend_handles_labels()
+    fig.legend(handles, labels, loc="outside lower center", ncol=2, fontsize=8)
+    fig.suptitle("Demonstration size (Table II): the paper's (hatched) beside the reproduced (solid)\n"
+                 "reproduced P: planned on the learned domains; reproduced O: actions learned from the rendered "
+                 "demonstrations (padded to the paper's O)", fontsize=10)
     return save_figure(fig, path, DPI)
 
 
