@@ -154,3 +154,14 @@ def test_svg_to_stdout_only_when_the_result_goes_elsewhere(runner, app, tmp_path
     assert _facts(ET.fromstring(result.stdout.split("\n", 1)[1]), "added") == ["+(open pinkdrawer)"]
     assert (tmp_path / "e.txt").read_text().startswith("Minimal excuse")
 
+
+def test_teach_draws_each_round_and_reuses_its_session_folder(runner, app, tmp_path):
+    robot, problem = kitchen(2)
+    human = str(Path(robot).with_name("human.pddl"))
+    for _ in range(2):  # the second run replaces the first session, pictures included
+        result = runner.invoke(app, ["teach", robot, problem, "--simulate", human, "-o", str(tmp_path), "-q"])
+        assert result.exit_code == 0, result.output
+    picture = tmp_path / "round-1" / "excuse.svg"
+    assert _facts(ET.parse(picture).getroot(), "added") == ["+(clear pinkdrawer)"]
+    rounds = json.loads((tmp_path / "session.json").read_text())["rounds"]
+    assert rounds[0]["files"]["picture"] == str(picture)
