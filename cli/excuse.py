@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from typing import Annotated
+from typing import Annotated, Any
 
 import typer
 
@@ -21,6 +21,16 @@ from guided_lfd.io import write_text
 from guided_lfd.pddl.fit import check_model_fits
 from guided_lfd.pddl.reader import parse_domain, parse_task
 from guided_lfd.pddl.writer import problem_to_pddl
+
+def _picture_option(name: str, what: str) -> Any:
+    """A ``--svg``/``--dot`` option: the excuse's picture, in one format, into FILE."""
+    return typer.Option(name, metavar="FILE", help=f"Also {what} into FILE ('-' = stdout).")
+
+
+SvgOption = Annotated[str | None, _picture_option("--svg", "draw the initial state and the excuse state side by "
+                                                            "side, the changed facts marked, as SVG")]
+DotOption = Annotated[str | None, _picture_option("--dot", "write that picture as Graphviz DOT")]
+
 
 @help_footer(
     example="guided-lfd excuse data/domains/kitchen-1/robot.pddl \\\n    data/domains/kitchen-1/problem.pddl",
@@ -78,6 +88,8 @@ def excuse(
                                  help="Also write the problem with the excuse state as its initial state to FILE "
                                       "('-' = stdout).")
     ] = None,
+    svg: SvgOption = None,
+    dot: DotOption = None,
     output: OutputOption = "-",
     json_out: JsonOption = False,
     time_limit: TimeLimitOption = None,
@@ -105,7 +117,7 @@ def excuse(
     time_limit = check_time_limit(time_limit)
     apply_memory_limit(memory_limit)
     check_files([domain, problem, invariants_from, fixed_from, human],
-                {"--output": output, "--excuse-problem": excuse_problem})
+                {"--output": output, "--excuse-problem": excuse_problem, "--svg": svg, "--dot": dot})
     # The time limit bounds the whole run: reading the files counts too.
     started = started_at()
     with watchdog(deadline_after(time_limit, started), "reading the input"):
@@ -137,6 +149,10 @@ def excuse(
         header = (f"Excuse state of {problem} for {domain} ({report.semantics.value} semantics):\n"
                   + "\n".join(f"  {c}" for c in report.excuse.changes))
         write_text(excuse_problem, problem_to_pddl(prob, report.excuse.state, header=header))
+    if svg:  # every outcome has a picture: without an excuse, the initial state and why
+        write_text(svg, report.to_svg())
+    if dot:
+        write_text(dot, report.to_dot())
     stats = report.statistics
     ui.info(f"[dim]{report.strategy} search: {stats.candidates or 0} candidate(s), "
             f"{stats.planner_calls or 0} reachability check(s), {stats.time_s or 0:.2f} s[/]")

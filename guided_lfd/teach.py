@@ -441,6 +441,7 @@ def _rounds(robot: Domain, problem: Problem, demonstrator: Demonstrator, out: Pa
             task = replace(problem, init=state)
             report = find_excuses(current, task, replace(options, time_limit=_left(deadline)))
             write_text(folder / "excuse.json", report.to_json())
+            write_text(folder / "excuse.svg", report.to_svg())
             if report.status is ExcuseStatus.ALREADY_SOLVABLE:
                 status, final_plan = ("already-solvable" if k == 1 else "solved"), report.robot_plan
                 break
@@ -452,7 +453,7 @@ def _rounds(robot: Domain, problem: Problem, demonstrator: Demonstrator, out: Pa
             rnd = (_new_skill_request(k, current, task, report) if report.excuse is None else
                    _request(k, current, task, report, human if prefer else None, human if redundancy else None, human,
                             deadline))
-            rnd.files["excuse"] = str(folder / "excuse.json")
+            rnd.files.update(excuse=str(folder / "excuse.json"), picture=str(folder / "excuse.svg"))
             rounds.append(rnd)
             if on_request:
                 on_request(rnd)

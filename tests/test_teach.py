@@ -50,8 +50,8 @@ def test_simulated_teaching_solves_each_kitchen_in_one_round(k, asked, learned, 
     assert doc["rounds"][0]["request"] == asked and doc["rounds"][0]["learned_actions"] == learned
     assert doc["rounds"][0]["request_met"] is True and doc["rounds"][0]["demonstration_length"] == 1
     # Every round's files are there, and the taught domain plans the task.
-    for name in ("excuse.json", "demonstration.csv", "demonstration.state.csv", "segments.json", "learned.pddl",
-                 "robot.pddl"):
+    for name in ("excuse.json", "excuse.svg", "demonstration.csv", "demonstration.state.csv", "segments.json",
+                 "learned.pddl", "robot.pddl"):
         assert (tmp_path / "round-1" / name).stat().st_size > 0, name
     taught, task = parse_task(str(tmp_path / "robot.pddl"), problem)
     assert {a.name for a in taught.actions} >= set(learned)

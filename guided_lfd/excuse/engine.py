@@ -170,6 +170,20 @@ class ExcuseReport:
             raise ValueError("a report made without its problem has no text form")
         return excuse_text(self, self.problem, self.spellings)
 
+    def to_svg(self) -> str:
+        """The first excuse as a picture, SVG: the initial state and the excuse state side by side, the changed
+        facts marked (what ``guided-lfd excuse --svg`` writes; see :mod:`guided_lfd.excuse.picture`)."""
+        from guided_lfd.excuse.picture import excuse_scene
+        from guided_lfd.excuse.svg import scene_svg
+
+        return scene_svg(excuse_scene(self))
+
+    def to_dot(self) -> str:
+        """The same picture as Graphviz DOT text (what ``guided-lfd excuse --dot`` writes)."""
+        from guided_lfd.excuse.picture import excuse_scene, scene_dot
+
+        return scene_dot(excuse_scene(self))
+
 
 def check_option_names(domain: Domain, options: ExcuseOptions) -> None:
     """Reject unknown predicates in --fixed and --cost, and options the strategy lacks, before any expensive work."""
