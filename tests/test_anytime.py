@@ -111,6 +111,21 @@ def test_the_baseline_has_no_best_excuse_and_says_so(monkeypatch):
     assert report.to_dict()["best_candidate"] is None
 
 
+@pytest.mark.parametrize("more, words", [
+    ({"costs": ["clear=2"]}, "no excuse cheaper than 2 (proven)"),
+    ({"max_size": 3}, "no excuse smaller than 2 changes within --max-size 3 (proven)"),
+])
+def test_the_bound_speaks_of_costs_under_cost_and_of_the_size_limit(monkeypatch, more, words):
+    domain, problem = blocks_without_unstack()
+    opts = ExcuseOptions(strategy="baseline", **more)
+    minimal = find_excuses(domain, problem, opts).excuse.cost
+    ticking_clock(monkeypatch, 0.1)
+    report = find_excuses(domain, problem, replace(opts, time_limit=20.0))
+    assert report.statistics.lower_bound <= minimal
+    message = report.to_dict()["message"]
+    assert message == f"time limit reached before a minimal excuse was found; {words}; none found so far"
+
+
 def test_a_search_that_ends_in_time_drops_the_probes_excuse(monkeypatch):
     # The probe runs (at 3/4 of the time), the search then finds the minimal excuse before its deadline.
     domain, problem = logistics_without_driving()

@@ -61,6 +61,6 @@ class ProgressMeter:
 
     def _send(self, **changed: object) -> None:
         now = time.monotonic()
-        self.current = replace(self.current, **changed, elapsed_s=round(now - self.started, 3))  # type: ignore[arg-type]
+        self.current = replace(self.current, **changed, elapsed_s=round(now - self.started, 3))  # type: ignore
         self.next_at = now + 1.0 / REPORTS_PER_SECOND
         self.callback(self.current)
