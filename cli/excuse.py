@@ -13,8 +13,9 @@ from cli.common import (
 )
 from guided_lfd import errors
 from guided_lfd.deadline import deadline_after, watchdog
-from guided_lfd.excuse.document import cut_short, excuse_summary
+from guided_lfd.excuse.document import candidate_text, cut_short, excuse_summary
 from guided_lfd.excuse.engine import ExcuseOptions, ExcuseReport, find_excuses
+from guided_lfd.excuse.progress import Progress as SearchProgress
 from guided_lfd.excuse.space import Semantics
 from guided_lfd.excuse.strategies import DEFAULT_STRATEGY, STRATEGIES
 from guided_lfd.io import write_text
@@ -141,7 +142,10 @@ def excuse(
     code = report.status.exit_code
     # Every outcome is a document (its status says what happened: a timed-out
     # run says how far it got); a non-zero one also gets its reason on stderr.
-    emit(output, text, excuse_summary(report, spellings) if code else None, structured=as_json)
+    # A timed-out run's best excuse is more than the reason: text on stdout
+    # gets it (the reason goes to stderr only).
+    best = "" if as_json or output != "-" else candidate_text(report, prob, spellings)
+    emit(output, best or text, excuse_summary(report, spellings) if code else None, structured=as_json or bool(best))
     if as_json:  # the text says it itself
         for note in cut_short(report):
             ui.info_plain(f"warning: {note}")
@@ -178,19 +182,26 @@ def _prefer(report: ExcuseReport, human, dom, prob, keep_all: bool, deadline: fl
 
 
 def _run(dom, prob, options: ExcuseOptions) -> ExcuseReport:
-    if ui.quiet or plain_stderr():  # no spinner; and rich need not be asked
+    if ui.quiet or plain_stderr():  # no status line; and rich need not be asked
         return find_excuses(dom, prob, options)
     console = ui.console
     if not console.is_terminal:
         return find_excuses(dom, prob, options)
-    # Only a terminal gets the spinner: rich.progress is imported here, not at start-up.
+    # Only a terminal gets the status line: rich.progress is imported here, not at start-up.
     from rich.progress import Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
 
     with Progress(SpinnerColumn(), TextColumn("{task.description}"), TimeElapsedColumn(),
                   console=console, transient=True) as bar:
         job = bar.add_task("grounding", total=None)
+        return find_excuses(dom, prob, options, lambda p: bar.update(job, description=progress_line(p)))
 
-        def progress(message: str, candidates: int, bound: float) -> None:
-            bar.update(job, description=f"{message}: {candidates} candidates checked")
 
-        return find_excuses(dom, prob, options, progress)
+def progress_line(progress: SearchProgress) -> str:
+    """The status line for one progress report: the phase, then what the search has proven and done."""
+    if progress.lower_bound is None:
+        return progress.phase
+    line = (f"{progress.phase}: lower bound {progress.lower_bound}, {progress.nodes:,} nodes, "
+            f"{progress.oracle_calls:,} reachability checks")
+    if progress.best_cost is not None:
+        line += f", best excuse so far costs {progress.best_cost}"
+    return line

@@ -11,7 +11,7 @@ from cli.common import (
     check_time_limit, command, emit, help_footer, output_format,
     started_at, ui,
 )
-from guided_lfd.deadline import deadline_after, remaining, watchdog
+from guided_lfd.deadline import deadline_after, seconds_left, watchdog
 from guided_lfd import errors
 from guided_lfd.errors import EXIT_UNSOLVABLE, OptionError
 from guided_lfd.api import plan as plan_and_validate
@@ -58,7 +58,7 @@ def plan(
     with watchdog(deadline, "plan"):
         dom, prob = parse_task(domain, problem)
         ui.reading_warnings(dom)
-        report = plan_and_validate(dom, prob, search, remaining(deadline))
+        report = plan_and_validate(dom, prob, search, seconds_left(deadline, "plan"))
     if not report.solved:
         reason = f"unsolvable: exhaustive {search} search found no plan ({report.time_s:.2f} s)"
         if json_out:

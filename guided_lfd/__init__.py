@@ -30,6 +30,7 @@ _EXPORTS = {
     "ExcuseOptions": "guided_lfd.excuse.engine",
     "ExcuseReport": "guided_lfd.excuse.engine",
     "Excuse": "guided_lfd.excuse.engine",
+    "Progress": "guided_lfd.excuse.progress",
     "Semantics": "guided_lfd.excuse.space",
     "Change": "guided_lfd.excuse.change",
     "PlanStep": "guided_lfd.validation",
@@ -46,6 +47,7 @@ if TYPE_CHECKING:  # for type checkers and IDEs; at run time __getattr__ loads t
     from guided_lfd.errors import GuidedLfdError
     from guided_lfd.excuse.change import Change
     from guided_lfd.excuse.engine import Excuse, ExcuseOptions, ExcuseReport, find_excuses
+    from guided_lfd.excuse.progress import Progress
     from guided_lfd.excuse.space import Semantics
     from guided_lfd.pddl.model import Domain, Problem
     from guided_lfd.validation import PlanStep, ValidationReport

@@ -147,3 +147,18 @@ def test_a_timed_out_search_ends_within_the_limit_from_the_shell(tmp_path):
     wall = time.monotonic() - start
     assert out.returncode == EXIT_TIME_LIMIT and json.loads(out.stdout)["status"] == "timeout"
     assert wall < 3.0
+
+
+def test_plan_past_its_deadline_after_reading_is_a_time_limit_not_an_option_error(runner, app, monkeypatch):
+    # Reading ends after the deadline but before the watchdog's grace (a loaded machine): the planner's time
+    # left is negative. Without the watchdog and with a start 10 s ago, that moment is the same on any machine.
+    import contextlib
+
+    import cli.plan
+    from conftest import kitchen
+
+    monkeypatch.setattr(cli.plan, "watchdog", lambda *args, **kwargs: contextlib.nullcontext())
+    monkeypatch.setattr(cli.plan, "started_at", lambda: time.monotonic() - 10)
+    result = runner.invoke(app, ["plan", *kitchen(1, "human"), "--time-limit", "5"])
+    assert result.exit_code == EXIT_TIME_LIMIT, result.output
+    assert result.stderr == "time limit: plan exceeded the time limit\n"

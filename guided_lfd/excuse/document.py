@@ -16,7 +16,7 @@ from guided_lfd.io import read_json_document
 from guided_lfd.excuse.status import ExcuseStatus
 from guided_lfd.pddl.model import Atom, Domain, Problem
 
-__all__ = ["excuse_document", "excuse_summary", "excuse_text", "read_excuse", "cut_short"]
+__all__ = ["candidate_text", "excuse_document", "excuse_summary", "excuse_text", "read_excuse", "cut_short"]
 
 
 def excuse_summary(report: ExcuseReport, spellings: dict[str, str]) -> str:
@@ -40,8 +40,34 @@ def excuse_summary(report: ExcuseReport, spellings: dict[str, str]) -> str:
     if report.status is ExcuseStatus.NONE_WITHIN_SIZE:
         return "no excuse within --max-size; a larger change or a new skill is needed"
     if report.status is ExcuseStatus.TIMEOUT:
-        return "time limit reached before a minimal excuse was found"
+        return "time limit reached before a minimal excuse was found" + _timeout_words(report)
     return ""
+
+
+def _timeout_words(report: ExcuseReport) -> str:
+    """What a timed-out search proved and found: ``; no excuse smaller than 3 changes (proven); ...``."""
+    bound = report.statistics.lower_bound
+    if bound is None:  # the time ran out before the search
+        return ""
+    within = f" within --max-size {report.max_size}" if report.max_size is not None else ""
+    smaller = f"smaller than {_changes_words(bound)}" if report.unit_costs else f"cheaper than {bound}"
+    out = f"; no excuse {smaller}{within} (proven)"
+    best = report.best_candidate
+    if best is None:
+        return out + "; none found so far"
+    return out + f"; {_candidate_kind(best)}: size {best.size}, cost {best.cost}"
+
+
+def _changes_words(n: int) -> str:
+    """``1 change``, ``3 changes``."""
+    return f"{n} change" if n == 1 else f"{n} changes"
+
+
+def _candidate_kind(best: Excuse) -> str:
+    """How a timed-out run's best excuse is introduced: minimal only when its cost meets the lower bound."""
+    if best.proven_minimal:
+        return "best excuse found so far (minimal: it meets the lower bound)"
+    return "best excuse found so far (not proven minimal)"
 
 
 def _excuse_dict(e: Excuse, spellings: dict[str, str]) -> dict[str, Any]:
@@ -75,6 +101,9 @@ def excuse_document(report: ExcuseReport, domain: str, problem: str, spellings: 
         "preference": report.preference,
         "excuse": _excuse_dict(first, spellings) if first else None,
         "alternatives": [_excuse_dict(e, spellings) for e in report.excuses[1:]],
+        "best_candidate": (None if report.best_candidate is None else
+                           {**_excuse_dict(report.best_candidate, spellings),
+                            "proven_minimal": report.best_candidate.proven_minimal}),
         "robot_plan": None if report.robot_plan is None else [str(step) for step in report.robot_plan],
         "robot_plan_cost": report.robot_plan_cost,
         "unachievable_goals": [str(g) for g in report.unachievable_goals],
@@ -99,7 +128,7 @@ def excuse_text(report: ExcuseReport, prob: Problem, spellings: dict[str, str]) 
         lines += [f"  {i}. {step}" for i, step in enumerate(plan, 1)]
         return "\n".join(lines) + "\n"
     if not report.excuses:
-        return f"{name}: {excuse_summary(report, spellings)}\n"
+        return f"{name}: {excuse_summary(report, spellings)}\n" + candidate_text(report, prob, spellings)
     if report.preference:
         lines.append(f"{name}: {report.preference}.")
     total = len(report.excuses)
@@ -109,17 +138,32 @@ def excuse_text(report: ExcuseReport, prob: Problem, spellings: dict[str, str]) 
         else:
             kind = "Minimal excuse" if e.cost == min(x.cost for x in report.excuses) else "Excuse within the slack"
         which = f"{kind} {k} of {total}" if total > 1 else kind
-        lines.append(f"{which} for {name} (size {e.size}, cost {e.cost}): demonstrate how to reach")
-        width = max(len(describe_change(c, spellings)) for c in e.changes)
-        for c in e.changes:
-            lines.append(f"  {describe_change(c, spellings):<{width}}   {c}")
-        kind = "optimal, validated" if e.plan_optimal else "validated"
-        lines.append(f"then the robot's own plan ({_steps_words(len(e.plan))}{_cost_words(e.plan_cost, prob)}, {kind}):")
-        lines += [f"  {i}. {step}" for i, step in enumerate(e.plan, 1)]
+        lines += _excuse_lines(f"{which} for {name} (size {e.size}, cost {e.cost})", e, prob, spellings)
         if k < total:
             lines.append("")
     lines += [f"({note})" for note in cut_short(report)]
     return "\n".join(lines) + "\n"
+
+
+def candidate_text(report: ExcuseReport, prob: Problem, spellings: dict[str, str]) -> str:
+    """A timed-out run's best excuse as the text shows it (empty when there is none)."""
+    best = report.best_candidate
+    if best is None:
+        return ""
+    kind = _candidate_kind(best)
+    title = f"{kind[:1].upper()}{kind[1:-1]}; size {best.size}, cost {best.cost})"
+    return "\n".join(_excuse_lines(title, best, prob, spellings)) + "\n"
+
+
+def _excuse_lines(title: str, e: Excuse, prob: Problem, spellings: dict[str, str]) -> list[str]:
+    """An excuse's lines: ``title``, its changes, then the robot's plan from its state."""
+    lines = [f"{title}: demonstrate how to reach"]
+    width = max(len(describe_change(c, spellings)) for c in e.changes)
+    lines += [f"  {describe_change(c, spellings):<{width}}   {c}" for c in e.changes]
+    kind = "optimal, validated" if e.plan_optimal else "validated"
+    lines.append(f"then the robot's own plan ({_steps_words(len(e.plan))}{_cost_words(e.plan_cost, prob)}, {kind}):")
+    lines += [f"  {i}. {step}" for i, step in enumerate(e.plan, 1)]
+    return lines
 
 
 def _steps_words(n: int) -> str:

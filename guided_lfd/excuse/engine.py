@@ -19,15 +19,17 @@ from guided_lfd.deadline import checked_time_limit, deadline_after, linger, ling
 from guided_lfd.errors import SearchTimeout
 from guided_lfd.excuse.change import Change, excuse_state
 from guided_lfd.excuse.check import check_excuse
+from guided_lfd.excuse import strategies
 from guided_lfd.excuse.lmcut import RelaxedExcuseTask
 from guided_lfd.excuse.prepare import prepare
+from guided_lfd.excuse.progress import ProgressCallback, ProgressMeter
 from guided_lfd.excuse.reach import ReachabilityOracle
 from guided_lfd.excuse.space import (
     ChangeSpace, MutexGroup, Semantics, check_cost_predicates, check_fixed,
 )
 from guided_lfd.excuse.statistics import ExcuseStatistics
 from guided_lfd.excuse.status import ExcuseStatus
-from guided_lfd.excuse.strategies import DEFAULT_STRATEGY, STRATEGIES, Progress, SearchLimits
+from guided_lfd.excuse.strategies import DEFAULT_STRATEGY, STRATEGIES, Probe, SearchLimits
 from guided_lfd.grounding import GroundAction, GroundTask, bits
 from guided_lfd.optimal import certified_optimal, shorten_plan
 from guided_lfd.pddl.fit import check_model_fits
@@ -37,6 +39,12 @@ from guided_lfd.validation import PlanStep, validated
 
 #: ``--all`` lists at most this many excuses (and says so in ``statistics.truncated`` when it stops there).
 MAX_EXCUSES = 1000
+
+#: With a time limit, a search that has found no excuse when this share of its time is used pauses once for a
+#: greedy search for any excuse (reported, not proven minimal, if the time runs out), for at most
+#: :data:`PROBE_SHARE` of its time; the minimal-excuse search then goes on.
+PROBE_AT = 0.75
+PROBE_SHARE = 0.125
 
 
 @dataclass
@@ -104,6 +112,9 @@ class Excuse:
     plan_optimal: bool
     #: The plan's cost: its length, or its total-cost under the problem's metric (:action-costs).
     plan_cost: int | None = None
+    #: False for a timed-out run's best candidate (``ExcuseReport.best_candidate``) whose cost does not meet
+    #: the proven lower bound.
+    proven_minimal: bool = True
 
     @property
     def size(self) -> int:
@@ -135,6 +146,12 @@ class ExcuseReport:
     #: The task asked about (its paths and spellings go into the document).
     domain: Domain | None = field(default=None, repr=False)
     problem: Problem | None = field(default=None, repr=False)
+    #: A timed-out run: the cheapest excuse found (checked like every excuse), usually not proven minimal.
+    best_candidate: Excuse | None = None
+    #: Every change costs 1 (no ``--cost``): a cost is a number of changes.
+    unit_costs: bool = True
+    #: The run's ``max_size`` (a lower bound speaks of the excuses within it).
+    max_size: int | None = None
 
     @property
     def excuse(self) -> Excuse | None:
@@ -274,7 +291,7 @@ def find_excuses(
     domain: Domain,
     problem: Problem,
     options: ExcuseOptions | None = None,
-    progress: Progress | None = None,
+    on_progress: ProgressCallback | None = None,
 ) -> ExcuseReport:
     """Find minimal excuses for the robot's task ``(domain, problem)``.
 
@@ -282,7 +299,12 @@ def find_excuses(
     ``options.started`` when the caller's clock started earlier, e.g. before
     parsing): the searches stop cooperatively at the deadline, and a watchdog
     ends any other phase shortly after it.  A run that times out returns a
-    ``timeout`` report holding the excuses completed by then.
+    ``timeout`` report holding the excuses completed by then, or else the
+    search's proven lower bound (``statistics.lower_bound``) and the cheapest
+    excuse found (``best_candidate``, landmark strategy), if any.
+
+    ``on_progress`` gets a :class:`~guided_lfd.excuse.progress.Progress` at
+    each phase and, while the search runs, a few times a second.
     """
     options = options or ExcuseOptions()
     if options.strategy not in STRATEGIES:
@@ -292,7 +314,8 @@ def find_excuses(
     start = time.monotonic() if options.started is None else options.started
     deadline = deadline_after(options.time_limit, start)
     check_option_names(domain, options)
-    run = _Run(domain, problem, options, progress, start, deadline)
+    meter = ProgressMeter(on_progress, start) if on_progress is not None else None
+    run = _Run(domain, problem, options, meter, start, deadline)
     linger(run)  # with its task, space and oracle (see guided_lfd.deadline.linger)
     # Grounding a house creates millions of small objects and no cycles that
     # matter: the cyclic collector's full passes over them cost more than the
@@ -318,7 +341,7 @@ def find_excuses(
 class _Run:
     """One call of :func:`find_excuses`, phase by phase; keeps what it found for a timeout report."""
 
-    def __init__(self, domain: Domain, problem: Problem, options: ExcuseOptions, progress: Progress | None,
+    def __init__(self, domain: Domain, problem: Problem, options: ExcuseOptions, progress: ProgressMeter | None,
                  start: float, deadline: float | None) -> None:
         self.domain, self.problem, self.options = domain, problem, options
         self.progress = progress
@@ -329,11 +352,13 @@ class _Run:
         self.space: ChangeSpace | None = None
         self.unachievable: list[Literal] = []
         self.robot_plan_cost: int | None = None
+        self.candidate: Excuse | None = None  # the probe's excuse, checked
+        self.candidate_weight = 0
 
     def _enter(self, phase: str) -> None:
         self.phase = phase
-        if self.progress:
-            self.progress(phase, 0, 0)
+        if self.progress is not None:
+            self.progress.phase(phase)
         check_deadline(self.deadline, phase)
 
     def report(self, status: ExcuseStatus, robot_plan: list[PlanStep] | None = None, **more: Any) -> ExcuseReport:
@@ -345,9 +370,11 @@ class _Run:
         groups = space.groups if space is not None else []
         checked = _group_atoms(space) if space is not None else []
         robot_cost = self.robot_plan_cost if robot_plan is not None else None
+        candidate = self.candidate if status is ExcuseStatus.TIMEOUT else None
         return ExcuseReport(status, sorted(self.excuses, key=_excuse_order), self.options.semantics,
                             self.options.strategy, self.stats, self.unachievable, groups, robot_plan, checked,
-                            robot_cost, domain=self.domain, problem=self.problem)
+                            robot_cost, domain=self.domain, problem=self.problem, best_candidate=candidate,
+                            unit_costs=space is None or not space.costs, max_size=self.options.max_size)
 
     def timed_out(self) -> ExcuseReport:
         """The report when the time limit ended the run: excuses completed so far stay."""
@@ -357,9 +384,39 @@ class _Run:
             return self.report(ExcuseStatus.FOUND)
         return self.report(ExcuseStatus.TIMEOUT)
 
+    def probe(self) -> Probe | None:
+        """When and how long the search may pause for a greedy search for any excuse (with a time limit)."""
+        if self.deadline is None:
+            return None
+        now = strategies.clock()
+        span = max(0.0, self.deadline - now)
+        return Probe(now + PROBE_AT * span, now + (PROBE_AT + PROBE_SHARE) * span, self.keep_candidate)
+
+    def keep_candidate(self, changes: int, plan: list[GroundAction]) -> None:
+        """Check the probe's excuse as every excuse is checked and keep it; its plan is shortened, not optimal."""
+        space = self.space
+        assert space is not None
+        task = space.task
+        self.candidate = self.checked_excuse(changes, shorten_plan(plan, task.init ^ changes, task.goal_pos,
+                                                                   task.goal_neg), False)
+        self.candidate.proven_minimal = False  # until the search's lower bound meets its weight
+        self.candidate_weight = space.weight(changes)
+        if self.progress is not None:
+            self.progress.found(self.candidate.cost)
+
+    def checked_excuse(self, changes: int, plan: list[GroundAction], optimal: bool) -> Excuse:
+        """The excuse ``changes`` with ``plan`` from its state, after the independent checker accepted both."""
+        space = self.space
+        assert space is not None
+        change_list = _changes_of(space.task, changes)
+        _verify(self.domain, self.problem, change_list, plan, space, self.options, space.cost(changes))
+        return Excuse(change_list, space.cost(changes), excuse_state(self.problem.init, change_list), _steps(plan),
+                      optimal, sum(a.cost for a in plan))
+
     def execute(self) -> ExcuseReport:
         """Ground, build the change space, check solvability, search, and plan from each excuse."""
         options = self.options
+        self._enter("grounding")
         fixed = options.fixed_predicates(self.domain)
         prepared = prepare(self.domain, self.problem, options.semantics, fixed, options.costs,
                            options.invariants_from, self.deadline, self._enter)
@@ -400,7 +457,7 @@ class _Run:
         options = self.options
         self._enter("searching")
         limits = SearchLimits(all_minimal=options.all_minimal, max_size=options.max_size, deadline=self.deadline,
-                              slack=options.slack, max_solutions=MAX_EXCUSES)
+                              slack=options.slack, max_solutions=MAX_EXCUSES, probe=self.probe())
         search_start = time.monotonic()
         self.stats.setup_time_s = round(search_start - self.start, 6)
         outcome = STRATEGIES[options.strategy].search(space, limits, self.progress, oracle=oracle, relaxed=relaxed)
@@ -415,20 +472,24 @@ class _Run:
             state = task.init ^ changes
             plan, optimal = _robot_plan(task, space, oracle, state, outcome.plans[changes], options.optimal_plans,
                                         self.deadline, plans_until)
-            change_list = _changes_of(task, changes)
-            _verify(self.domain, self.problem, change_list, plan, space, options, space.cost(changes))
-            self.excuses.append(Excuse(change_list, space.cost(changes),
-                                       excuse_state(self.problem.init, change_list), _steps(plan), optimal,
-                                       sum(a.cost for a in plan)))
+            self.excuses.append(self.checked_excuse(changes, plan, optimal))
         status = outcome.status
         if status is ExcuseStatus.TIMEOUT:
             self.stats.phase = "searching"
             if self.excuses:
                 status = ExcuseStatus.FOUND  # --all ran out of time: what was found is minimal
                 self.stats.incomplete = True
+            else:
+                self._bound_reached(space, outcome.lower_bound)
         if status is ExcuseStatus.NONE and space.groups and not self.unachievable:
             self._invariants_in_the_way(task, space)
         return self.report(status)
+
+    def _bound_reached(self, space: ChangeSpace, weight: int) -> None:
+        """A timed-out search: its proven lower bound as a cost; whether the probe's excuse meets it."""
+        self.stats.lower_bound = space.cost_bound(weight)
+        if self.candidate is not None:
+            self.candidate.proven_minimal = self.candidate_weight <= weight
 
     def _invariants_in_the_way(self, task: GroundTask, space: ChangeSpace) -> None:
         """No excuse keeps the invariants: when the literal semantics finds one, name the invariants its excuse

@@ -74,6 +74,22 @@ class ChangeSpace:
         """User-facing cost of a change set (sum of ``--cost`` values, default 1 each)."""
         return sum(self.costs.get(i, 1) for i in bits(changes))
 
+    def weight(self, changes: int) -> int:
+        """The weight the searches minimise: cost x ``size_factor`` + size."""
+        return sum(self.weights[i] for i in bits(changes))
+
+    def cost_bound(self, weight: int) -> int:
+        """The least cost of a change set of at least ``weight`` (a lower bound on weights as one on costs).
+
+        Its size is below ``size_factor``, so its cost is at least
+        ``weight // size_factor``; when no change is free, its size is at most
+        its cost and the cost is at least ``weight / (size_factor + 1)``.
+        """
+        least = weight // self.size_factor
+        if all(c > 0 for c in self.costs.values()):
+            least = max(least, -(-weight // (self.size_factor + 1)))
+        return least
+
     def state(self, changes: int) -> int:
         """The excuse state I' = I Δ E."""
         return self.task.init ^ changes

@@ -37,6 +37,9 @@ class ExcuseStatistics:
     #: Strategy-specific counters (``evaluations``, ``oracle_expanded``, ``oracle_pair_proofs``, ...), in their order.
     counters: dict[str, int] = field(default_factory=dict)
     phase: str | None = None  # where a timed-out run was
+    #: A timed-out search: proven, every excuse (within --max-size) costs at least this (with unit costs: has at
+    #: least this many changes).
+    lower_bound: int | None = None
     incomplete: bool | None = None  # --all ran out of time: the excuses listed are minimal, maybe not all
     truncated: bool | None = None  # --all stopped at ``max_excuses``: more minimal excuses may exist
     max_excuses: int | None = None  # the cap --all stopped at (set with ``truncated``)

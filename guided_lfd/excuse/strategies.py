@@ -11,19 +11,41 @@ from __future__ import annotations
 
 import heapq
 import time
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Callable, Iterator, Protocol
 
 from guided_lfd.deadline import linger
 from guided_lfd.errors import SearchTimeout
 from guided_lfd.excuse.lmcut import INF, Bound, RelaxedExcuseTask
+from guided_lfd.excuse.progress import ProgressMeter
 from guided_lfd.excuse.reach import ReachabilityOracle
 from guided_lfd.excuse.space import ChangeSpace
 from guided_lfd.excuse.status import ExcuseStatus
 from guided_lfd.grounding import GroundAction, bits
 
-#: Progress callback: (message, candidates tried so far, current bound).
-Progress = Callable[[str, int, float], None]
+
+def clock() -> float:
+    """The searches' clock, ``time.monotonic()``: what deadlines and :class:`Probe` times are compared with.
+
+    A test replaces it (one tick per reading) to end a search after a set
+    number of checks, whatever the machine's speed.
+    """
+    return time.monotonic()
+
+
+@dataclass
+class Probe:
+    """A pause of the landmark search, once, for a greedy search for any excuse.
+
+    A run that may time out then still has an answer: an excuse that passed
+    the reachability check, not proven minimal.  The greedy search shares the
+    oracle and its memory; the A* search resumes where it paused.
+    """
+
+    start: float  # clock() time: pause when no excuse is found by then
+    until: float  # clock() time the greedy search ends by, found or not
+    #: Gets what the greedy search found: (change set, plan from its state).
+    accept: Callable[[int, list[GroundAction]], None]
 
 
 @dataclass
@@ -32,11 +54,12 @@ class SearchLimits:
 
     all_minimal: bool = False
     max_size: int | None = None
-    deadline: float | None = None  # time.monotonic() value
+    deadline: float | None = None  # a clock() value
     max_solutions: int = 1000
     #: With ``all_minimal``: also the excuses up to this much costlier than the minimum (none of them a
     #: superset of another: adding changes to an excuse is no other choice).
     slack: int = 0
+    probe: Probe | None = None
 
 
 @dataclass
@@ -54,6 +77,9 @@ class SearchOutcome:
     planner_calls: int = 0
     expanded: int = 0
     extra: dict[str, int] = field(default_factory=dict)
+    #: Proven: every excuse within ``max_size`` weighs at least this (the weight of the lightest change set
+    #: the search had not ruled out when it ended).
+    lower_bound: int = 0
 
 
 class Strategy(Protocol):
@@ -62,7 +88,7 @@ class Strategy(Protocol):
     name: str
     description: str
 
-    def search(self, space: ChangeSpace, limits: SearchLimits, progress: Progress | None = None,
+    def search(self, space: ChangeSpace, limits: SearchLimits, progress: ProgressMeter | None = None,
                oracle: ReachabilityOracle | None = None, relaxed: RelaxedExcuseTask | None = None) -> SearchOutcome:
         """Minimal change sets for ``space``.
 
@@ -80,7 +106,7 @@ def _mask(indices: list[int]) -> int:
 
 
 def _timed_out(limits: SearchLimits) -> bool:
-    return limits.deadline is not None and time.monotonic() > limits.deadline
+    return limits.deadline is not None and clock() > limits.deadline
 
 
 class LandmarkSearch:
@@ -98,12 +124,18 @@ class LandmarkSearch:
     restricted to the inherited landmarks is still admissible.  LM-cut is only
     recomputed when a node has no landmark left.  One reachability oracle with
     dead/alive memory answers all candidates.
+
+    Nodes leave the open list in non-decreasing f, so the f of the last one
+    taken is a proven lower bound on the weight of every excuse (within
+    ``max_size``): a timed-out search reports it.  With ``limits.probe``, a
+    search that has found no excuse by ``probe.start`` pauses once for the
+    same search ordered by h alone (greedy), which finds some excuse sooner.
     """
 
     name = "landmark"
     description = "A* over change sets with LM-cut bounds and landmark branching (default)"
 
-    def search(self, space: ChangeSpace, limits: SearchLimits, progress: Progress | None = None,
+    def search(self, space: ChangeSpace, limits: SearchLimits, progress: ProgressMeter | None = None,
                oracle: ReachabilityOracle | None = None, relaxed: RelaxedExcuseTask | None = None) -> SearchOutcome:
         """A* over change sets; ``oracle`` and ``relaxed`` are reused when given."""
         # Reusing the caller's oracle keeps the dead states its "already
@@ -120,14 +152,18 @@ class LandmarkSearch:
 class _LandmarkRun:
     """One landmark search: the open list, each node's inherited landmarks, and what was found.
 
-    Heap entries are ``(f, -g, tie, changes)``; ``inherited`` holds per queued
-    node its landmarks as (mask of changes, cost share) pairs, or None:
+    Heap entries are ``(key, -g, tie, changes)`` with key f (A*) or f - g
+    (``greedy``: the bound on what is still needed); ``inherited`` holds per
+    queued node its landmarks as (mask of changes, cost share) pairs, or None:
     compute afresh.
     """
 
     def __init__(self, space: ChangeSpace, limits: SearchLimits, relaxed: RelaxedExcuseTask,
-                 oracle: ReachabilityOracle) -> None:
+                 oracle: ReachabilityOracle, greedy: bool = False) -> None:
         self.space, self.limits, self.relaxed, self.oracle = space, limits, relaxed, oracle
+        self.greedy, self.probe = greedy, limits.probe
+        self.bound = 0  # A*: the f of the last node taken, a proven lower bound
+        self.probe_expanded = 0
         self.task = space.task
         self.cheapest = min(space.weights.values(), default=0)
         self.relevant_changes = space.relevant_atoms & space.changeable
@@ -148,19 +184,26 @@ class _LandmarkRun:
         """Queue ``changes`` (cost ``g``) at priority ``f`` with the landmarks it inherits."""
         self.counter += 1
         self.inherited[changes] = landmarks
-        heapq.heappush(self.heap, (f, -g, self.counter, changes))
+        heapq.heappush(self.heap, (f - g if self.greedy else f, -g, self.counter, changes))
 
-    def loop(self, progress: Progress | None) -> None:
+    def loop(self, progress: ProgressMeter | None) -> None:
         """Expand nodes in order of f until the minimal excuses are found or the open list is empty."""
-        heap, task = self.heap, self.task
+        heap, task, greedy = self.heap, self.task, self.greedy
         # Hot loop: one pass per node; the steps it calls do the work.
         while heap:
-            f, neg_g, _, changes = heapq.heappop(heap)
+            key, neg_g, tie, changes = heapq.heappop(heap)
+            g = -neg_g
+            f = key + g if greedy else key
             if self.best is not None and f > self.g_limit:
                 return
             if _timed_out(self.limits):
                 raise SearchTimeout("excuse search exceeded its time limit")
-            g = -neg_g
+            if self.probe is not None and not self.solutions and clock() > self.probe.start:
+                heapq.heappush(heap, (key, neg_g, tie, changes))  # taken up again after the pause
+                self.pause_for_probe(progress)
+                continue
+            if not greedy:
+                self.bound = f
             state = task.init ^ changes
             landmarks = self.inherited.pop(changes)
             if not landmarks:
@@ -168,14 +211,64 @@ class _LandmarkRun:
                 if landmarks is None:
                     continue  # requeued with a better bound, or a dead end
             self.expanded += 1
-            if progress and not self.expanded % 50:
-                progress("searching", self.candidates, f)
+            if progress is not None and progress.due():
+                progress.search(self.expanded, self.oracle.stats.calls, self.candidates,
+                                self.space.cost_bound(self.bound))
             branch = self.branch(g, state, changes, landmarks)
             if branch is None:
                 continue
             if branch == _DONE:
                 return
             self.expand(f, g, state, changes, landmarks, branch)
+
+    def pause_for_probe(self, progress: ProgressMeter | None) -> None:
+        """Search greedily for any excuse until ``probe.until`` (once), drop the changes it can do without, and
+        hand it to ``probe.accept``."""
+        probe, self.probe = self.probe, None
+        assert probe is not None
+        if progress is not None:
+            progress.phase("probing for any excuse")
+        limits = replace(self.limits, all_minimal=False, deadline=probe.until, probe=None)
+        greedy = _LandmarkRun(self.space, limits, self.relaxed, self.oracle, greedy=True)
+        oracle, hard = self.oracle, self.oracle.deadline
+        # The oracle reads time.monotonic(): the probe's time left, in its terms.
+        until = time.monotonic() + max(0.0, probe.until - clock())
+        oracle.deadline = until if hard is None else min(hard, until)
+        found = None
+        try:
+            greedy.loop(None)
+            if greedy.solutions:
+                found = greedy.solutions[0], greedy.plans[greedy.solutions[0]]
+                found = self.trimmed(*found, probe.until)
+        except SearchTimeout:
+            if _timed_out(self.limits):
+                raise  # the run's time is up, not only the probe's
+        finally:
+            oracle.deadline = hard
+            self.probe_expanded = greedy.expanded
+        if progress is not None:
+            progress.phase("searching")
+        if found is not None:
+            probe.accept(*found)
+
+    def trimmed(self, changes: int, plan: list[GroundAction], until: float) -> tuple[int, list[GroundAction]]:
+        """The excuse ``changes`` without each change it can do without (tried once each, the heaviest first),
+        as far as the time until ``until`` allows; the greedy search's excuses often carry many."""
+        space, task = self.space, self.task
+        for i in sorted(bits(changes), key=lambda i: (-space.weights[i], i)):
+            smaller = changes & ~(1 << i)
+            state = task.init ^ smaller
+            if clock() > until:
+                break
+            if not smaller or task.satisfies_goal(state) or not space.consistent(state):
+                continue
+            try:
+                shorter = self.oracle.solve(state)
+            except SearchTimeout:
+                break
+            if shorter is not None:
+                changes, plan = smaller, shorter
+        return changes, plan
 
     def evaluate(self, f: float, g: int, state: int, changes: int,
                  landmarks: list[tuple[int, int]] | None) -> list[tuple[int, int]] | None:
@@ -277,15 +370,18 @@ class _LandmarkRun:
     def outcome(self, timed_out: bool = False) -> SearchOutcome:
         """What the search found, with its effort."""
         stats = self.oracle.stats
+        probed = {"probe_expanded": self.probe_expanded} if self.probe_expanded else {}
         if timed_out:
             return SearchOutcome(self.solutions, self.plans, ExcuseStatus.TIMEOUT, self.candidates, stats.calls,
-                                 self.expanded, {"evaluations": self.evaluations, "oracle_expanded": stats.expanded})
+                                 self.expanded, {"evaluations": self.evaluations, "oracle_expanded": stats.expanded,
+                                                 **probed}, self.bound)
         status = (ExcuseStatus.FOUND if self.solutions
                   else ExcuseStatus.NONE_WITHIN_SIZE if self.size_pruned else ExcuseStatus.NONE)
         return SearchOutcome(sorted(self.solutions), self.plans, status, self.candidates, stats.calls, self.expanded,
                              {"evaluations": self.evaluations, "oracle_expanded": stats.expanded,
                               "oracle_memo_hits": stats.memo_hits, "oracle_hill_climbs": stats.hill_climbs,
-                              "oracle_pair_proofs": stats.pair_proofs, "oracle_ff_searches": stats.ff_searches})
+                              "oracle_pair_proofs": stats.pair_proofs, "oracle_ff_searches": stats.ff_searches,
+                              **probed}, self.bound)
 
 
 #: ``_LandmarkRun.branch``'s answer when the search is over (enough minimal excuses found).
@@ -350,7 +446,7 @@ class BaselineSearch:
     name = "baseline"
     description = "breadth-first over change sets, one pyperplan call per candidate (the paper's method)"
 
-    def search(self, space: ChangeSpace, limits: SearchLimits, progress: Progress | None = None,
+    def search(self, space: ChangeSpace, limits: SearchLimits, progress: ProgressMeter | None = None,
                oracle: ReachabilityOracle | None = None, relaxed: RelaxedExcuseTask | None = None) -> SearchOutcome:
         """Breadth-first over change sets; ``oracle`` and ``relaxed`` are unused (a planner call per candidate)."""
         from guided_lfd.planning import find_plan
@@ -361,22 +457,23 @@ class BaselineSearch:
         best: int | None = None
         solutions: list[int] = []
         plans: dict[int, list[GroundAction]] = {}
-        candidates = calls = 0
+        candidates = calls = bound = 0
         try:
             for w, changes in self._candidates(atoms, weights, limits.max_size):
                 if best is not None and w > best:
                     break
                 if _timed_out(limits):
                     raise SearchTimeout("excuse search exceeded its time limit")
+                bound = w  # every lighter change set was tried: none is an excuse
                 if any(s & changes == s for s in solutions):
                     continue  # a superset of an excuse is not minimal
                 state = task.init ^ changes
                 candidates += 1
-                if progress and not candidates % 200:
-                    progress("baseline", candidates, w)
+                if progress is not None and progress.due():
+                    progress.search(candidates, calls, candidates, space.cost_bound(bound))
                 if not task.satisfies_goal(state) and space.consistent(state):
                     calls += 1
-                    remaining = None if limits.deadline is None else max(0.01, limits.deadline - time.monotonic())
+                    remaining = None if limits.deadline is None else max(0.01, limits.deadline - clock())
                     result = find_plan(task, init=state, search="gbfs-hff", time_limit_s=remaining)
                     if result.plan is not None:
                         best = w
@@ -385,7 +482,8 @@ class BaselineSearch:
                         if not limits.all_minimal or len(solutions) >= limits.max_solutions:
                             break
         except SearchTimeout:
-            return SearchOutcome(solutions, plans, ExcuseStatus.TIMEOUT, candidates, calls, candidates)
+            return SearchOutcome(solutions, plans, ExcuseStatus.TIMEOUT, candidates, calls, candidates,
+                                 lower_bound=bound)
         # Sets beyond the size bound were never tried: no excuse found is then not a proof of none.
         size_pruned = limits.max_size is not None and limits.max_size < len(atoms)
         status = (ExcuseStatus.FOUND if solutions
