@@ -21,11 +21,12 @@ pytest.importorskip("unified_planning")
 from unified_planning.engines import (  # noqa: E402
     FailedValidationReason, PlanGenerationResultStatus as Status, ValidationResultStatus,
 )
+from unified_planning.environment import Environment  # noqa: E402
 from unified_planning.exceptions import UPUsageError  # noqa: E402
 from unified_planning.io import PDDLReader  # noqa: E402
 from unified_planning.plans import ActionInstance, SequentialPlan  # noqa: E402
 from unified_planning.shortcuts import (  # noqa: E402
-    GE, DurativeAction, Fluent, MinimizeActionCosts, Not, OneshotPlanner, PlanValidator, RealType,
+    GE, DurativeAction, Fluent, MinimizeActionCosts, MinimizeSequentialPlanLength, Not, OneshotPlanner, PlanValidator, RealType,
     get_environment,
 )
 
@@ -116,6 +117,10 @@ def test_action_costs_give_the_cheapest_plan_and_the_validator_its_cost():
     ours, ups = check(problem, result.plan), check(problem, result.plan, "sequential_plan_validator")
     assert ours.status == ups.status == ValidationResultStatus.VALID
     assert list(ours.metric_evaluations.values()) == [15] == list(ups.metric_evaluations.values())
+    problem.clear_quality_metrics()
+    problem.add_quality_metric(MinimizeSequentialPlanLength())
+    assert list(check(problem, result.plan).metric_evaluations.values()) == [3]
+    assert named(solve(problem).plan) == [("drive", ("home", "shop"))]
 
 
 def test_the_validator_rejects_an_invalid_plan_naming_the_step_or_the_goal():
@@ -142,6 +147,7 @@ def test_a_step_of_another_problems_action_is_invalid():
     foreign = solve(kitchen_problem).plan
     result = check(rover_world(can_press=True), foreign)
     assert result.status == ValidationResultStatus.INVALID and result.inapplicable_action is foreign.actions[0]
+    assert result.reason == FailedValidationReason.INAPPLICABLE_ACTION
     assert "unknown action 'open_drawer'" in result.log_messages[0].message
 
 
@@ -191,6 +197,23 @@ def test_a_fractional_cost_passes_the_kind_check_and_is_refused_when_read():
 
 def test_a_past_deadline_is_a_timeout():
     assert solve(rover_world(can_press=True), timeout=1e-9).status == Status.TIMEOUT
+    # The excuse's time limit counts from the call: reading the problem already uses it up.
+    report = find_up_excuses(rover_world(can_press=False), ExcuseOptions(time_limit=1e-9))
+    assert report.status == "timeout" and report.excuses == []
+
+
+def test_a_task_too_large_to_ground_is_a_memout_and_a_failure_an_internal_error(monkeypatch):
+    monkeypatch.setattr("guided_lfd.grounding.MAX_GROUND_ACTIONS", 0)
+    result = solve(rover_world(can_press=True))
+    assert result.status == Status.MEMOUT and "ground actions" in result.log_messages[0].message
+    monkeypatch.undo()
+
+    def broken(*args, **kwargs):
+        raise RuntimeError("planner and validator disagree on the plan's cost")
+
+    monkeypatch.setattr("guided_lfd.up.engines.plan", broken)
+    result = solve(rover_world(can_press=True))
+    assert result.status == Status.INTERNAL_ERROR and "disagree" in result.log_messages[0].message
 
 
 def test_engines_take_no_options_and_register_adds_each_once():
@@ -200,6 +223,9 @@ def test_engines_take_no_options_and_register_adds_each_once():
     register()
     factory = get_environment().factory
     assert factory.engines.count(PLANNER) == 1 and factory.engines.count(VALIDATOR) == 1
+    other = Environment()
+    register(other, planner="mine")
+    assert "mine" in other.factory.engines and "mine" not in factory.engines
 
 
 @pytest.mark.parametrize("n", [1, 2])
