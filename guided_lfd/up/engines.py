@@ -58,12 +58,20 @@ def _task_or_reason(problem: AbstractProblem) -> UpTask | str:
 
 
 class _GuidedLfdEngine(Engine):
-    """What both engines share: no options, the supported kind, the credits."""
+    """What both engines share: the name, no options, the supported kind, the credits."""
+
+    _name = "guided-lfd"
 
     def __init__(self, **options: Any) -> None:
         Engine.__init__(self)
+        super(Engine, self).__init__()  # the mixin's (next after Engine in the subclass's MRO)
         if options:
             raise UPUsageError(f"guided-lfd's engines take no options, got {', '.join(sorted(options))}")
+
+    @property
+    def name(self) -> str:
+        """The engine's name in UP's results."""
+        return self._name
 
     @staticmethod
     def supported_kind() -> ProblemKind:
@@ -91,14 +99,6 @@ class GuidedLfdPlanner(_GuidedLfdEngine, OneshotPlannerMixin):
     construct guided-lfd does not read; the reason is the log message) and
     ``INTERNAL_ERROR``.
     """
-
-    def __init__(self, **options: Any) -> None:
-        _GuidedLfdEngine.__init__(self, **options)
-        OneshotPlannerMixin.__init__(self)
-
-    @property
-    def name(self) -> str:
-        return "guided-lfd"
 
     @staticmethod
     def satisfies(optimality_guarantee: OptimalityGuarantee) -> bool:
@@ -151,13 +151,7 @@ class GuidedLfdValidator(_GuidedLfdEngine, PlanValidatorMixin):
     guided-lfd does not support.
     """
 
-    def __init__(self, **options: Any) -> None:
-        _GuidedLfdEngine.__init__(self, **options)
-        PlanValidatorMixin.__init__(self)
-
-    @property
-    def name(self) -> str:
-        return "guided-lfd-validator"
+    _name = "guided-lfd-validator"
 
     @staticmethod
     def supports_plan(plan_kind: PlanKind) -> bool:
