@@ -11,7 +11,7 @@ JOBS   ?= 2
 $(BIN)/guided-lfd: pyproject.toml
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
-	$(BIN)/python -m pip install --quiet -e '.[test,plots,dist]'
+	$(BIN)/python -m pip install --quiet -e '.[test,plots,dist,up]'
 	@touch $@
 
 setup: $(BIN)/guided-lfd

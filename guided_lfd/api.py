@@ -9,11 +9,14 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any, Sequence
+from typing import TYPE_CHECKING, Any, Sequence
 
 from guided_lfd.deadline import checked_time_limit
 from guided_lfd.pddl.model import Domain, Problem
 from guided_lfd.validation import PlanStep, ValidationReport
+
+if TYPE_CHECKING:  # the extra 'up' only
+    from unified_planning.model import Problem as UPProblem
 
 __all__ = ["PlanReport", "plan", "read_task", "validate"]
 
@@ -29,12 +32,17 @@ def _is_text(source: Source) -> bool:
     return isinstance(source, str) and ("(" in source or "\n" in source or not source.strip())
 
 
-def read_task(domain: Source, problem: Source) -> tuple[Domain, Problem]:
-    """The task of a domain and a problem, each a path or PDDL text (``"(define (domain ..."``).
+def read_task(domain: "Source | UPProblem", problem: Source | None = None) -> tuple[Domain, Problem]:
+    """The task of a domain and a problem, each a path or PDDL text (``"(define (domain ..."``), or of a
+    unified-planning ``Problem`` alone (the extra ``up``; :func:`guided_lfd.up.to_task` also maps the names back).
 
     Raises the one-line :class:`~guided_lfd.errors.GuidedLfdError` of the
     command line (``file:line:col``; ``<domain>``/``<problem>`` for text).
     """
+    if not isinstance(domain, (str, Path)):
+        return _read_up_problem(domain, problem)
+    if problem is None:
+        raise TypeError("read_task: a domain needs its problem (a path or PDDL text)")
     from guided_lfd.pddl.reader import parse_task
 
     # Text as a file would give it: without a byte-order mark.
@@ -43,6 +51,18 @@ def read_task(domain: Source, problem: Source) -> tuple[Domain, Problem]:
     return parse_task("<domain>" if domain_text is not None else domain,
                       "<problem>" if problem_text is not None else problem,
                       domain_text=domain_text, problem_text=problem_text)
+
+
+def _read_up_problem(up_problem: object, problem: Source | None) -> tuple[Domain, Problem]:
+    """The task of a unified-planning problem (a problem is not given beside it)."""
+    if not type(up_problem).__module__.startswith("unified_planning.") or problem is not None:
+        raise TypeError("read_task: expected a domain and a problem (paths or PDDL text), or a unified-planning "
+                        f"Problem alone; got {type(up_problem).__name__}"
+                        + ("" if problem is None else f" and {type(problem).__name__}"))
+    from guided_lfd.up import to_task
+
+    task = to_task(up_problem)  # type: ignore[arg-type]
+    return task.domain, task.problem
 
 
 @dataclass
