@@ -96,7 +96,8 @@ def test_teach_ends_within_its_time_limit_whatever_phase_it_is_in(tmp_path):
                            "--time-limit", "2", "--quiet"], capture_output=True, text=True, timeout=120)
     took = time.monotonic() - start
     assert proc.returncode == EXIT_TIME_LIMIT, proc.stderr
-    assert took < 3.0, f"{took:.1f} s for --time-limit 2"
+    # Far below the 30 s the session takes without a limit; the margin is for a loaded machine's start-up.
+    assert took < 2.0 + 6.0, f"{took:.1f} s for --time-limit 2"
 
 
 def test_an_interrupted_session_puts_the_previous_one_back(tmp_path):
