@@ -252,11 +252,16 @@ def _carried(carry: Segment, seg: Segment) -> Segment:
     """``seg``, the part after a cut of a segment open longer than a window, joined to ``carry``, what came
     before the cut: its start, the hand and the world before it, and its changes on both sides (a
     manipulation named by all of them)."""
-    after = frozenset((carry.after - seg.deleted) | seg.added)
+    if carry.after != carry.before:
+        before, after = carry.before, frozenset((carry.after - seg.deleted) | seg.added)
+    elif seg.after != seg.before:  # its first change comes after the cut: the world just before it is the part's
+        before, after = seg.before, seg.after
+    else:
+        before, after = carry.before, carry.after
     activity = seg.activity
     if activity in MANIPULATIONS:
-        activity = name_manipulation(seg.object, carry.before, after)
-    return replace(seg, activity=activity, start=carry.start, held_before=carry.held_before, before=carry.before,
+        activity = name_manipulation(seg.object, before, after)
+    return replace(seg, activity=activity, start=carry.start, held_before=carry.held_before, before=before,
                    after=after)
 
 
