@@ -41,13 +41,13 @@ FIELDS = ["copies", "rows", "recording_min", "segments", "segment_s", "segment_m
           "learn_s", "learn_mb", "read_csv_s", "read_csv_mb", "segment_over_read_csv"]
 
 
-def make(copies: int, folder: Path) -> tuple[Path, Path]:
-    """The demonstration repeated ``copies`` times: (trace, state file)."""
-    rows = SOURCE.read_text().splitlines()
+def make(copies: int, folder: Path, source: Path = SOURCE) -> tuple[Path, Path]:
+    """The demonstration ``source`` repeated ``copies`` times: (trace, state file)."""
+    rows = source.read_text().splitlines()
     header, frames = rows[0], rows[1:]
     times = [float(r.split(",", 1)[0]) for r in frames]
     period = max(times) + 0.1
-    state_rows = list(csv.reader(io.StringIO(SOURCE.with_name(SOURCE.stem + ".state.csv").read_text())))[1:]
+    state_rows = list(csv.reader(io.StringIO(source.with_name(source.stem + ".state.csv").read_text())))[1:]
     initial = {(f, v) for t, f, v in state_rows if float(t) == 0 and not f.startswith("object(")}
     objects = [(t, f, v) for t, f, v in state_rows if f.startswith("object(")]
     changes = [(float(t), f, v) for t, f, v in state_rows if float(t) > 0]

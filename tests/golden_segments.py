@@ -29,14 +29,29 @@ def traces() -> list[Path]:
     return sorted(p for p in found if p.is_file() and "issue30" not in p.parts)
 
 
+def segment_key(s) -> list:
+    """A segment as a plain list (rounded times, sorted fluents), as the golden file keeps it."""
+    return [s.hand, s.activity, round(s.start, 4), round(s.end, 4), s.object, s.target, s.held_before,
+            s.held_after, sorted(map(str, s.added)), sorted(map(str, s.deleted))]
+
+
 def segments_of(trace: Path) -> list[list]:
     """The trace's segments as plain lists (rounded times, sorted fluents)."""
     from guided_lfd.demonstration.segment import segment
     from guided_lfd.demonstration.trace import load_demonstration
 
-    return [[s.hand, s.activity, round(s.start, 4), round(s.end, 4), s.object, s.target, s.held_before,
-             s.held_after, sorted(map(str, s.added)), sorted(map(str, s.deleted))]
-            for s in segment(load_demonstration(str(trace)))]
+    return [segment_key(s) for s in segment(load_demonstration(str(trace)))]
+
+
+def repeated(source: Path, copies: int, folder: Path) -> tuple[Path, Path]:
+    """The demonstration ``source`` repeated ``copies`` times end to end, as the segment scaling benchmark
+    makes it: (trace, state file) in ``folder``."""
+    benchmarks = str(ROOT / "benchmarks")
+    if benchmarks not in sys.path:
+        sys.path.insert(0, benchmarks)
+    import segment_scaling
+
+    return segment_scaling.make(copies, folder, source)
 
 
 def main() -> int:

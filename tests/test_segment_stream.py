@@ -12,7 +12,7 @@ from pathlib import Path
 import pytest
 
 from conftest import ROOT
-from golden_segments import GOLDEN
+from golden_segments import GOLDEN, repeated, segment_key
 from guided_lfd.demonstration.stream import stream_segments
 from guided_lfd.demonstration.trace import default_state_path
 
@@ -20,14 +20,9 @@ RECORDED = {d["trace"]: d["segments"] for d in map(json.loads, GOLDEN.read_text(
 K1 = ROOT / "data" / "demos" / "kitchen-1" / "P1-complete.csv"
 
 
-def _key(s) -> list:
-    return [s.hand, s.activity, round(s.start, 4), round(s.end, 4), s.object, s.target, s.held_before,
-            s.held_after, sorted(map(str, s.added)), sorted(map(str, s.deleted))]
-
-
 def _streamed(trace: Path, state: Path, batch_rows: int) -> list[list]:
     with trace.open("rb") as source:
-        return sorted(_key(s) for s in stream_segments(source, str(state), str(trace), batch_rows=batch_rows))
+        return sorted(segment_key(s) for s in stream_segments(source, str(state), str(trace), batch_rows=batch_rows))
 
 
 @pytest.mark.parametrize("name", sorted(RECORDED))
@@ -41,15 +36,11 @@ def test_a_streamed_trace_gives_the_whole_files_segments(name):
 def test_a_long_recording_streamed_in_windows_gives_the_whole_files_segments(source, tmp_path):
     """Eight copies end to end (two to three minutes): windows are cut behind the segments already written
     and a hand idle throughout outlasts the longest window."""
-    sys.path.insert(0, str(ROOT / "benchmarks"))
-    import segment_scaling
-
     from guided_lfd.demonstration.segment import segment
     from guided_lfd.demonstration.trace import load_demonstration
 
-    segment_scaling.SOURCE = ROOT / source
-    trace, state = segment_scaling.make(8, tmp_path)
-    whole = sorted(_key(s) for s in segment(load_demonstration(str(trace))))
+    trace, state = repeated(ROOT / source, 8, tmp_path)
+    whole = sorted(segment_key(s) for s in segment(load_demonstration(str(trace))))
     assert _streamed(trace, state, batch_rows=1500) == whole
 
 
@@ -62,11 +53,7 @@ def _pipe(state: Path, *flags: str) -> subprocess.Popen:
 def test_a_piped_recording_gives_its_first_segments_before_it_ends(tmp_path):
     """The recorder writes half its frames and waits: segments must come out then (a tool that waited for the
     end would never answer, and the test would fail on its timeout, not on the machine's speed)."""
-    sys.path.insert(0, str(ROOT / "benchmarks"))
-    import segment_scaling
-
-    segment_scaling.SOURCE = K1
-    trace, state = segment_scaling.make(6, tmp_path)
+    trace, state = repeated(K1, 6, tmp_path)
     lines = trace.read_bytes().splitlines(keepends=True)
     half = len(lines) // 2
     # The recorder writes the state file as it goes too: so far only what happened in the first half.
@@ -102,11 +89,7 @@ def test_a_piped_recording_gives_its_first_segments_before_it_ends(tmp_path):
 
 
 def test_a_bad_row_late_in_a_stream_keeps_the_segments_before_it(tmp_path):
-    sys.path.insert(0, str(ROOT / "benchmarks"))
-    import segment_scaling
-
-    segment_scaling.SOURCE = K1
-    trace, state = segment_scaling.make(6, tmp_path)
+    trace, state = repeated(K1, 6, tmp_path)
     lines = trace.read_bytes().splitlines(keepends=True)
     bad = len(lines) - 40
     lines[bad] = b"12x,right,0.1,0.2,0.9,open,,\n"

@@ -7,12 +7,12 @@ from __future__ import annotations
 
 import csv
 import io
-import sys
 from pathlib import Path
 
 import pytest
 
 from conftest import ROOT
+from golden_segments import repeated, segment_key
 from guided_lfd.demonstration.segment import segment
 from guided_lfd.demonstration.stream import MAX_LAG_S, stream_segments
 from guided_lfd.demonstration.trace import load_demonstration
@@ -22,17 +22,12 @@ K1 = ROOT / "data" / "demos" / "kitchen-1" / "P1-complete.csv"
 K2 = ROOT / "data" / "demos" / "kitchen-2" / "P1-complete.csv"
 
 
-def _key(s) -> list:
-    return [s.hand, s.activity, round(s.start, 4), round(s.end, 4), s.object, s.target, s.held_before,
-            s.held_after, sorted(map(str, s.added)), sorted(map(str, s.deleted))]
-
-
 def _whole(trace: Path, state: Path) -> list:
-    return sorted(_key(s) for s in segment(load_demonstration(str(trace), str(state))))
+    return sorted(segment_key(s) for s in segment(load_demonstration(str(trace), str(state))))
 
 
 def _streamed(data: bytes, state: Path, batch_rows: int, path: str = "-") -> list:
-    return sorted(_key(s) for s in stream_segments(io.BytesIO(data), str(state), path, batch_rows=batch_rows))
+    return sorted(segment_key(s) for s in stream_segments(io.BytesIO(data), str(state), path, batch_rows=batch_rows))
 
 
 def _state_of(trace: Path) -> Path:
@@ -66,11 +61,7 @@ def _paused(trace: Path, at: float, seconds: float, folder: Path, hands=(), gone
 
 
 def _long(tmp_path: Path, copies: int = 8) -> tuple[Path, Path]:
-    sys.path.insert(0, str(ROOT / "benchmarks"))
-    import segment_scaling
-
-    segment_scaling.SOURCE = K2.with_name("P3-complete.csv")
-    return segment_scaling.make(copies, tmp_path)
+    return repeated(K2.with_name("P3-complete.csv"), copies, tmp_path)
 
 
 @pytest.mark.parametrize("late", [15.0, MAX_LAG_S - 1])
@@ -111,11 +102,7 @@ def test_a_segment_open_longer_than_a_window_keeps_its_start_and_changes(trace, 
 def test_a_hand_idle_for_longer_than_a_window_has_the_changes_of_the_whole_file(source, batch, tmp_path):
     """Kitchen II repeated five times, the left hand idle throughout (75-180 s): the world's resets between
     copies are its changes in the file (no other hand acts then), from the first of them on."""
-    sys.path.insert(0, str(ROOT / "benchmarks"))
-    import segment_scaling
-
-    segment_scaling.SOURCE = K2.with_name(source)
-    trace, state = segment_scaling.make(5, tmp_path)
+    trace, state = repeated(K2.with_name(source), 5, tmp_path)
     whole = _whole(trace, state)
     assert any(s[0] == "left" and s[3] - s[2] > 60 and s[8] for s in whole)
     assert _streamed(trace.read_bytes(), state, batch) == whole
@@ -134,7 +121,7 @@ def test_a_stream_cut_short_by_a_bad_row_is_the_recording_up_to_it(tmp_path):
         got = []
         with pytest.raises(TraceError, match=f"-:{at + 1}:3: trace error: column 'x'"):
             for seg in stream_segments(io.BytesIO(broken.encode()), str(state), "-", batch_rows=97):
-                got.append(_key(seg))
+                got.append(segment_key(seg))
         assert sorted(got) == _whole(tmp_path / "ref.csv", tmp_path / "ref.state.csv")
 
 
@@ -158,7 +145,7 @@ def test_a_change_after_the_trace_is_refused_once_the_stream_ends(tmp_path):
     with pytest.raises(TraceError, match=r"late.state.csv:\d+:1: trace error: column 'time': a change at 60 s, "
                                          "outside the trace"):
         for seg in stream_segments(io.BytesIO(trace.read_bytes()), str(state), "-", batch_rows=97):
-            got.append(_key(seg))
+            got.append(segment_key(seg))
     assert sorted(got) == _whole(trace, _state_of(K1))
 
 

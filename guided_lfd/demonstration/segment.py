@@ -38,7 +38,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from guided_lfd.demonstration.trace import EFFECT_DELAY_S, Demonstration, frame_period
+from guided_lfd.demonstration.trace import EFFECT_DELAY_S, Demonstration, apply_changes, frame_period
 from guided_lfd.pddl.model import Atom
 
 #: Runs shorter than this are sensor jitter wherever they occur (s): a few
@@ -381,10 +381,7 @@ def segment(demo: Demonstration) -> list[Segment]:
         for k, seg in enumerate(segs):
             own = sorted(caused[id(seg)], key=lambda c: c[0])
             before = states.get(id(seg), demo.initial)
-            after = set(before)
-            for _, atom, value in own:
-                (after.add if value else after.discard)(atom)
-            seg.before, seg.after = frozenset(before), frozenset(after)
+            seg.before, seg.after = frozenset(before), apply_changes(before, own)
             if seg.activity == "Manipulate":
                 seg.activity = name_manipulation(seg.object, seg.before, seg.after)
             out.append(seg)

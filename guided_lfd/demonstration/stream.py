@@ -47,15 +47,14 @@ import io
 import select
 from collections.abc import Iterator
 from dataclasses import replace
+from pathlib import Path
 from typing import IO
 
 import numpy as np
-from pathlib import Path
-
 
 from guided_lfd.demonstration.segment import MANIPULATIONS, Segment, name_manipulation, segment
 from guided_lfd.demonstration.trace import (EFFECT_DELAY_S, HANDS, TRACE_COLUMNS, Demonstration, _csv, _times,
-                                            load_state, trace_frame)
+                                            apply_changes, load_state, trace_frame)
 from guided_lfd.errors import Location, TraceError
 
 __all__ = ["stream_segments", "MARGIN_S", "HORIZON_S", "MAX_WINDOW_S", "MAX_LAG_S", "BATCH_ROWS"]
@@ -234,18 +233,8 @@ class _Window:
         self.rows = [r for r, k in zip(self.rows, keep) if k]
         self.lines = [n for n, k in zip(self.lines, keep) if k]
         done = bisect.bisect_left(self.events, start, lo=self.applied, key=lambda e: e[0])
-        self.initial = _applied(self.initial, self.events[self.applied:done])
+        self.initial = apply_changes(self.initial, self.events[self.applied:done])
         self.applied, self.start = done, start
-
-
-def _applied(state: frozenset, changes: list) -> frozenset:
-    """``state`` with ``changes`` (time, atom, value) applied in order."""
-    if not changes:
-        return state
-    out = set(state)
-    for _, atom, value in changes:
-        (out.add if value else out.discard)(atom)
-    return frozenset(out)
 
 
 def _carried(carry: Segment, seg: Segment) -> Segment:
@@ -268,8 +257,10 @@ def _carried(carry: Segment, seg: Segment) -> Segment:
 class _Stream:
     """What the stream knows between windows: the hands' newest frames, the segments written and carried."""
 
-    def __init__(self, window: _Window, state: _GrowingState, path: str) -> None:
-        self.window, self.state, self.path = window, state, path
+    def __init__(self, header: bytes, state: _GrowingState, path: str) -> None:
+        self.state, self.path = state, path
+        self.world = state.read()
+        self.window = _Window(header, self.world[1], self.world[2])
         self.newest: dict[str, float] = {}  # each hand's newest frame
         self.latest = float("-inf")  # the newest frame of either hand
         self.first = float("inf")  # the earliest frame
@@ -277,7 +268,6 @@ class _Stream:
         self.settled = float("-inf")  # the segments before this time are written
         self.written: dict[str, float] = {}  # the end of each hand's last written segment
         self.carry: dict[str, Segment] = {}  # each hand's open segment a cut went through, up to the cut
-        self.world = state.read()
 
     def now(self) -> float:
         """The time up to which both hands' rows have come (a hand more than the lag behind does not hold it)."""
@@ -326,15 +316,15 @@ class _Stream:
             return []
         objects, _, _, spellings, vocabulary = self.world
         frame = window.frame(self.path, objects, Path(state.path).name)
-        times = frame["time"].to_numpy()
-        self.arrived(times, frame["hand"].to_numpy())
+        times, hands = frame["time"].to_numpy(), frame["hand"].to_numpy()
+        self.arrived(times, hands)
         # Changes after the newest frame are not yet anyone's (an open segment would claim them all), and a
         # stream cut short by a bad row ends there.  After a cut through an open segment, the changes within
         # the margin after the cut are the carried part's (the segments there are the cut's artefacts).
         edge = window.start + MARGIN_S if self.carry else window.start
         first = bisect.bisect_left(window.events, edge, lo=window.applied, key=lambda e: e[0])
         until = bisect.bisect_right(window.events, self.latest + EFFECT_DELAY_S, lo=first, key=lambda e: e[0])
-        demo = Demonstration(frame, objects, _applied(window.initial, window.events[window.applied:first]),
+        demo = Demonstration(frame, objects, apply_changes(window.initial, window.events[window.applied:first]),
                              window.events[first:until], spellings, self.path, vocabulary)
         per_hand: dict[str, list[Segment]] = {}
         for seg in segment(demo):
@@ -352,7 +342,6 @@ class _Stream:
             start = max(min(starts, default=now - HORIZON_S) - MARGIN_S, now - MAX_WINDOW_S)
             # Each hand keeps its last frames before the cut, for the rules that look back (across a gap in
             # its frames too: a segment goes on across one).
-            hands = frame["hand"].to_numpy()
             tails = {}
             for hand in HANDS:
                 before = times[(hands == hand) & (times < start)]
@@ -364,9 +353,9 @@ class _Stream:
         return sorted(closed, key=lambda s: (s.start, s.hand))
 
     def _carried_over(self, opened: dict[str, Segment], demo: Demonstration) -> dict[str, Segment]:
-        """The open segments a cut at ``start`` goes through (or through the margin before them), each as far
-        as the cut: its start, the hand and world before it, and its own changes up to the margin after the
-        cut (the next window's segments there are the cut's artefacts)."""
+        """The open segments the window's last cut went through (or through the margin before them), each as
+        far as the cut: its start, the hand and world before it, and its own changes up to the margin after
+        the cut (the next window's segments there are the cut's artefacts)."""
         start = self.window.start
         through = {h: s for h, s in opened.items()
                    if self.window.hand_start[h] > (self.carry[h].start if h in self.carry else s.start) - MARGIN_S}
@@ -408,7 +397,6 @@ def stream_segments(source: IO[bytes], state_path: str, path: str = "-", batch_r
     """The segments of the trace read from ``source`` (bytes, the CSV header first), each as soon as it closes
     (see the module docstring); the state file at ``state_path`` is read first.  A bad row is a TraceError
     naming its line, raised after every segment closed before it has been yielded."""
-    state = _GrowingState(state_path)
     lines = _lines(source, flush_s)
     header = next((x for x in lines if x is not None), b"")
     if not header.strip():
@@ -417,9 +405,8 @@ def stream_segments(source: IO[bytes], state_path: str, path: str = "-", batch_r
         # As for a file: nothing at all is an input error (30), a header alone a trace error (36).
         raise InputFileError("empty file, expected a hand trace CSV (time,hand,x,y,z,grip,in_hand,act_on)",
                              Location(path))
-    stream = _Stream(_Window(header if header.endswith(b"\n") else header + b"\n", frozenset(), []), state, path)
+    stream = _Stream(header if header.endswith(b"\n") else header + b"\n", _GrowingState(state_path), path)
     window = stream.window
-    window.initial, window.events = stream.world[1], stream.world[2]
     try:
         rows = 0
         for batch, numbers in _batches(lines, batch_rows):
@@ -439,4 +426,4 @@ def stream_segments(source: IO[bytes], state_path: str, path: str = "-", batch_r
         window.rows, window.lines = window.rows[:keep], window.lines[:keep]
         yield from stream.close(True)
         raise exc
-    state.check_span((stream.first, stream.latest))
+    stream.state.check_span((stream.first, stream.latest))

@@ -42,6 +42,7 @@ after the last one): no hand can have caused it otherwise.
 
 from __future__ import annotations
 
+import bisect
 import io
 import re
 from dataclasses import dataclass, field
@@ -87,12 +88,17 @@ class Demonstration:
 
     def state_at(self, t: float) -> frozenset[Atom]:
         """The true fluents at time ``t`` (changes at exactly ``t`` included)."""
-        state = set(self.initial)
-        for when, atom, value in self.events:
-            if when > t:
-                break
-            (state.add if value else state.discard)(atom)
+        return apply_changes(self.initial, self.events[:bisect.bisect_right(self.events, t, key=lambda e: e[0])])
+
+
+def apply_changes(state: frozenset[Atom], changes: list[tuple[float, Atom, bool]]) -> frozenset[Atom]:
+    """``state`` with ``changes`` (time, fluent, value) applied in their order."""
+    if not changes:
         return frozenset(state)
+    out = set(state)
+    for _, atom, value in changes:
+        (out.add if value else out.discard)(atom)
+    return frozenset(out)
 
 
 def default_state_path(trace_path: str) -> str:
