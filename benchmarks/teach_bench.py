@@ -42,7 +42,8 @@ sys.path.insert(0, str(ROOT))
 
 from guided_lfd import household  # noqa: E402
 from guided_lfd.benchmark import cli_command  # noqa: E402
-from guided_lfd.reporting import PlotsUnavailable, pyplot, save_figure  # noqa: E402
+from guided_lfd.io import write_text  # noqa: E402
+from guided_lfd.reporting import PlotsUnavailable, markdown_table, pyplot, save_figure  # noqa: E402
 from guided_lfd.study.paper import KITCHEN_NAMES  # noqa: E402
 
 OUT = ROOT / "benchmarks" / "teach_results"
@@ -126,18 +127,21 @@ def _cell(row: dict | None) -> str:
             f"misdirected{taught}")
 
 
+def _by_config(rows: list[dict]) -> dict[tuple[str, str, str], dict]:
+    """The rows by (task, robot, configuration)."""
+    return {(r["task"], r["robot"], r["config"]): r for r in rows}
+
+
 def summary(rows: list[dict], command: str) -> str:
     """The markdown table: per task and robot, each configuration's demonstration length beside the baseline's."""
-    from guided_lfd.reporting import markdown_table
-
-    by = {(r["task"], r["robot"], r["config"]): r for r in rows}
+    by = _by_config(rows)
     keys = sorted({(r["task"], r["robot"]) for r in rows}, key=lambda k: (not k[0].startswith("kitchen"), k))
     table = []
     for task, robot in keys:
         g, e, u = (by.get((task, robot, c)) for c in ("guided", "excuse", "unguided"))
-        wins = _cell(g) != "-" and _cell(u) != "-" and g["solved"] is True and g["demonstrated"] < u["demonstrated"]
-        table.append([task, robot, _cell(g), _cell(e), _cell(u), "yes" if wins else "no",
-                      str(g["wall_s"]) if g else "-"])
+        cells = [_cell(g), _cell(e), _cell(u)]
+        wins = "-" not in (cells[0], cells[2]) and g["solved"] is True and g["demonstrated"] < u["demonstrated"]
+        table.append([task, robot, *cells, "yes" if wins else "no", str(g["wall_s"]) if g else "-"])
     better = sum(row[5] == "yes" for row in table)
     return "\n".join(["# Guided teaching vs demonstrating the whole task", "", f"Regenerate with: `{command}`", "",
                       "Demonstrated actions (of which the robot already had), rounds, misdirected demonstrations, "
@@ -181,8 +185,7 @@ def _task_label(task: str, robot: str) -> str:
     sizes = household.name_sizes(task)
     if sizes is None:
         return f"{KITCHEN_NAMES.get(task, task)}: robot {KITCHEN_ROBOTS.get((task, robot), robot)}"
-    short = "-".join(f"{letter}{n}" for (letter, _), n in zip(household.NAME_PARTS, sizes[0]))
-    return f"{short}: robot {household.VARIANT_TEXT.get(sizes[1], sizes[1])}"
+    return f"{household.size_tag(sizes[0])}: robot {household.VARIANT_TEXT.get(sizes[1], sizes[1])}"
 
 
 def _name_caption(tasks: list[str]) -> str:
@@ -192,7 +195,7 @@ def _name_caption(tasks: list[str]) -> str:
         return ""
     pattern = "-".join(f"{letter}<{what.split()[0]}>" for letter, what in household.NAME_PARTS)
     task, (numbers, _) = houses[-1]
-    example = "-".join(f"{letter}{n}" for (letter, _), n in zip(household.NAME_PARTS, numbers))
+    example = household.size_tag(numbers)
     spelt = ", ".join(f"{n} {what}" for (_, what), n in zip(household.NAME_PARTS, numbers))
     return f"House tasks are named {pattern}:\ne.g. {example} has {spelt}."
 
@@ -206,7 +209,7 @@ def plot(rows: list[dict], path: Path) -> Path | None:
         return None
     from matplotlib.ticker import MaxNLocator
 
-    by = {(r["task"], r["robot"], r["config"]): r for r in rows}
+    by = _by_config(rows)
     keys = sorted({(r["task"], r["robot"]) for r in rows}, key=_task_order)
     fig, ax = plt.subplots(figsize=(10, 1.5 + 0.5 * len(keys)), layout="constrained")
     height = 0.27
@@ -226,8 +229,6 @@ def plot(rows: list[dict], path: Path) -> Path | None:
 
 def run_all(args: argparse.Namespace) -> list[dict]:
     """Every task in every configuration; the rows, also written to ``--out``'s ``teach.csv``."""
-    from guided_lfd.io import write_text
-
     with tempfile.TemporaryDirectory() as scratch:
         work = tasks(args.max_items, Path(scratch))
         with ThreadPoolExecutor(max_workers=max(1, args.jobs)) as pool:
@@ -244,8 +245,6 @@ def run_all(args: argparse.Namespace) -> list[dict]:
 
 
 def main(argv: list[str] | None = None) -> int:
-    from guided_lfd.io import write_text
-
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--max-items", type=int, default=32, help="largest household task (items)")
     parser.add_argument("--jobs", type=int, default=2)

@@ -159,8 +159,8 @@ class House:
     @property
     def name(self) -> str:
         """A task name that says its size: ``house-r16-i64-d64-c0-g4-no-push``."""
-        return (f"house-r{self.rooms}-i{self.items}-d{self.drawers}-c{self.rooms * self.cupboards_per_room}"
-                f"-g{self.goals}-{self.variant}")
+        sizes = (self.rooms, self.items, self.drawers, self.rooms * self.cupboards_per_room, self.goals)
+        return f"house-{size_tag(sizes)}-{self.variant}"
 
     def check(self) -> None:
         """Refuse parameters that make no task (ValueError)."""
@@ -173,6 +173,11 @@ class House:
         targets = self.rooms * (self.cupboards_per_room if self.variant == "no-door" else self.drawers_per_room)
         if self.goals > targets:
             raise ValueError(f"{self.goals} goals need at least as many goal containers (got {targets})")
+
+
+def size_tag(sizes: tuple[int, ...]) -> str:
+    """The sizes part of a task name (``r16-i64-d64-c0-g4``), sizes in :data:`NAME_PARTS` order."""
+    return "-".join(f"{letter}{n}" for (letter, _), n in zip(NAME_PARTS, sizes))
 
 
 def name_sizes(name: str) -> tuple[tuple[int, ...], str] | None:

@@ -50,6 +50,18 @@ def kitchen(n: int, who: str = "robot") -> tuple[str, str]:
 BLOCKS = DATA / "blocks"
 
 
+def load_script(path: Path, name: str):
+    """A script that is not a package module (a benchmark, a generator) as a module, its ``main`` not run;
+    registered under ``name`` (dataclasses look their module up)."""
+    import importlib.util
+
+    spec = importlib.util.spec_from_file_location(name, path)
+    module = importlib.util.module_from_spec(spec)
+    sys.modules[name] = module
+    spec.loader.exec_module(module)  # type: ignore[union-attr]
+    return module
+
+
 def fresh_interpreter(code: str) -> str:
     """What a fresh interpreter prints running ``code`` (for process-wide state: limits, lingering)."""
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT, timeout=60)

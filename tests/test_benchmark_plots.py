@@ -2,31 +2,21 @@
 
 from __future__ import annotations
 
-import importlib.util
 import shutil
-from pathlib import Path
 
 import pytest
 
-from conftest import ROOT, record_figures
-
-
-def _script(path: Path):
-    """A benchmark script as a module (its ``main`` does not run)."""
-    spec = importlib.util.spec_from_file_location(path.stem + "_under_test", path)
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
+from conftest import ROOT, load_script, record_figures
 
 
 @pytest.fixture(scope="module")
 def scaling():
-    return _script(ROOT / "benchmarks" / "household" / "scaling.py")
+    return load_script(ROOT / "benchmarks" / "household" / "scaling.py", "scaling_under_test")
 
 
 @pytest.fixture(scope="module")
 def teach():
-    return _script(ROOT / "benchmarks" / "teach_bench.py")
+    return load_script(ROOT / "benchmarks" / "teach_bench.py", "teach_bench_under_test")
 
 
 def test_the_scaling_report_draws_one_line_per_variant_strategy_and_semantics(scaling, monkeypatch, tmp_path):

@@ -16,7 +16,7 @@ from pathlib import Path
 
 import pytest
 
-from conftest import DATA
+from conftest import DATA, load_script
 from guided_lfd.demonstration.quality import skill_quality
 from guided_lfd.pddl.reader import parse_domain
 
@@ -115,11 +115,7 @@ def test_the_committed_demonstrations_give_the_same_skills_through_the_pipeline(
 
 
 def test_rendering_the_demonstrations_again_gives_the_committed_files(tmp_path):
-    import importlib.util
-
-    spec = importlib.util.spec_from_file_location("byo_render", BYO / "render.py")
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)  # type: ignore[union-attr]
+    module = load_script(BYO / "render.py", "byo_render")
     for trace in module.render_domain(BYO / "twoarm", tmp_path):
         committed = BYO / "twoarm" / trace.name
         assert trace.read_bytes() == committed.read_bytes()

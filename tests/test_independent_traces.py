@@ -11,13 +11,11 @@
 from __future__ import annotations
 
 import csv
-import importlib.util
-import sys
 from pathlib import Path
 
 import pytest
 
-from conftest import ROOT
+from conftest import ROOT, load_script
 
 TRACES = ROOT / "tests" / "data" / "traces"
 
@@ -76,11 +74,7 @@ LEARNING_TOLERANCE = 0.02  # the pins are rounded to 2 decimals
 
 
 def _generator():
-    spec = importlib.util.spec_from_file_location("independent_trace_generator", TRACES / "generate.py")
-    module = importlib.util.module_from_spec(spec)
-    sys.modules[spec.name] = module  # dataclasses look their module up
-    spec.loader.exec_module(module)  # type: ignore[union-attr]
-    return module
+    return load_script(TRACES / "generate.py", "independent_trace_generator")
 
 
 def _manifest() -> list[dict[str, str]]:

@@ -24,13 +24,19 @@ STRATEGY_STYLE: dict[str, tuple[str, str, str]] = {
 SEMANTICS_STYLE: dict[str, str] = {"literal": "-", "consistent": "--"}
 
 
+def strategy_style(strategy: str) -> tuple[str | None, str, str]:
+    """(colour, marker, name) of a strategy: a strategy without a style of its own gets matplotlib's next colour
+    and a plain marker, under its own name."""
+    return STRATEGY_STYLE.get(strategy, (None, ".", strategy))
+
+
 def series_style(strategy: str, semantics: str) -> dict[str, str | None]:
     """Keyword arguments for the line of one (strategy, semantics) series: colour, marker, line style, label.
 
     A strategy or semantics without a style of its own gets matplotlib's next colour, a plain marker and a
     dotted line, still under its own name.
     """
-    colour, marker, name = STRATEGY_STYLE.get(strategy, (None, ".", strategy))
+    colour, marker, name = strategy_style(strategy)
     return {"color": colour, "marker": marker, "linestyle": SEMANTICS_STYLE.get(semantics, ":"),
             "label": f"{name}, {semantics} semantics"}
 
@@ -77,7 +83,7 @@ def _time_vs_size(plt: Any, rows: list[ResultRow], path: Path) -> Path:
                    if r.strategy == st and r.semantics == se and r.status == "excuse-found"]
             if pts:
                 xs, ys = zip(*pts)
-                colour, marker, name = STRATEGY_STYLE.get(st, (None, ".", st))
+                colour, marker, name = strategy_style(st)
                 ax.scatter(xs, ys, marker=marker, color=colour, alpha=0.6, label=name)
         ax.set_yscale("log")
         ax.set_xlabel("minimal excuse size (changes)")

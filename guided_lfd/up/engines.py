@@ -26,7 +26,7 @@ from unified_planning.plans import Plan, PlanKind
 from guided_lfd.api import PlanReport, plan, validate
 from guided_lfd.deadline import MAX_TIME_LIMIT, deadline_after, seconds_left
 from guided_lfd.errors import GuidedLfdError, PlanFileError, SearchTimeout, TaskTooLarge
-from guided_lfd.up.task import SUPPORTED_KIND, UpTask, to_task, unsupported_features
+from guided_lfd.up.task import SUPPORTED_KIND, UpTask, to_task
 from guided_lfd.validation import ValidationReport
 
 __all__ = ["GuidedLfdPlanner", "GuidedLfdValidator", "register"]
@@ -47,10 +47,8 @@ _CREDITS = Credits(
 
 
 def _task_or_reason(problem: AbstractProblem) -> UpTask | str:
-    """guided-lfd's task of ``problem``, or one line saying why guided-lfd cannot take it."""
-    missing = unsupported_features(problem.kind)
-    if missing:
-        return f"guided-lfd does not support {', '.join(missing)}"
+    """guided-lfd's task of ``problem``, or one line saying why guided-lfd cannot take it (``to_task`` checks
+    the problem's kind: UP computes a kind afresh at each call)."""
     try:
         return to_task(problem)  # type: ignore[arg-type]  # an action-based problem is a Problem
     except (GuidedLfdError, TypeError) as exc:
@@ -160,9 +158,10 @@ class GuidedLfdValidator(_GuidedLfdEngine, PlanValidatorMixin):
 
     def _validate(self, problem: AbstractProblem, plan: Plan) -> ValidationResult:
         """Execute ``plan`` from the problem's initial state with guided-lfd's validator."""
-        task = _task_or_reason(problem)
-        if not self.supports_plan(plan.kind):
-            task = f"guided-lfd validates sequential plans, not a {plan.kind.name}"
+        if not self.supports_plan(plan.kind):  # before the task is written and read again for nothing
+            task: UpTask | str = f"guided-lfd validates sequential plans, not a {plan.kind.name}"
+        else:
+            task = _task_or_reason(problem)
         if isinstance(task, str):
             return ValidationResult(ValidationResultStatus.UNKNOWN, self.name, [LogMessage(LogLevel.ERROR, task)])
         instances = list(plan.actions)  # type: ignore[attr-defined]  # a SequentialPlan

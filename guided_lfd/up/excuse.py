@@ -33,11 +33,6 @@ class UpExcuse:
     removed: list[FNode]
     #: The robot's plan from the excuse state (validated by guided-lfd).
     plan: SequentialPlan
-    #: The excuse's cost: its size, or the sum of ``ExcuseOptions.costs`` weights.
-    cost: int
-    #: The plan's cost: its length, or its total action cost under the problem's metric.
-    plan_cost: int | None
-    plan_optimal: bool
     #: guided-lfd's excuse, in the PDDL names of :attr:`UpExcuseReport.task`.
     excuse: Excuse = field(repr=False)
     up_problem: UPProblem = field(repr=False)
@@ -46,6 +41,21 @@ class UpExcuse:
     def size(self) -> int:
         """How many facts the excuse changes."""
         return len(self.added) + len(self.removed)
+
+    @property
+    def cost(self) -> int:
+        """The excuse's cost: its size, or the sum of ``ExcuseOptions.costs`` weights."""
+        return self.excuse.cost
+
+    @property
+    def plan_cost(self) -> int | None:
+        """The plan's cost: its length, or its total action cost under the problem's metric."""
+        return self.excuse.plan_cost
+
+    @property
+    def plan_optimal(self) -> bool:
+        """Whether the plan is proven cost-optimal."""
+        return self.excuse.plan_optimal
 
     def excuse_problem(self) -> UPProblem:
         """A copy of the UP problem that starts in the excuse state (what the human demonstrates reaching)."""
@@ -113,5 +123,4 @@ def _up_excuse(task: UpTask, excuse: Excuse) -> UpExcuse:
     """``excuse`` in UP's terms."""
     added = [task.expression(c.atom) for c in excuse.changes if c.added]
     removed = [task.expression(c.atom) for c in excuse.changes if not c.added]
-    return UpExcuse(added, removed, task.sequential_plan(excuse.plan), excuse.cost, excuse.plan_cost,
-                    excuse.plan_optimal, excuse, task.up_problem)
+    return UpExcuse(added, removed, task.sequential_plan(excuse.plan), excuse, task.up_problem)
