@@ -18,7 +18,7 @@ class _Prompted:
     """On a terminal: ask the demonstrator for each round's trace, after showing the request."""
 
     def demonstrate(self, folder, state, request, problem):
-        from guided_lfd.demonstration.trace import default_state_path
+        from guided_lfd.demonstration import default_state_path
 
         while True:  # a path that is not there is asked again, not the end of the session
             try:
@@ -159,7 +159,7 @@ def teach(
     if prefer not in (None, "demonstration"):
         raise errors.OptionError(f"--prefer {prefer}: expected 'demonstration'")
     time_limit = check_time_limit(time_limit)
-    from guided_lfd.demonstration.trace import default_state_path
+    from guided_lfd.demonstration import default_state_path
 
     _check_session(session, [robot, problem, simulate, human_model, *(str(d) for d in demo or []),
                              *(default_state_path(str(d)) for d in demo or [])])

@@ -23,6 +23,7 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any, Callable, Iterator, Protocol
 
+from guided_lfd.deadline import seconds_left
 from guided_lfd.demonstration.vocabulary import KITCHEN, HandVocabulary, infer_vocabulary
 from guided_lfd.excuse.change import Change, excuse_state
 from guided_lfd.excuse.engine import ExcuseOptions, check_option_names, describe_change, find_excuses
@@ -384,7 +385,7 @@ class GivenTraces:
     def demonstrate(self, folder: Path, state: frozenset[Atom], request: list[Change],
                     problem: Problem) -> tuple[Path, Path] | None:
         """The next trace and its state file (``TRACE.state.csv`` beside it), or None when none is left."""
-        from guided_lfd.demonstration.trace import default_state_path
+        from guided_lfd.demonstration import default_state_path
 
         if not self.traces:
             return None
@@ -418,7 +419,8 @@ def teach(robot: Domain, problem: Problem, demonstrator: Demonstrator, out: Path
     ``session.json`` and ``session.md`` are written by the caller.
     """
     was_there = out.exists()
-    options = _prepare_session(robot, problem, demonstrator, out, options or ExcuseOptions(), human)
+    options = options or ExcuseOptions()
+    _prepare_session(robot, problem, demonstrator, out, options, human)
     with replacing_previous_session(out, was_there):
         return _rounds(robot, problem, demonstrator, out, max_rounds, options, human, prefer, redundancy, deadline,
                        on_request)
@@ -439,7 +441,7 @@ def _rounds(robot: Domain, problem: Problem, demonstrator: Demonstrator, out: Pa
         for k in range(1, max_rounds + 1):
             folder = _make_folder(out / f"round-{k}")
             task = replace(problem, init=state)
-            report = find_excuses(current, task, replace(options, time_limit=_left(deadline)))
+            report = find_excuses(current, task, replace(options, time_limit=seconds_left(deadline)))
             write_text(folder / "excuse.json", report.to_json())
             write_text(folder / "excuse.svg", report.to_svg())
             if report.status is ExcuseStatus.ALREADY_SOLVABLE:
@@ -504,15 +506,8 @@ def _judge_original(taught: Domain, problem: Problem, rounds: list[Round], statu
     return original, status, reason
 
 
-def _left(deadline: float | None) -> float | None:
-    """Seconds left before ``deadline`` (at least a little: the search then ends as a timeout)."""
-    from guided_lfd.deadline import seconds_left
-
-    return seconds_left(deadline)
-
-
 def _prepare_session(robot: Domain, problem: Problem, demonstrator, out: Path, options: ExcuseOptions,
-                     human: Domain | None) -> ExcuseOptions:
+                     human: Domain | None) -> None:
     """Every check that refuses a session, before its folder is made (or a previous session's is cleared)."""
     simulated = demonstrator.human if isinstance(demonstrator, SimulatedHuman) else None
     for model, option in ((human, "--human"), (simulated if simulated is not human else None, "--simulate")):
@@ -522,7 +517,6 @@ def _prepare_session(robot: Domain, problem: Problem, demonstrator, out: Path, o
     check_option_names(robot, options)
     check_session_folder(out, problem)
     _make_folder(out)
-    return options
 
 
 #: What a session writes into its folder (besides ``round-N/``).
@@ -708,7 +702,7 @@ def _what_it_lacks(taught: Domain, problem: Problem, learned: list[str], options
         for lit in schema.precondition:
             if lit.positive and lit.atom.predicate != "=" and lit.atom.predicate not in true_somewhere:
                 return f"its learned {schema.name} needs {lit.atom}, which nothing makes true from there"
-    report = find_excuses(taught, problem, replace(options, time_limit=_left(deadline)))
+    report = find_excuses(taught, problem, replace(options, time_limit=seconds_left(deadline)))
     if report.excuse is not None:
         return "it still needs: " + "; ".join(describe_change(c, report.spellings) for c in report.excuse.changes)
     if report.unachievable_goals:
@@ -835,4 +829,4 @@ def _replan(robot: Domain, task: Problem, deadline: float | None = None,
     none (SearchTimeout past ``deadline``)."""
     from guided_lfd.api import plan
 
-    return plan(robot, task, search=search, time_limit=_left(deadline)).plan
+    return plan(robot, task, search=search, time_limit=seconds_left(deadline)).plan

@@ -55,6 +55,7 @@ from guided_lfd.errors import Location, TraceError
 from guided_lfd.pddl.model import PDDL_NAME, PDDL_RESERVED, Atom, pddl_name_defect
 from guided_lfd.pddl.source import read_text
 from guided_lfd.demonstration.vocabulary import HandVocabulary, parse_vocabulary_row, vocabulary_of
+from guided_lfd.demonstration import default_state_path  # noqa: F401  (re-exported: where callers look for it)
 
 TRACE_COLUMNS = ("time", "hand", "x", "y", "z", "grip", "in_hand", "act_on")
 STATE_COLUMNS = ("time", "fluent", "value")
@@ -99,12 +100,6 @@ def apply_changes(state: frozenset[Atom], changes: list[tuple[float, Atom, bool]
     for _, atom, value in changes:
         (out.add if value else out.discard)(atom)
     return frozenset(out)
-
-
-def default_state_path(trace_path: str) -> str:
-    """``demo.csv`` -> ``demo.state.csv``."""
-    p = Path(trace_path)
-    return str(p.with_name(p.stem + ".state.csv"))
 
 
 def _csv(text: str, path: str, columns: tuple[str, ...], numeric: tuple[str, ...] = ()) -> pd.DataFrame:

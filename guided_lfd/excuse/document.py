@@ -50,24 +50,22 @@ def _timeout_words(report: ExcuseReport) -> str:
     if bound is None:  # the time ran out before the search
         return ""
     within = f" within --max-size {report.max_size}" if report.max_size is not None else ""
-    smaller = f"smaller than {_changes_words(bound)}" if report.unit_costs else f"cheaper than {bound}"
+    smaller = f"smaller than {_count(bound, 'change')}" if report.unit_costs else f"cheaper than {bound}"
     out = f"; no excuse {smaller}{within} (proven)"
     best = report.best_candidate
     if best is None:
         return out + "; none found so far"
-    return out + f"; {_candidate_kind(best)}: size {best.size}, cost {best.cost}"
+    return out + f"; best excuse found so far ({_candidate_kind(best)}): size {best.size}, cost {best.cost}"
 
 
-def _changes_words(n: int) -> str:
-    """``1 change``, ``3 changes``."""
-    return f"{n} change" if n == 1 else f"{n} changes"
+def _count(n: int, word: str) -> str:
+    """``1 change``, ``3 changes``, ``2 steps``."""
+    return f"{n} {word}" if n == 1 else f"{n} {word}s"
 
 
 def _candidate_kind(best: Excuse) -> str:
-    """How a timed-out run's best excuse is introduced: minimal only when its cost meets the lower bound."""
-    if best.proven_minimal:
-        return "best excuse found so far (minimal: it meets the lower bound)"
-    return "best excuse found so far (not proven minimal)"
+    """What a timed-out run's best excuse is: minimal only when its cost meets the lower bound."""
+    return "minimal: it meets the lower bound" if best.proven_minimal else "not proven minimal"
 
 
 def _excuse_dict(e: Excuse, spellings: dict[str, str]) -> dict[str, Any]:
@@ -124,7 +122,7 @@ def excuse_text(report: ExcuseReport, prob: Problem, spellings: dict[str, str]) 
     if report.status is ExcuseStatus.ALREADY_SOLVABLE:
         plan = report.robot_plan or []
         lines.append(f"{name}: already solvable, no excuse needed (empty excuse).")
-        lines.append(f"Robot plan ({_steps_words(len(plan))}{_cost_words(report.robot_plan_cost, prob)}, validated):")
+        lines.append(f"Robot plan ({_count(len(plan), 'step')}{_cost_words(report.robot_plan_cost, prob)}, validated):")
         lines += [f"  {i}. {step}" for i, step in enumerate(plan, 1)]
         return "\n".join(lines) + "\n"
     if not report.excuses:
@@ -150,8 +148,7 @@ def candidate_text(report: ExcuseReport, prob: Problem, spellings: dict[str, str
     best = report.best_candidate
     if best is None:
         return ""
-    kind = _candidate_kind(best)
-    title = f"{kind[:1].upper()}{kind[1:-1]}; size {best.size}, cost {best.cost})"
+    title = f"Best excuse found so far ({_candidate_kind(best)}; size {best.size}, cost {best.cost})"
     return "\n".join(_excuse_lines(title, best, prob, spellings)) + "\n"
 
 
@@ -161,14 +158,9 @@ def _excuse_lines(title: str, e: Excuse, prob: Problem, spellings: dict[str, str
     width = max(len(describe_change(c, spellings)) for c in e.changes)
     lines += [f"  {describe_change(c, spellings):<{width}}   {c}" for c in e.changes]
     kind = "optimal, validated" if e.plan_optimal else "validated"
-    lines.append(f"then the robot's own plan ({_steps_words(len(e.plan))}{_cost_words(e.plan_cost, prob)}, {kind}):")
+    lines.append(f"then the robot's own plan ({_count(len(e.plan), 'step')}{_cost_words(e.plan_cost, prob)}, {kind}):")
     lines += [f"  {i}. {step}" for i, step in enumerate(e.plan, 1)]
     return lines
-
-
-def _steps_words(n: int) -> str:
-    """``1 step``, ``2 steps``."""
-    return f"{n} step" if n == 1 else f"{n} steps"
 
 
 def cut_short(report: ExcuseReport) -> list[str]:

@@ -30,7 +30,7 @@ from guided_lfd.excuse.space import (
 from guided_lfd.excuse.statistics import ExcuseStatistics
 from guided_lfd.excuse.status import ExcuseStatus
 from guided_lfd.excuse.strategies import DEFAULT_STRATEGY, STRATEGIES, Probe, SearchLimits
-from guided_lfd.grounding import GroundAction, GroundTask, bits
+from guided_lfd.grounding import GroundAction, GroundTask, bits, mask_of
 from guided_lfd.optimal import certified_optimal, shorten_plan
 from guided_lfd.pddl.fit import check_model_fits
 from guided_lfd.pddl.model import Atom, Domain, Literal, Problem, pretty_atom
@@ -494,17 +494,16 @@ class _Run:
     def _invariants_in_the_way(self, task: GroundTask, space: ChangeSpace) -> None:
         """No excuse keeps the invariants: when the literal semantics finds one, name the invariants its excuse
         state breaks (they may hold only because a skill is missing) in the statistics."""
-        literal = replace(self.options, semantics=Semantics.LITERAL, all_minimal=False, started=self.start)
+        # Only the excuse's changes are wanted: no optimal plan is searched for it.
+        literal = replace(self.options, semantics=Semantics.LITERAL, all_minimal=False, optimal_plans=False,
+                          started=self.start)
         try:
             report = find_excuses(self.domain, self.problem, literal)
         except SearchTimeout:
             return
         if report.excuse is None:
             return
-        index = {atom: i for i, atom in enumerate(task.atoms)}
-        state = 0
-        for atom in report.excuse.state:
-            state |= 1 << index[atom] if atom in index else 0
+        state = mask_of(task.index[atom] for atom in report.excuse.state if atom in task.index)
         broken = sorted({g.invariant for g in space.groups if g.need(state)})
         self.stats.invariants_in_the_way = broken or None
         self.stats.literal_excuse = [str(c) for c in report.excuse.changes]

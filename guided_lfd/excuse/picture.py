@@ -19,7 +19,9 @@ import html
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
-from guided_lfd.pddl.model import Atom, Domain, Literal, Problem, pretty_atom
+from guided_lfd.excuse.change import Change
+from guided_lfd.excuse.engine import describe_change
+from guided_lfd.pddl.model import Atom, Domain, Problem
 
 if TYPE_CHECKING:
     from guided_lfd.excuse.engine import ExcuseReport
@@ -65,6 +67,20 @@ class Panel:
 
     title: str
     facts: list[Fact]
+
+    @property
+    def listed(self) -> list[Fact]:
+        """The facts listed under the panel (no object, or more than two)."""
+        return [f for f in self.facts if f.shape == "list"]
+
+    @property
+    def inside(self) -> dict[str, list[Fact]]:
+        """Each object's facts drawn inside its box (its unary facts)."""
+        out: dict[str, list[Fact]] = {}
+        for fact in self.facts:
+            if fact.shape == "node":
+                out.setdefault(fact.atom.args[0], []).append(fact)
+        return out
 
 
 @dataclass
@@ -124,10 +140,11 @@ def excuse_scene(report: ExcuseReport, max_objects: int = MAX_OBJECTS) -> Scene:
     changes = excuse.changes if excuse is not None else []
     added = {c.atom for c in changes if c.added}
     removed = {c.atom for c in changes if not c.added}
-    after = (problem.init | added) - removed
-    every = _objects(report.domain, problem, problem.init | after)
+    after = excuse.state if excuse is not None else problem.init
+    both = problem.init | after
+    every = _objects(report.domain, problem, both)
     seeds = [a for c in changes for a in c.atom.args] + [a for g in problem.goal for a in g.atom.args]
-    shown = _layout_order(sorted(every), [s for s in seeds if s in every], _links(problem.init | after), max_objects)
+    shown = _layout_order(sorted(every), [s for s in seeds if s in every], _links(both), max_objects)
     visible = set(shown)
     mark = {**dict.fromkeys(added, ADDED), **dict.fromkeys(removed, REMOVED)}
 
@@ -137,7 +154,7 @@ def excuse_scene(report: ExcuseReport, max_objects: int = MAX_OBJECTS) -> Scene:
     panels = [Panel("Initial state", facts(problem.init))]
     if excuse is not None:
         panels.append(Panel("Excuse state (the initial state with the changes)", facts(after | removed)))
-    hidden = sum(1 for a in problem.init | after if not visible.issuperset(a.args))
+    hidden = sum(1 for a in both if not visible.issuperset(a.args))
     return Scene(_headline(report, problem), _notes(report, problem), shown, every, panels,
                  hidden_objects=len(every) - len(shown), hidden_facts=hidden, spellings=spellings,
                  touched=frozenset(a for c in changes for a in c.atom.args))
@@ -204,19 +221,14 @@ def _headline(report: ExcuseReport, problem: Problem) -> str:
 
 def _notes(report: ExcuseReport, problem: Problem) -> list[str]:
     """The lines under the headline: the goal, and the excuse's size and semantics."""
-    notes = ["Goal: " + "; ".join(_goal_text(g, report.spellings) for g in problem.goal)]
+    notes = ["Goal: " + "; ".join(describe_change(Change(g.atom, g.positive), report.spellings)
+                                  for g in problem.goal)]
     excuse = report.excuse
     if excuse is not None:
         which = f"the first of {len(report.excuses)} excuses listed; " if len(report.excuses) > 1 else ""
         notes.append(f"{which}{excuse.size} change(s), cost {excuse.cost}, {report.semantics.value} semantics; "
                      f"then the robot's own plan of {len(excuse.plan)} step(s)")
     return notes
-
-
-def _goal_text(goal: Literal, spellings: dict[str, str]) -> str:
-    """A goal literal in the paper's words: ``Inside RedPlate, PinkDrawer``, ``Not open Drawer``."""
-    text = pretty_atom(goal.atom, spellings)
-    return text if goal.positive else f"Not {text[:1].lower()}{text[1:]}"
 
 
 def _dot_string(text: str) -> str:
@@ -251,17 +263,14 @@ def scene_dot(scene: Scene) -> str:
 
 def _dot_nodes(scene: Scene, panel: Panel, k: int) -> list[str]:
     """The panel's object nodes (unary facts as coloured lines of an HTML label) and its list of other facts."""
-    inside: dict[str, list[Fact]] = {}
-    for fact in panel.facts:
-        if fact.shape == "node":
-            inside.setdefault(fact.atom.args[0], []).append(fact)
+    inside = panel.inside
     out = []
     for i, obj in enumerate(scene.objects):
         rows = [f"<B>{html.escape(scene.name(obj))}</B>", f'<FONT POINT-SIZE="10">{html.escape(scene.types[obj])}</FONT>']
         rows += [_dot_line(scene, f) for f in inside.get(obj, [])]
         border = ', penwidth=2, color="#24292f"' if obj in scene.touched else ""
         out.append(f"    p{k}_{i} [label=<{'<BR/>'.join(rows)}>{border}];")
-    listed = [f for f in panel.facts if f.shape == "list"]
+    listed = panel.listed
     if listed:
         rows = ["<I>Other facts</I>", *(_dot_line(scene, f) for f in listed)]
         out.append(f"    p{k}_facts [shape=plaintext, style=solid, label=<{'<BR/>'.join(rows)}>];")

@@ -82,12 +82,9 @@ def _layout(scene: Scene) -> _Layout:
     texts = {obj: [scene.name(obj), scene.types[obj]] for obj in scene.objects}
     rows = dict.fromkeys(scene.objects, 2)  # name, type, then the most unary facts either panel has
     for panel in scene.panels:
-        inside = [f.atom.args[0] for f in panel.facts if f.shape == "node"]
-        for obj in set(inside):
-            rows[obj] = max(rows[obj], 2 + inside.count(obj))
-        for fact in panel.facts:
-            if fact.shape == "node":
-                texts[fact.atom.args[0]].append(scene.label(fact))
+        for obj, facts in panel.inside.items():
+            rows[obj] = max(rows[obj], 2 + len(facts))
+            texts[obj] += [scene.label(f) for f in facts]
     sizes = {obj: (max(_text_width(t, bold=True) for t in texts[obj]) + 2 * PAD + 8, 2 * PAD + LINE * rows[obj])
              for obj in scene.objects}
     n = len(scene.objects)
@@ -100,8 +97,7 @@ def _layout(scene: Scene) -> _Layout:
     widest = max(widths, default=0.0)
     tallest = max((sizes[obj][1] for obj in scene.objects), default=0.0)
     width = 2 * radius + widest + 2 * MARGIN
-    listed = [[f for f in p.facts if f.shape == "list"] for p in scene.panels]
-    width = max([width, *(_text_width(scene.label(f)) + 2 * MARGIN for facts in listed for f in facts)])
+    width = max([width, *(_text_width(scene.label(f)) + 2 * MARGIN for p in scene.panels for f in p.listed)])
     boxes = {}
     for i, obj in enumerate(scene.objects):
         angle = start + 2 * math.pi * i / n
@@ -110,7 +106,8 @@ def _layout(scene: Scene) -> _Layout:
     total = len(scene.panels) * width + (len(scene.panels) - 1) * GAP
     chars = max(60, int(total / (SIZE * 0.6)))
     header = textwrap.wrap(scene.headline, chars) + [line for note in scene.notes for line in textwrap.wrap(note, chars)]
-    return _Layout(boxes, width, 2 * radius + tallest + 2 * MARGIN, max(map(len, listed)), header)
+    longest = max(len(p.listed) for p in scene.panels)
+    return _Layout(boxes, width, 2 * radius + tallest + 2 * MARGIN, longest, header)
 
 
 def scene_svg(scene: Scene) -> str:
@@ -198,11 +195,11 @@ def _panel(group: ET.Element, scene: Scene, panel: Panel, layout: _Layout) -> No
     body = ET.SubElement(group, "g", {"transform": "translate(0,30)"})
     if not scene.objects:
         _text(body, layout.width / 2, layout.circle / 2, "(no objects)", fill=COLOURS[SAME], anchor="middle")
+    inside = panel.inside
     for obj in scene.objects:
-        _box(body, scene, obj, [f for f in panel.facts if f.shape == "node" and f.atom.args[0] == obj],
-             layout.boxes[obj])
+        _box(body, scene, obj, inside.get(obj, []), layout.boxes[obj])
     _arrows(body, scene, panel, layout.boxes)  # over the boxes: no box hides a label
-    listed = [f for f in panel.facts if f.shape == "list"]
+    listed = panel.listed
     if listed:
         y = layout.circle + SIZE
         _text(body, MARGIN, y, "Other facts:", fill="#57606a", weight="bold")
@@ -236,9 +233,10 @@ def _arrows(parent: ET.Element, scene: Scene, panel: Panel, boxes: dict[str, _Bo
                      "stroke": COLOURS[mark], "stroke-width": width, "marker-end": f"url(#arrow-{mark})"}
             if dash:
                 attrs["stroke-dasharray"] = dash
-            group = _fact_group(parent, Fact(fact.atom, mark))
+            drawn = Fact(fact.atom, mark)
+            group = _fact_group(parent, drawn)
             ET.SubElement(group, "path", attrs)
-            _label(group, mx, my + SIZE / 2 - 1, scene.label(Fact(fact.atom, mark)), mark)
+            _label(group, mx, my + SIZE / 2 - 1, scene.label(drawn), mark)
 
 
 def _box(parent: ET.Element, scene: Scene, obj: str, inside: list[Fact], box: _Box) -> None:
