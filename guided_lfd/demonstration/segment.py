@@ -76,6 +76,8 @@ class Segment:
     after: frozenset[Atom] = field(default_factory=frozenset)
     held_before: str = ""  # what the hand held just before the segment
     held_after: str = ""  # ... and at its end
+    # Its own changes (time, fluent, value), in time order: what ``after`` applies to ``before``.
+    changes: list[tuple[float, Atom, bool]] = field(default_factory=list, compare=False, repr=False)
 
     @property
     def added(self) -> frozenset[Atom]:
@@ -379,9 +381,9 @@ def segment(demo: Demonstration) -> list[Segment]:
     out: list[Segment] = []
     for segs in per_hand.values():
         for k, seg in enumerate(segs):
-            own = sorted(caused[id(seg)], key=lambda c: c[0])
+            seg.changes = sorted(caused[id(seg)], key=lambda c: c[0])
             before = states.get(id(seg), demo.initial)
-            seg.before, seg.after = frozenset(before), apply_changes(before, own)
+            seg.before, seg.after = frozenset(before), apply_changes(before, seg.changes)
             if seg.activity == "Manipulate":
                 seg.activity = name_manipulation(seg.object, seg.before, seg.after)
             out.append(seg)

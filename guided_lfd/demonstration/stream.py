@@ -348,25 +348,24 @@ class _Stream:
                 if before.size:
                     tails[hand] = float(before.max()) - 2 * MARGIN_S
             window.cut(start, times, hands, tails)
-            self.carry = self._carried_over(opened, demo)
+            self.carry = self._carried_over(opened)
             self.checked = len(window.rows)
         return sorted(closed, key=lambda s: (s.start, s.hand))
 
-    def _carried_over(self, opened: dict[str, Segment], demo: Demonstration) -> dict[str, Segment]:
+    def _carried_over(self, opened: dict[str, Segment]) -> dict[str, Segment]:
         """The open segments the window's last cut went through (or through the margin before them), each as
         far as the cut: its start, the hand and world before it, and its own changes up to the margin after
         the cut (the next window's segments there are the cut's artefacts)."""
-        start = self.window.start
-        through = {h: s for h, s in opened.items()
-                   if self.window.hand_start[h] > (self.carry[h].start if h in self.carry else s.start) - MARGIN_S}
-        if not through:
-            return {}
-        early = replace(demo, events=[e for e in demo.events if e[0] < start + MARGIN_S])
+        cut = self.window.start + MARGIN_S
         carry = {}
-        for seg in segment(early):
-            raw = through.get(seg.hand)
-            if raw is not None and abs(seg.start - raw.start) < 1e-9 and seg.hand not in carry:
-                carry[seg.hand] = _carried(self.carry[seg.hand], seg) if seg.hand in self.carry else seg
+        for hand, seg in opened.items():
+            if self.window.hand_start[hand] <= (self.carry[hand].start if hand in self.carry else seg.start) - MARGIN_S:
+                continue  # the cut is before it and its margin
+            early = [c for c in seg.changes if c[0] < cut]
+            # A part without a change of its own keeps after == before: the world before its first change is
+            # then the later part's (see _carried).
+            part = seg if len(early) == len(seg.changes) else replace(seg, after=apply_changes(seg.before, early))
+            carry[hand] = _carried(self.carry[hand], part) if hand in self.carry else part
         return carry
 
     def _hand(self, hand: str, segs: list[Segment], now: float, final: bool,
