@@ -42,7 +42,7 @@ def validate(
     dom, prob = parse_task(domain, problem)
     ui.reading_warnings(dom)
     steps = parse_plan(plan_file, dom, prob)
-    report = validate_plan(dom, prob.init, prob.goal, steps, prob)
+    report = validate_plan(dom, prob.init, prob.goal, steps, prob, prob.goal_condition)
     failure = report.first_failure
     reason = None if report.valid else _reason(report, steps, plan_file)
     if json_out:

@@ -143,4 +143,4 @@ def validate(domain: Domain, problem: Problem, plan: Source | Sequence[PlanStep 
     else:
         text = "\n".join(str(step) for step in plan)
         steps = parse_plan_text(text, "<plan>", domain, problem)
-    return validate_plan(domain, problem.init, problem.goal, steps, problem)
+    return validate_plan(domain, problem.init, problem.goal, steps, problem, problem.goal_condition)

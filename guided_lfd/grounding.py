@@ -40,6 +40,8 @@ class GroundAction:
     delete: int
     #: What the action costs (:func:`guided_lfd.pddl.model.action_cost`): 1 without action costs.
     cost: int = 1
+    #: ADL: conditional effects, each applied when its condition holds in the state before the action.
+    effects: tuple["GroundEffect", ...] = ()
 
     # Index lists of the masks, for code that walks an action's atoms (the
     # relaxed tasks, relevance, LM-cut): filled in by the grounder, computed
@@ -69,8 +71,71 @@ class GroundAction:
         return (state & self.pre_pos) == self.pre_pos and not (state & self.pre_neg)
 
     def apply(self, state: int) -> int:
-        """The successor state (adds win over deletes, as in PDDL)."""
-        return (state & ~self.delete) | self.add
+        """The successor state (adds win over deletes, as in PDDL); derived atoms are the task's to close."""
+        if not self.effects:
+            return (state & ~self.delete) | self.add
+        add, delete = self.add, self.delete
+        for eff in self.effects:
+            if state & eff.pos == eff.pos and not state & eff.neg:
+                add |= eff.add
+                delete |= eff.delete
+        return (state & ~delete) | add
+
+
+@dataclass(frozen=True)
+class GroundEffect:
+    """A conditional effect: ``add`` and ``delete`` when ``pos`` holds and nothing of ``neg``."""
+
+    pos: int
+    neg: int
+    add: int
+    delete: int
+
+
+@dataclass(frozen=True)
+class GroundAxiom:
+    """A derived atom ``head`` holds when ``pos`` does and nothing of ``neg`` (negation as failure)."""
+
+    head: int
+    pos: int
+    neg: int
+
+
+class AxiomClosure:
+    """The derived atoms of a state: axiom layers evaluated in order, each to its least fixpoint.
+
+    A layer's negative conditions are on atoms of earlier layers (or basic
+    ones), so they are settled when it runs, as in Fast Downward's search.
+    """
+
+    def __init__(self, layers: list[list[GroundAxiom]], derived: int) -> None:
+        self.layers = layers
+        self.derived = derived
+        #: Per layer: axioms waiting on each atom (positive body), and how many body atoms each needs.
+        self._watch: list[dict[int, list[int]]] = []
+        for layer in layers:
+            watch: dict[int, list[int]] = {}
+            for k, ax in enumerate(layer):
+                for i in bits(ax.pos):
+                    watch.setdefault(i, []).append(k)
+            self._watch.append(watch)
+
+    def close(self, state: int) -> int:
+        """``state`` with its derived atoms (whatever derived atoms it had are recomputed)."""
+        state &= ~self.derived
+        for layer, watch in zip(self.layers, self._watch):
+            missing = [(ax.pos & ~state).bit_count() for ax in layer]
+            ready = [k for k, ax in enumerate(layer) if not missing[k] and not state & ax.neg]
+            while ready:
+                ax = layer[ready.pop()]
+                if state >> ax.head & 1:
+                    continue
+                state |= 1 << ax.head
+                for k in watch.get(ax.head, ()):
+                    missing[k] -= 1
+                    if not missing[k] and not state & layer[k].neg:
+                        ready.append(k)
+        return state
 
 
 @dataclass
@@ -85,6 +150,26 @@ class GroundTask:
     goal_pos: int
     goal_neg: int
     actions: list[GroundAction]
+    #: ADL: how derived atoms follow from a state (None: the task has none) and their mask.
+    axioms: AxiomClosure | None = None
+
+    @property
+    def derived(self) -> int:
+        """The derived atoms' mask (0 without axioms)."""
+        return self.axioms.derived if self.axioms is not None else 0
+
+    @property
+    def is_adl(self) -> bool:
+        """Whether states need more than STRIPS successors (conditional effects or axioms)."""
+        return self.axioms is not None or any(a.effects for a in self.actions)
+
+    def close(self, state: int) -> int:
+        """``state`` with its derived atoms."""
+        return state if self.axioms is None else self.axioms.close(state)
+
+    def successor(self, action: GroundAction, state: int) -> int:
+        """The state after ``action`` (conditional effects and derived atoms included)."""
+        return self.close(action.apply(state))
 
     def satisfies_goal(self, state: int) -> bool:
         """Whether ``state`` models the goal."""
@@ -164,7 +249,11 @@ def ground(
     every state the task will be asked about, so actions whose static
     preconditions on them are false are pruned (as a planner's grounder does).
     ``actions`` overrides the domain's action list (e.g. with a skill removed).
+    ADL tasks go to Fast Downward's normal form (:func:`guided_lfd.planning.adl.ground_adl`),
+    for planning only: every static predicate fixed.
     """
+    if domain.is_adl or problem.goal_condition is not None:
+        return _ground_adl(domain, problem, fixed, actions, deadline)
     static = static_predicates(domain) & set(fixed)
     # Atoms of fixed static predicates keep their initial value in every state
     # considered: only the true ones need an index (a planner's grounding).
@@ -205,6 +294,22 @@ def ground(
         else:
             goal_neg |= 1 << index[lit.atom]
     return GroundTask(domain, problem, atoms, index, init, goal_pos, goal_neg, ground_actions)
+
+
+def _ground_adl(domain: Domain, problem: Problem, fixed: Iterable[str], actions: Sequence[ActionSchema] | None,
+                deadline: float | None) -> GroundTask:
+    from dataclasses import replace
+
+    from guided_lfd.errors import UnsupportedFeatureError
+    from guided_lfd.planning.adl import ground_adl
+
+    if not static_predicates(domain) <= set(fixed):
+        raise UnsupportedFeatureError(
+            "excuses on domains with ADL (conditional effects, quantifiers, disjunctions, derived predicates) "
+            "are not supported yet; plan and validate are", Location(domain.path))
+    if actions is not None:
+        domain = replace(domain, actions=list(actions))
+    return ground_adl(domain, problem, deadline)
 
 
 def _key_function(atom: Atom, params: list[str]):

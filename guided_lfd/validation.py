@@ -10,7 +10,10 @@ import re
 from dataclasses import dataclass, field
 
 from guided_lfd.errors import InputFileError, Location, PlanFileError
+from guided_lfd.pddl.formula import Formula
+from guided_lfd.pddl.formula import holds as formula_holds
 from guided_lfd.pddl.model import EQUALITY, Atom, Domain, Literal, MissingCostError, Problem, action_cost, objects_by_type
+from guided_lfd.pddl.semantics import conjuncts, derived_atoms, effect_atoms, failed_conditions, strata
 from guided_lfd.pddl.source import read_text
 
 
@@ -29,11 +32,11 @@ class PlanStep:
 
 @dataclass
 class StepReport:
-    """Whether one step was applicable, and which precondition literals failed."""
+    """Whether one step was applicable, and which precondition literals (ADL: conjuncts) failed."""
 
     index: int
     step: PlanStep
-    failed: list[Literal] = field(default_factory=list)
+    failed: list[Formula] = field(default_factory=list)
     #: The step's cost term when the problem gives it no value (PDDL: then it cannot be applied).
     undefined_cost: Atom | None = None
 
@@ -47,7 +50,7 @@ class ValidationReport:
     """Result of validating a plan from a state."""
 
     steps: list[StepReport]
-    unsatisfied_goal: list[Literal]
+    unsatisfied_goal: list[Formula]
     final_state: frozenset[Atom]
     #: What the steps applied cost (see :func:`plan_cost`); None unless the problem was given.
     cost: int | None = None
@@ -123,21 +126,28 @@ def parse_plan(path: str, domain: Domain, problem: Problem) -> list[PlanStep]:
 
 
 def validate_plan(domain: Domain, state: frozenset[Atom] | set[Atom], goal: tuple[Literal, ...], steps: list[PlanStep],
-                  problem: Problem | None = None) -> ValidationReport:
+                  problem: Problem | None = None, goal_condition: Formula | None = None) -> ValidationReport:
     """Execute ``steps`` from ``state``; stop at the first inapplicable step.
 
     With ``problem``, steps are also costed (:func:`guided_lfd.pddl.model.action_cost`): a step
     whose cost has no value there cannot be applied, and the report carries the total cost.
+    ADL (:mod:`guided_lfd.pddl.semantics`): preconditions and ``goal_condition`` are evaluated with
+    the derived atoms of the state, conditional effects in the state before the step.
     """
     current = set(state)
     schemas = {a.name: a for a in domain.actions}
+    adl = _AdlWorld(domain, problem) if domain.is_adl or goal_condition is not None else None
     reports: list[StepReport] = []
     total = 0
     for i, step in enumerate(steps, start=1):
         schema = schemas[step.action]
         binding = {v: a for (v, _), a in zip(schema.params, step.args)}
-        ground_pre = [lit.substitute(binding) for lit in schema.precondition]
-        failed = [lit for lit in ground_pre if not holds(lit, current)]
+        if adl is None:
+            failed: list[Formula] = [lit for lit in (l.substitute(binding) for l in schema.precondition)
+                                     if not holds(lit, current)]
+        else:
+            world = adl.world(current)
+            failed = failed_conditions(schema, binding, world, adl.objects)
         report = StepReport(i, step, failed)
         reports.append(report)
         if not failed and problem is not None:
@@ -147,11 +157,36 @@ def validate_plan(domain: Domain, state: frozenset[Atom] | set[Atom], goal: tupl
                 report.undefined_cost = exc.term
         if not report.ok:
             return ValidationReport(reports, [], frozenset(current))
-        adds = {a.substitute(binding) for a in schema.add}
-        dels = {a.substitute(binding) for a in schema.delete}
+        if adl is None:
+            adds = {a.substitute(binding) for a in schema.add}
+            dels = {a.substitute(binding) for a in schema.delete}
+        else:
+            adds, dels = effect_atoms(schema, binding, world, adl.objects)
         current = (current - dels) | adds
-    unsatisfied = [lit for lit in goal if not holds(lit, current)]
+    if adl is None:
+        unsatisfied: list[Formula] = [lit for lit in goal if not holds(lit, current)]
+    else:
+        world = adl.world(current)
+        parts: list[Formula] = list(goal) if goal_condition is None else conjuncts(goal_condition)
+        unsatisfied = [part for part in parts if not formula_holds(part, world, adl.objects)]
     return ValidationReport(reports, unsatisfied, frozenset(current), None if problem is None else total)
+
+
+class _AdlWorld:
+    """Objects by type and derived atoms, for evaluating ADL formulas on basic states."""
+
+    def __init__(self, domain: Domain, problem: Problem | None) -> None:
+        if problem is None:  # quantifiers range over the problem's objects of each type
+            raise ValueError("validating a plan of an ADL domain needs its problem")
+        self.domain = domain
+        self.objects = objects_by_type(domain, problem)
+        self.layers = strata(domain)
+
+    def world(self, state: set[Atom]) -> set[Atom]:
+        """``state`` with its derived atoms."""
+        if not self.layers:
+            return state
+        return state | derived_atoms(self.domain, state, self.objects, self.layers)
 
 
 def cost_kind(problem: Problem) -> str:
@@ -165,7 +200,7 @@ def validated(domain: Domain, problem: Problem, steps: list[PlanStep], what: str
     """The report of ``steps`` from ``state`` (default: the problem's initial state) to ``goal`` (the problem's);
     a :class:`RuntimeError` if they do not validate: a plan guided-lfd made that fails is a bug, never hidden."""
     report = validate_plan(domain, problem.init if state is None else state, problem.goal if goal is None else goal,
-                           steps, problem)
+                           steps, problem, problem.goal_condition if goal is None else None)
     if not report.valid:
         raise RuntimeError(f"internal check failed: {what} does not validate")
     return report

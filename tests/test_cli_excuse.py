@@ -113,7 +113,7 @@ def test_bad_problem_through_cli_never_tracebacks(runner, app, name, code):
 def test_bad_domain_requirement_through_cli(runner, app):
     result = run(runner, app, DATA / "bad" / "requirement.pddl", BLOCKS / "task03.pddl")
     assert result.exit_code == 33
-    assert "requirement.pddl:6:34: unsupported: unsupported requirement :conditional-effects" in result.stderr
+    assert "requirement.pddl:6:34: unsupported: unsupported requirement :durative-actions" in result.stderr
 
 
 def test_output_is_not_clobbered_on_error(runner, app, tmp_path):

@@ -163,11 +163,10 @@ def test_a_type_named_like_an_object_reads_in_messages_as_written(tmp_path):
 
 @pytest.mark.parametrize("domain,problem,where", [
     ("(:types t) (:predicates (p ?x))", "(:objects o - t o - t)", "p.pddl:1:49"),
-    ("(:types t t) (:predicates (p ?x))", "(:objects o)", "d.pddl:1:30"),
     ("(:types t) (:predicates (p ?x) (p ?y))", "(:objects o)", None),
     ("(:types t) (:constants o - t) (:predicates (p ?x))", "(:objects o - t)", "p.pddl:1:60"),
     ("(:types t) (:predicates (t ?x) (p ?x))", "(:objects t - t)", "d.pddl:1:45"),
-], ids=["two objects", "two types", "two predicates", "an object and a constant", "a type and a predicate"])
+], ids=["two objects", "two predicates", "an object and a constant", "a type and a predicate"])
 def test_a_name_declared_twice_in_one_namespace_is_still_refused(tmp_path, domain, problem, where):
     act = "(:action a :parameters (?x) :precondition (p ?x) :effect (not (p ?x)))"
     paths = _write(tmp_path, f"(define (domain d) {domain} {act})",

@@ -17,12 +17,19 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from guided_lfd.errors import Location
 
-#: The PDDL requirements guided-lfd accepts.
-SUPPORTED_REQUIREMENTS = (":strips", ":typing", ":negative-preconditions", ":equality", ":action-costs")
+if TYPE_CHECKING:
+    from guided_lfd.pddl.formula import ConditionalEffect, DerivedRule, Formula
+
+#: The PDDL requirements guided-lfd accepts: STRIPS with typing, negative preconditions, equality and
+#: action costs, and the ADL ones (read with Fast Downward's translator, see :mod:`guided_lfd.pddl.formula`).
+STRIPS_REQUIREMENTS = (":strips", ":typing", ":negative-preconditions", ":equality", ":action-costs")
+ADL_REQUIREMENTS = (":adl", ":disjunctive-preconditions", ":existential-preconditions", ":universal-preconditions",
+                    ":quantified-preconditions", ":conditional-effects", ":derived-predicates")
+SUPPORTED_REQUIREMENTS = STRIPS_REQUIREMENTS + ADL_REQUIREMENTS
 
 #: The one numeric fluent guided-lfd supports: the accumulated action cost of :action-costs.
 TOTAL_COST = "total-cost"
@@ -115,6 +122,12 @@ class ActionSchema:
     :action-costs: a number, or a numeric function applied to the action's
     parameters and constants (an :class:`Atom` over a function, its values in
     the problem's ``:init``); None when the action has no cost effect.
+
+    ADL: ``condition`` is the whole precondition when it is more than a
+    conjunction of literals (``precondition`` then holds its top-level
+    literals, which every state it applies in satisfies); ``effects`` are the
+    conditional and universally quantified effects (``add`` and ``delete``
+    hold the plain ones).
     """
 
     name: str
@@ -124,6 +137,13 @@ class ActionSchema:
     delete: tuple[Atom, ...]
     origin: str | None = None
     cost: "int | Atom | None" = None
+    condition: "Formula | None" = None
+    effects: "tuple[ConditionalEffect, ...]" = ()
+
+    @property
+    def is_adl(self) -> bool:
+        """Whether the action needs more than STRIPS (a formula precondition or conditional effects)."""
+        return self.condition is not None or bool(self.effects)
 
     def reversed(self) -> "ActionSchema":
         """The action undone: pre' = pre - del + add, add' = del, del' = add - pre.
@@ -173,6 +193,17 @@ class Domain:
     implicit_constants: tuple[str, ...] = ()
     #: One-line diagnostics of reading the file (``file:line:col: warning: ...``), for the user.
     warnings: tuple[str, ...] = field(default=(), compare=False)
+    #: Derived predicates' rules (``:derived``); their predicates are in ``predicates`` too.
+    axioms: "tuple[DerivedRule, ...]" = ()
+
+    @property
+    def is_adl(self) -> bool:
+        """Whether the domain needs more than STRIPS (see :class:`ActionSchema`)."""
+        return bool(self.axioms) or any(act.is_adl for act in self.actions)
+
+    def derived_predicates(self) -> set[str]:
+        """Predicates defined by ``:derived`` rules (never changed by an action or an excuse directly)."""
+        return {rule.predicate for rule in self.axioms}
 
     def locate(self, name: str, *sections: str) -> Location:
         """Where ``name`` is written in the domain file (searched in ``sections`` first)."""
@@ -212,8 +243,9 @@ class Domain:
         return list(dict.fromkeys(found))
 
     def fluent_predicates(self) -> set[str]:
-        """Predicates some action adds or deletes."""
-        return {a.predicate for act in self.actions for a in (*act.add, *act.delete)}
+        """Predicates some action adds or deletes (conditional effects included)."""
+        plain = {a.predicate for act in self.actions for a in (*act.add, *act.delete)}
+        return plain | {eff.literal.atom.predicate for act in self.actions for eff in act.effects}
 
 
 @dataclass
@@ -235,6 +267,9 @@ class Problem:
     spellings: dict[str, str] = field(default_factory=dict)
     function_values: dict[Atom, int] = field(default_factory=dict)
     metric: bool = False
+    #: ADL: the whole goal when it is more than a conjunction of literals (``goal`` then holds its
+    #: top-level literals).
+    goal_condition: "Formula | None" = None
 
 
 class MissingCostError(KeyError):

@@ -35,16 +35,11 @@ from guided_lfd.pddl.model import (
     Problem,
     type_members,
 )
-from guided_lfd.pddl import costs, fast_reader, names
+from guided_lfd.pddl import adl_reader, costs, fast_reader, names
 from guided_lfd.pddl.source import SExpr, SourceMap, Token, read_text
 
-# Keywords of PDDL features beyond STRIPS, with the requirement they belong to.
+# Keywords of PDDL features beyond STRIPS and ADL, with the requirement they belong to.
 _UNSUPPORTED_KEYWORDS = {
-    "when": ":conditional-effects",
-    "forall": ":universal-preconditions",
-    "exists": ":existential-preconditions",
-    "or": ":disjunctive-preconditions",
-    "imply": ":disjunctive-preconditions",
     "decrease": ":numeric-fluents",
     "assign": ":numeric-fluents",
     "scale-up": ":numeric-fluents",
@@ -53,8 +48,8 @@ _UNSUPPORTED_KEYWORDS = {
     ">": ":numeric-fluents",
     "<=": ":numeric-fluents",
     ">=": ":numeric-fluents",
-    ":derived": ":derived-predicates",
     ":durative-action": ":durative-actions",
+    "probabilistic": ":probabilistic-effects",
     ":constraints": ":constraints",
 }
 
@@ -96,7 +91,7 @@ def _check_features(src: SourceMap, what: str) -> None:
             assert isinstance(tok, Token)
             raise UnsupportedFeatureError(
                 f"'{tok.text}' needs {_UNSUPPORTED_KEYWORDS[name]}, which guided-lfd does not support "
-                f"(expected STRIPS with typing, negative preconditions and equality)",
+                f"(expected STRIPS with typing, negative preconditions, equality and action costs, or ADL)",
                 src.location(tok.line, tok.col),
             )
     names.check_either(src)  # '(either a b)' as a predicate parameter's type only, as Fast Downward has it
@@ -802,6 +797,45 @@ def parse_domain(path: str | Path) -> Domain:
     src = _source_map(name, "domain")
     _check_kind(src, "domain")
     _check_features(src, "domain")
+    if adl_reader.needs_adl(src):
+        return adl_reader.read_domain(src, name)
+    try:
+        return _strips_domain(src, name)
+    except (PddlSyntaxError, PddlSemanticError) as exc:
+        if not _translator_may_read(exc, src):
+            raise
+        return _or_raise(exc, lambda: adl_reader.read_domain(src, name))
+
+
+def _translator_may_read(exc: GuidedLfdError, src: SourceMap) -> bool:
+    """Whether Fast Downward's parser may read what tarski's grammar refused: valid PDDL that tarski
+    does not take (names starting with a digit or called 'domain', 'object' among the types, a type
+    declared twice alike, a type and a predicate of the same name)."""
+    if isinstance(exc, PddlSyntaxError) or "is declared twice in :types" in exc.message:
+        return True
+    match = re.match(r"'([^']+)' is declared twice \(expected", exc.message)
+    if match is None:
+        return False
+    name = match.group(1).lower()
+    try:
+        types = {t.lower() for t, _ in (src.types_parents_first() or [])}
+    except GuidedLfdError:
+        return False
+    predicates = src.section(":predicates")
+    declared = {p.head() for p in predicates.items[1:] if isinstance(p, SExpr)} if predicates is not None else set()
+    return name in types and name in declared
+
+
+def _or_raise(exc: GuidedLfdError, read):
+    """What ``read`` (the translator's reading) gives, or ``exc`` (the precise error) if it fails too."""
+    try:
+        return read()
+    except GuidedLfdError:
+        raise exc from None
+
+
+def _strips_domain(src: SourceMap, name: str) -> Domain:
+    """A STRIPS domain from its source map: the fast path, else tarski's."""
     fast = fast_reader.read_domain(src, name)
     if fast is not None:
         return fast
@@ -838,6 +872,33 @@ def parse_task(domain_path: str | Path, problem_path: str | Path, *, domain_text
     psrc = _source_map(pname, "problem", problem_text)
     _check_kind(psrc, "problem")
     _check_features(psrc, "problem")
+    if adl_reader.needs_adl(dsrc):
+        domain = adl_reader.read_domain(dsrc, dname)
+        _check_domain_reference(psrc, domain)
+        return domain, adl_reader.read_problem(psrc, pname, domain)
+    if adl_reader.needs_adl(psrc):  # a STRIPS domain, an ADL goal
+        domain = _strips_domain(dsrc, dname)
+        _check_domain_reference(psrc, domain)
+        return domain, adl_reader.read_problem(psrc, pname, domain)
+    try:
+        return _strips_task(dsrc, dname, psrc, pname)
+    except (PddlSyntaxError, PddlSemanticError) as exc:
+        if not _translator_may_read(exc, dsrc if exc.location and exc.location.path == dname else psrc):
+            raise
+
+        def read() -> tuple[Domain, Problem]:
+            try:
+                domain = _strips_domain(dsrc, dname)
+            except (PddlSyntaxError, PddlSemanticError):
+                domain = adl_reader.read_domain(dsrc, dname)
+            _check_domain_reference(psrc, domain)
+            return domain, adl_reader.read_problem(psrc, pname, domain)
+
+        return _or_raise(exc, read)
+
+
+def _strips_task(dsrc: SourceMap, dname: str, psrc: SourceMap, pname: str) -> tuple[Domain, Problem]:
+    """The STRIPS paths: Fast Downward's translator parser as tarski reads, else tarski itself."""
     # The fast path first (Fast Downward's translator parser); anything it
     # does not accept goes through tarski, for its result or its error.
     domain = fast_reader.read_domain(dsrc, dname)

@@ -6,6 +6,7 @@ golden-file tests and repeated runs compare byte for byte.
 
 from __future__ import annotations
 
+from guided_lfd.pddl.formula import effect_text, formula_text
 from guided_lfd.pddl.model import EQUALITY, TOTAL_COST, ActionSchema, Atom, Domain, Literal, Predicate, Problem
 
 
@@ -63,13 +64,29 @@ def action_to_pddl(action: ActionSchema, indent: str = "  ") -> str:
             lines.append(f"{indent};; {line}")
     lines.append(f"{indent}(:action {action.name}")
     lines.append(f"{indent}  :parameters ({_typed(action.params)})")
-    lines.append(f"{indent}  :precondition {_conj([_literal(l) for l in action.precondition])}")
+    if action.condition is not None:
+        lines.append(f"{indent}  :precondition {formula_text(action.condition)}")
+    else:
+        lines.append(f"{indent}  :precondition {_conj([_literal(l) for l in action.precondition])}")
     effects = [str(a) for a in action.add] + [f"(not {a})" for a in action.delete]
+    effects += [effect_text(eff) for eff in action.effects]
     if action.cost is not None:
         effects.append(f"(increase ({TOTAL_COST}) {action.cost})")
     # An empty effect is '(and)': tarski's grammar has no '()' there.
     lines.append(f"{indent}  :effect {_conj(effects) if effects else '(and)'})")
     return "\n".join(lines)
+
+
+def _adl_requirements(domain: Domain) -> set[str]:
+    """The ADL requirements the domain's formulas, effects and rules need."""
+    reqs: set[str] = set()
+    if any(act.condition is not None for act in domain.actions) or domain.axioms:
+        reqs |= {":disjunctive-preconditions", ":quantified-preconditions", ":negative-preconditions", ":equality"}
+    if any(act.effects for act in domain.actions):
+        reqs.add(":conditional-effects")
+    if domain.axioms:
+        reqs.add(":derived-predicates")
+    return reqs
 
 
 def domain_to_pddl(domain: Domain, header: str | None = None) -> str:
@@ -81,6 +98,7 @@ def domain_to_pddl(domain: Domain, header: str | None = None) -> str:
         reqs.add(":equality")
     if domain.functions or any(a.cost is not None for a in domain.actions):
         reqs.add(":action-costs")
+    reqs |= _adl_requirements(domain)
     order = [":strips", ":typing", ":negative-preconditions", ":equality", ":action-costs"]
     reqs_sorted = [r for r in order if r in reqs] + sorted(reqs - set(order))
     out: list[str] = []
@@ -107,6 +125,10 @@ def domain_to_pddl(domain: Domain, header: str | None = None) -> str:
             args = _typed(fun.params)
             declared.append(f"({fun.name}{' ' + args if args else ''}) - number")
         out.append("  (:functions " + "\n              ".join(declared) + ")")
+    for rule in domain.axioms:
+        out.append("")
+        head = " ".join((rule.predicate, _typed(rule.params))).strip()
+        out.append(f"  (:derived ({head})\n    {formula_text(rule.condition)})")
     for action in domain.actions:
         out.append("")
         out.append(action_to_pddl(action))
@@ -130,9 +152,11 @@ def problem_to_pddl(problem: Problem, init: frozenset[Atom] | set[Atom] | None =
     if problem.metric:
         facts.append(f"(= ({TOTAL_COST}) 0)")
     out.append("  (:init " + "\n         ".join(facts) + ")")
+    goal = (formula_text(problem.goal_condition) if problem.goal_condition is not None
+            else _conj([str(l) for l in problem.goal]))
     if problem.metric:
-        out.append(f"  (:goal {_conj([str(l) for l in problem.goal])})")
+        out.append(f"  (:goal {goal})")
         out.append(f"  (:metric minimize ({TOTAL_COST})))")
     else:
-        out.append(f"  (:goal {_conj([str(l) for l in problem.goal])}))")
+        out.append(f"  (:goal {goal}))")
     return "\n".join(out) + "\n"

@@ -3,7 +3,7 @@
 ;;;;;;;;;;;;;;;;;;;;;;;;;;;;;;;;;;;;;;;;
 
 (define (domain BLOCKS)
-  (:requirements :strips :typing :conditional-effects)
+  (:requirements :strips :typing :durative-actions)
   (:types block)
   (:predicates (on ?x - block ?y - block)
 	       (ontable ?x - block)

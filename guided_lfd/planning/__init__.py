@@ -14,7 +14,7 @@ from __future__ import annotations
 import math
 import time
 from contextlib import contextmanager
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Callable, Iterator
 
 from guided_lfd.deadline import deadline_after, watchdog
@@ -101,6 +101,11 @@ def find_plan(
     start = time.perf_counter()
     if kind == "guided":
         return _guided_astar(task, init, actions, time_limit_s, search, start)
+    if task.is_adl:
+        from guided_lfd.errors import UnsupportedFeatureError
+
+        raise UnsupportedFeatureError(f"search '{search}' plans STRIPS tasks only; ADL tasks need "
+                                      f"'{DEFAULT_SEARCH}'")
     from pyperplan.heuristics.blind import BlindHeuristic
     from pyperplan.heuristics.lm_cut import LmCutHeuristic
     from pyperplan.heuristics.relaxation import hFFHeuristic, hMaxHeuristic
@@ -131,6 +136,12 @@ def _guided_astar(task: GroundTask, init: int | None, actions: list[GroundAction
 
     init = task.init if init is None else init
     deadline = None if time_limit_s is None else time.monotonic() + time_limit_s
+    if task.is_adl:
+        from guided_lfd.planning import adl
+
+        with time_limit(time_limit_s, "planner"):
+            plan = adl.astar(task if actions is None else replace(task, actions=list(actions)), init, deadline)
+        return PlanResult(plan, search, True, time.perf_counter() - start)
     usable = planning_actions(task, init, actions)
     with time_limit(time_limit_s, "planner"):  # LM-cut of one state can be long on a big task
         plan = astar(usable, init, task.goal_pos, task.goal_neg, deadline=deadline)

@@ -1,0 +1,230 @@
+"""Reading ADL domains and problems with Fast Downward's translator parser.
+
+Files that use quantifiers, disjunctions, ``imply``, conditional or
+universal effects or derived predicates are read here, not by the STRIPS
+paths of :mod:`guided_lfd.pddl.reader`: the translator's parser (a
+dependency already) takes them, checks declared names and arities, and
+leaves formulas in negation normal form.  They become the model's
+:mod:`guided_lfd.pddl.formula` objects, so that every command shares one
+reading.  The translator's errors become one line with the position of the
+name they are about.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import io
+import re
+from typing import Any
+
+from guided_lfd.errors import PddlSemanticError, PddlSyntaxError, SearchTimeout
+from guided_lfd.pddl import costs
+from guided_lfd.pddl.formula import (FALSE, TRUE, ConditionalEffect, DerivedRule, Formula, Junction, Quantified,
+                                     is_conjunction_of_literals, top_literals)
+from guided_lfd.pddl.model import (EQUALITY, TOTAL_COST, ActionSchema, Atom, Domain, Literal, Predicate, Problem,
+                                   either_type)
+from guided_lfd.pddl.source import SExpr, SourceMap, Token
+
+#: List heads that only ADL has (keywords count only at the head of a list: an object may be called 'or').
+ADL_KEYWORDS = frozenset({"when", "forall", "exists", "or", "imply", ":derived"})
+
+
+def needs_adl(src: SourceMap) -> bool:
+    """Whether the file uses a construct beyond STRIPS that this module reads."""
+    for node in src.define().walk():
+        if isinstance(node, Token):
+            continue
+        head = node.head()
+        if head in ADL_KEYWORDS:
+            return True
+        if head == "not" and len(node.items) == 2 and isinstance(node.items[1], SExpr):
+            inner = node.items[1].head()
+            if inner in ("and", "not") or inner in ADL_KEYWORDS:
+                return True
+    return False
+
+
+def _nested(node: SExpr) -> list[Any]:
+    """The translator's input: nested lists of lower-cased words.
+
+    ``?x -type`` (no space after the dash, as in IPC's fridge domain) is
+    ``?x - type``: no name starts with a dash, so the word can mean nothing else.
+    """
+    out: list[Any] = []
+    for item in node.items:
+        if isinstance(item, Token):
+            word = item.lower
+            if len(word) > 1 and word[0] == "-" and word[1].isalpha():
+                out += ["-", word[1:]]
+            else:
+                out.append(word)
+        else:
+            out.append(_nested(item))
+    return out
+
+
+def _type_name(type_name: Any) -> str:
+    if isinstance(type_name, list):  # (either a b)
+        return either_type(type_name[1:])
+    return type_name
+
+
+def _variables(parameters: list[Any]) -> tuple[tuple[str, str], ...]:
+    return tuple((p.name, _type_name(p.type_name)) for p in parameters)
+
+
+def from_translator(cond: Any) -> Formula:
+    """A translator condition as a model formula (same structure, negation normal form)."""
+    from fast_downward.translate import pddl
+
+    if isinstance(cond, pddl.Truth):
+        return TRUE
+    if isinstance(cond, pddl.Falsity):
+        return FALSE
+    if isinstance(cond, (pddl.Atom, pddl.NegatedAtom)):
+        return Literal(Atom(cond.predicate, tuple(cond.args)), not cond.negated)
+    if isinstance(cond, pddl.Conjunction):
+        return Junction("and", tuple(from_translator(p) for p in cond.parts))
+    if isinstance(cond, pddl.Disjunction):
+        return Junction("or", tuple(from_translator(p) for p in cond.parts))
+    if isinstance(cond, pddl.UniversalCondition):
+        return Quantified("forall", _variables(cond.parameters), from_translator(cond.parts[0]))
+    if isinstance(cond, pddl.ExistentialCondition):
+        return Quantified("exists", _variables(cond.parameters), from_translator(cond.parts[0]))
+    raise TypeError(f"unexpected condition {cond!r}")
+
+
+def _precondition(formula: Formula) -> tuple[tuple[Literal, ...], Formula | None]:
+    """(top-level literals, the whole formula if it is more than those)."""
+    if is_conjunction_of_literals(formula):
+        return top_literals(formula), None
+    return top_literals(formula), formula
+
+
+def _cost(increase: Any) -> int | Atom | None:
+    from fast_downward.translate import pddl
+
+    if increase is None:
+        return None
+    expr = increase.expression
+    if isinstance(expr, pddl.NumericConstant):
+        return int(expr.value) or None
+    return Atom(expr.symbol, tuple(expr.args))
+
+
+def _action(act: Any) -> ActionSchema:
+    """A translator action as the model has it."""
+    pre, condition = _precondition(from_translator(act.precondition))
+    add: list[Atom] = []
+    delete: list[Atom] = []
+    effects: list[ConditionalEffect] = []
+    for eff in act.effects:
+        literal = from_translator(eff.literal)
+        assert isinstance(literal, Literal)
+        condition_of = from_translator(eff.condition)
+        if not eff.parameters and condition_of == TRUE:
+            (add if literal.positive else delete).append(literal.atom)
+        else:
+            effects.append(ConditionalEffect(_variables(eff.parameters), condition_of, literal))
+    return ActionSchema(act.name, _variables(act.parameters), pre, tuple(add), tuple(delete),
+                        cost=_cost(act.cost), condition=condition, effects=tuple(effects))
+
+
+_QUOTED = re.compile(r"'([^'\s]+)'|Got: (\S+)")
+
+
+def _translator_error(exc: Exception, src: SourceMap) -> PddlSyntaxError:
+    """The translator's layered error as one line, at the last name it quotes."""
+    lines = [line.strip() for line in str(exc).splitlines() if line.strip()]
+    reason = next((line[len("Reason:"):].strip() for line in lines if line.startswith("Reason:")), None)
+    message = reason or (lines[-1].lstrip("->").strip() if lines else type(exc).__name__)
+    names = [quoted or got for quoted, got in _QUOTED.findall(" ".join(lines))]
+    where = src.locate(names[-1].lower()) if names else src.location(src.define().line, src.define().col)
+    return PddlSyntaxError(f"{message} (Fast Downward's reading of this ADL file)", where)
+
+
+@contextlib.contextmanager
+def _translating(src: SourceMap, warnings: list[str]):
+    """Run the translator's parser: its printed warnings kept, its errors as one-line ones at a position."""
+    from fast_downward.translate.pddl_parser import warning
+
+    warning.printed_warnings.clear()  # it prints each message once per process; each file gets its own
+    out = io.StringIO()
+    try:
+        with contextlib.redirect_stdout(out), contextlib.redirect_stderr(out):
+            yield
+    except (SearchTimeout, MemoryError, KeyboardInterrupt):
+        raise
+    except SystemExit as exc:  # the translator exits on some errors after printing them
+        raise _translator_error(Exception(out.getvalue() or str(exc)), src) from None
+    except Exception as exc:
+        raise _translator_error(exc, src) from None
+    # One warning per 'Warning:' (some run over two lines).
+    for block in re.split(r"^Warning:", out.getvalue(), flags=re.MULTILINE):
+        text = " ".join(block.split())
+        if text:
+            warnings.append(f"{src.path}: warning: {text}")
+
+
+def _parse_domain_lists(src: SourceMap, warnings: list[str]) -> tuple:
+    from fast_downward.translate.pddl_parser.parsing_functions import Context, parse_domain_pddl
+
+    with _translating(src, warnings):
+        return tuple(parse_domain_pddl(Context(), _nested(src.define())))
+
+
+def read_domain(src: SourceMap, path: str) -> Domain:
+    """The ADL domain of ``src`` (see the module's docstring)."""
+    warnings: list[str] = []
+    (name, _, fd_types, _, fd_constants, fd_predicates, _, fd_functions, fd_actions,
+     fd_axioms) = _parse_domain_lists(src, warnings)
+    types: dict[str, str | None] = {"object": None}
+    for t in fd_types:
+        if t.name == "object":
+            continue
+        parent = t.basetype_name or "object"
+        if types.get(t.name, parent) != parent:  # declared twice alike is one declaration
+            raise PddlSemanticError(f"type '{t.name}' is declared twice in :types, with parents "
+                                    f"'{types[t.name]}' and '{parent}'", src.locate_second(t.name))
+        types[t.name] = parent
+    predicates = {p.name: Predicate(p.name, _variables(p.arguments)) for p in fd_predicates if p.name != EQUALITY}
+    functions = {f.name: Predicate(f.name, _variables(f.arguments)) for f in fd_functions}
+    actions = [_action(act) for act in fd_actions]
+    seen: set[str] = set()
+    for act in actions:
+        if act.name in seen:
+            raise PddlSemanticError(f"action '{act.name}' is declared twice (names are case-insensitive)",
+                                    src.locate_second_action(act.name))
+        seen.add(act.name)
+    axioms = tuple(DerivedRule(ax.name, _variables(ax.parameters[:ax.num_external_parameters]),
+                               from_translator(ax.condition)) for ax in fd_axioms)
+    reqs = src.section(":requirements")
+    requirements = tuple(t.lower for t in reqs.items[1:] if isinstance(t, Token)) if reqs else ()
+    return Domain(name=name, requirements=requirements, types=types,
+                  constants={c.name: _type_name(c.type_name) for c in fd_constants}, predicates=predicates,
+                  actions=actions, path=path, spellings=src.spellings(), source=src, functions=functions,
+                  warnings=tuple(warnings), axioms=axioms)
+
+
+def read_problem(psrc: SourceMap, path: str, domain: Domain) -> Problem:
+    """The problem of ``psrc`` for ``domain`` (read by :func:`read_domain` or any other path)."""
+    from fast_downward.translate import pddl
+    from fast_downward.translate.pddl_parser.parsing_functions import Context, parse_problem_pddl
+
+    type_dict = {t: pddl.Type(t, parent) for t, parent in domain.types.items()}
+    predicate_dict = {p: pddl.Predicate(p, [pddl.TypedObject(v, t) for v, t in pred.params])
+                      for p, pred in domain.predicates.items()}
+    predicate_dict[EQUALITY] = pddl.Predicate(EQUALITY, [pddl.TypedObject("?x", "object"),
+                                                         pddl.TypedObject("?y", "object")])
+    warnings: list[str] = []
+    with _translating(psrc, warnings):
+        (name, domain_name, _, fd_objects, fd_init, fd_goal, metric) = tuple(parse_problem_pddl(
+            Context(), _nested(psrc.define()), type_dict, predicate_dict, set(domain.constants)))
+    objects = {o.name: _type_name(o.type_name) for o in fd_objects}
+    init = frozenset(Atom(a.predicate, tuple(a.args)) for a in fd_init
+                     if isinstance(a, pddl.Atom) and a.predicate != EQUALITY)
+    goal, goal_condition = _precondition(from_translator(fd_goal))
+    values = costs.read_function_values(psrc, domain, objects) if domain.functions else {}
+    return Problem(name=name, domain_name=domain_name, objects=objects, init=init, goal=goal, path=path,
+                   spellings=psrc.spellings(), function_values=values,
+                   metric=bool(metric) and TOTAL_COST in domain.functions, goal_condition=goal_condition)

@@ -1,0 +1,231 @@
+"""ADL tasks: Fast Downward's normal form, grounded on bit sets, and an optimal A* over them.
+
+:func:`ground_adl` writes the model's domain and problem as PDDL, lets Fast
+Downward's translator normalise them (quantifiers and disjunctions compiled
+into axioms and split actions, complicated goals into a derived atom) and
+ground them by its relaxed reachability analysis, and turns the result into
+a :class:`~guided_lfd.grounding.GroundTask` whose actions carry conditional
+effects and whose states are closed under the axioms.
+
+:func:`astar` is guided-lfd's A* for such tasks, with LM-cut on a relaxation
+that stays admissible: effect conditions dropped (every conditional add
+counts as possible), negative conditions on derived atoms ignored, axioms as
+actions of cost 0.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import heapq
+import io
+import itertools
+import time
+from typing import Any
+
+from guided_lfd.deadline import linger
+from guided_lfd.errors import Location, SearchTimeout, TaskTooLarge
+from guided_lfd.grounding import (MAX_GROUND_ACTIONS, AxiomClosure, GroundAction, GroundAxiom, GroundEffect,
+                                  GroundTask, mask_of)
+from guided_lfd.pddl.model import Atom, Domain, Problem
+from guided_lfd.relaxation import INF, RelaxedTask
+
+
+def _translator_task(domain: Domain, problem: Problem) -> Any:
+    """The translator's task for the model's domain and problem (written as PDDL and parsed back)."""
+    from fast_downward.translate.pddl_parser.parsing_functions import parse_task
+
+    from guided_lfd.pddl.adl_reader import _nested
+    from guided_lfd.pddl.source import SourceMap
+    from guided_lfd.pddl.writer import domain_to_pddl, problem_to_pddl
+
+    named = problem if problem.domain_name == domain.name else None
+    dtext = domain_to_pddl(domain)
+    ptext = problem_to_pddl(named or _renamed(problem, domain.name))
+    return parse_task(_nested(SourceMap(domain.path, dtext).define()), _nested(SourceMap(problem.path, ptext).define()))
+
+
+def _renamed(problem: Problem, domain_name: str) -> Problem:
+    from dataclasses import replace
+
+    return replace(problem, domain_name=domain_name)
+
+
+def _explore(domain: Domain, problem: Problem) -> tuple:
+    """Normalise and ground with the translator: (reachable, atoms, actions, goal, axioms, layers)."""
+    from fast_downward.translate import axiom_rules, instantiate, normalize, options
+
+    if options.options is None:
+        options.set_options(["domain.pddl", "problem.pddl"])
+    quiet = io.StringIO()
+    with contextlib.redirect_stdout(quiet), contextlib.redirect_stderr(quiet):
+        task = _translator_task(domain, problem)
+        normalize.normalize(task)
+        reachable, atoms, actions, goal, axioms, _ = instantiate.explore(task)
+        layers: dict = {}
+        if reachable and goal is not None:
+            axioms, layers = axiom_rules.handle_axioms(actions, axioms, goal, options.options.layer_strategy)
+    return reachable, atoms, actions, goal, axioms, layers
+
+
+def ground_adl(domain: Domain, problem: Problem, deadline: float | None = None) -> GroundTask:
+    """Ground an ADL task in Fast Downward's normal form (static atoms compiled away, as its translator does).
+
+    An unreachable goal gives a task whose goal is one atom no action adds
+    (every search proves it unsolvable at once).
+    """
+    reachable, fd_atoms, fd_actions, fd_goal, fd_axioms, layer_of = _explore(domain, problem)
+    if deadline is not None and time.monotonic() > deadline:
+        raise SearchTimeout("grounding exceeded the time limit")
+    if len(fd_actions) > MAX_GROUND_ACTIONS:
+        raise TaskTooLarge(f"more than {MAX_GROUND_ACTIONS} ground actions", Location(problem.path))
+    heads = sorted({_atom(ax.effect) for ax in fd_axioms})
+    atoms = sorted({_atom(a) for a in fd_atoms} - set(heads)) + heads
+    index = {a: i for i, a in enumerate(atoms)}
+    derived = mask_of(index[a] for a in heads)
+    actions: list[GroundAction] = []
+    linger(actions)
+    for op in fd_actions:
+        act = _action(op, index)
+        if act is not None:
+            actions.append(act)
+    closure = _closure(fd_axioms, layer_of, index, derived) if heads else None
+    init = mask_of(index[a] for a in problem.init if a in index)
+    goal_pos, goal_neg = _masks(fd_goal, index) if reachable and fd_goal is not None else (None, 0)
+    if goal_pos is None:  # the translator proved the goal unreachable
+        never = Atom("guided-lfd-unreachable-goal")
+        index[never] = len(atoms)
+        atoms.append(never)
+        goal_pos, goal_neg = 1 << index[never], 0
+    task = GroundTask(domain, problem, atoms, index, init, goal_pos, goal_neg, actions, closure)
+    task.init = task.close(init)
+    return task
+
+
+def _atom(fd_atom: Any) -> Atom:
+    return Atom(fd_atom.predicate, tuple(fd_atom.args))
+
+
+def _masks(literals: list[Any], index: dict[Atom, int]) -> tuple[int | None, int]:
+    """(positive, negative) masks of a condition; None when a positive part can never hold."""
+    pos = neg = 0
+    for lit in literals:
+        i = index.get(_atom(lit))
+        if i is None:
+            if not lit.negated:
+                return None, 0
+            continue
+        if lit.negated:
+            neg |= 1 << i
+        else:
+            pos |= 1 << i
+    return pos, neg
+
+
+def _action(op: Any, index: dict[Atom, int]) -> GroundAction | None:
+    """A translator action as a ground action (None: a precondition can never hold)."""
+    pre_pos, pre_neg = _masks(op.precondition, index)
+    if pre_pos is None or pre_pos & pre_neg:
+        return None
+    add = delete = 0
+    conditional: dict[tuple[int, int], list[int]] = {}
+    for effects, is_add in ((op.add_effects, True), (op.del_effects, False)):
+        for condition, fd_atom in effects:
+            i = index.get(_atom(fd_atom))
+            pos, neg = _masks(condition, index)
+            if i is None or pos is None:
+                continue
+            if not pos and not neg:
+                if is_add:
+                    add |= 1 << i
+                else:
+                    delete |= 1 << i
+                continue
+            masks = conditional.setdefault((pos, neg), [0, 0])
+            masks[0 if is_add else 1] |= 1 << i
+    effects_of = tuple(GroundEffect(pos, neg, a, d) for (pos, neg), (a, d) in conditional.items())
+    words = op.name.strip("()").split()
+    return GroundAction(op.name, words[0], tuple(words[1:]), pre_pos, pre_neg, add, delete, op.cost, effects_of)
+
+
+def _closure(fd_axioms: list[Any], layer_of: dict, index: dict[Atom, int], derived: int) -> AxiomClosure:
+    layers: dict[int, list[GroundAxiom]] = {}
+    for ax in fd_axioms:
+        pos, neg = _masks(ax.condition, index)
+        if pos is None:
+            continue
+        layers.setdefault(layer_of.get(ax.effect, 0), []).append(GroundAxiom(index[_atom(ax.effect)], pos, neg))
+    return AxiomClosure([layers[k] for k in sorted(layers)], derived)
+
+
+def relaxed_view(task: GroundTask) -> tuple[list[GroundAction], int, int]:
+    """Actions, positive and negative goal of an admissible delete relaxation of an ADL task.
+
+    Each action adds and deletes what any of its effects may (conditions
+    dropped: only more is reachable); axioms are actions of cost 0; negative
+    conditions on derived atoms are dropped (no action deletes a derived atom).
+    """
+    derived = task.derived
+    out: list[GroundAction] = []
+    for act in task.actions:
+        add, delete = act.add, act.delete
+        for eff in act.effects:
+            add |= eff.add
+            delete |= eff.delete
+        out.append(GroundAction(act.name, act.schema, act.args, act.pre_pos, act.pre_neg & ~derived, add, delete,
+                                act.cost))
+    if task.axioms is not None:
+        for layer in task.axioms.layers:
+            for ax in layer:
+                out.append(GroundAction("axiom", "axiom", (), ax.pos, 0, 1 << ax.head, 0, 0))
+    return out, task.goal_pos, task.goal_neg & ~derived
+
+
+def astar(task: GroundTask, init: int | None = None, deadline: float | None = None) -> list[GroundAction] | None:
+    """An optimal plan of an ADL task from ``init`` (default: its initial state), or None: proved unsolvable.
+
+    Raises :class:`SearchTimeout` past ``deadline`` (a ``time.monotonic()`` value).
+    """
+    from guided_lfd.search import _path, _Successors
+
+    start = task.close(task.init if init is None else init)
+    relaxed_actions, goal_pos_h, goal_neg_h = relaxed_view(task)
+    lmcut = RelaxedTask(relaxed_actions, goal_pos_h, goal_neg_h).lmcut
+    actions = task.actions
+    successors = _Successors(actions)
+    goal_pos, goal_neg = task.goal_pos, task.goal_neg
+    h0 = lmcut(start)
+    if h0 == INF:
+        return None
+    g_of: dict[int, int] = {start: 0}
+    h_of: dict[int, float] = {start: h0}
+    parent: dict[int, tuple[int, int]] = {}
+    tie = itertools.count()
+    heap: list[tuple[float, float, int, int, int]] = [(h0, h0, 0, 0, start)]
+    expanded = 0
+    while heap:
+        _, _, _, g, state = heapq.heappop(heap)
+        if g > g_of[state]:
+            continue
+        if state & goal_pos == goal_pos and not state & goal_neg:
+            return _path(actions, parent, state)
+        expanded += 1
+        if deadline is not None and not expanded & 63 and time.monotonic() > deadline:
+            raise SearchTimeout("planner exceeded its time limit")
+        for ai in successors.candidates(state):
+            act = actions[ai]
+            if not act.applicable(state):
+                continue
+            nxt = task.successor(act, state)
+            ng = g + act.cost
+            if ng >= g_of.get(nxt, INF):
+                continue
+            g_of[nxt] = ng
+            parent[nxt] = (state, ai)
+            h = h_of.get(nxt)
+            if h is None:
+                h = h_of[nxt] = lmcut(nxt)
+            if h == INF:
+                continue
+            heapq.heappush(heap, (ng + h, h, next(tie), ng, nxt))
+    return None
+

@@ -1,0 +1,6 @@
+(define (domain objfirst)
+  (:requirements :strips :typing)
+  (:types room object robot gripper)
+  (:predicates (at ?r - robot ?x - room))
+  (:action move :parameters (?r - robot ?a ?b - room)
+    :precondition (at ?r ?a) :effect (and (at ?r ?b) (not (at ?r ?a)))))

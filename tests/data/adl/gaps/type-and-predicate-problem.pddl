@@ -1,0 +1,1 @@
+(define (problem p1) (:domain typepred) (:objects r1 - robot a b - room) (:init (at r1 a)) (:goal (at r1 b)))

@@ -1,0 +1,6 @@
+(define (domain typepred)
+  (:requirements :strips :typing)
+  (:types room robot door)
+  (:predicates (at ?r - robot ?x - room) (door ?x - room))
+  (:action move :parameters (?r - robot ?a ?b - room)
+    :precondition (at ?r ?a) :effect (and (at ?r ?b) (not (at ?r ?a)))))

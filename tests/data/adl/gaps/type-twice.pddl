@@ -1,0 +1,6 @@
+(define (domain twice)
+  (:requirements :strips :typing)
+  (:types room robot - object room)
+  (:predicates (at ?r - robot ?x - room))
+  (:action move :parameters (?r - robot ?a ?b - room)
+    :precondition (at ?r ?a) :effect (and (at ?r ?b) (not (at ?r ?a)))))
