@@ -23,6 +23,7 @@ import itertools
 from dataclasses import dataclass, field, replace
 
 from guided_lfd.errors import Location, MergeError
+from guided_lfd.pddl.formula import ConditionalEffect, substitute
 from guided_lfd.pddl.model import ActionSchema, Atom, Domain, Predicate, common_supertype, type_ancestors
 
 #: Actions with more parameters than this are compared by position only
@@ -164,13 +165,16 @@ def _key(action: ActionSchema, order: tuple[int, ...]) -> tuple:
         frozenset(a.substitute(binding) for a in action.add),
         frozenset(a.substitute(binding) for a in action.delete),
         action.cost.substitute(binding) if isinstance(action.cost, Atom) else action.cost,
+        None if action.condition is None else substitute(action.condition, binding),
+        frozenset(ConditionalEffect(e.variables, substitute(e.condition, binding), e.literal.substitute(binding))
+                  for e in action.effects),
     )
 
 
 def same_up_to_renaming(a: ActionSchema, b: ActionSchema) -> bool:
     """Whether ``b`` is ``a`` with its parameters renamed (and possibly reordered)."""
-    if (len(a.params), len(a.precondition), len(a.add), len(a.delete)) != (
-            len(b.params), len(b.precondition), len(b.add), len(b.delete)):
+    if (len(a.params), len(a.precondition), len(a.add), len(a.delete), len(a.effects), a.condition is None) != (
+            len(b.params), len(b.precondition), len(b.add), len(b.delete), len(b.effects), b.condition is None):
         return False
     if sorted(t for _, t in a.params) != sorted(t for _, t in b.params):
         return False
@@ -237,6 +241,8 @@ def merge_domains(domains: list[Domain], name: str | None = None) -> MergeResult
         # An object one domain's actions use undeclared stays so, unless another declares it.
         implicit_constants=tuple(dict.fromkeys(
             c for d in domains for c in d.implicit_constants if c not in constants)),
+        # Derived predicates' rules, each once (two rules for one predicate: it holds where either does).
+        axioms=tuple(dict.fromkeys(rule for d in domains for rule in d.axioms)),
     )
     return result
 

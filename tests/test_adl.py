@@ -280,3 +280,22 @@ def test_random_adl_tasks_plan_as_the_lifted_semantics_search(task):
     domain_text, problem_text = task
     domain, problem = parse_task("d.pddl", "p.pddl", domain_text=domain_text, problem_text=problem_text)
     assert _optimal_length(domain, problem) == _lifted_bfs(domain, problem)
+
+
+def test_merge_keeps_a_prior_domains_adl_actions_and_rules(runner, app, tmp_path):
+    out = tmp_path / "merged.pddl"
+    kitchen = ROOT / "data" / "domains" / "kitchen-1" / "robot.pddl"
+    result = runner.invoke(app, ["merge", str(HOUSE / "domain.pddl"), str(kitchen), "-o", str(out)])
+    assert result.exit_code == 0, result.output
+    merged = parse_domain(out)
+    house = parse_domain(HOUSE / "domain.pddl")
+    assert merged.axioms == house.axioms
+    for act in house.actions:
+        assert merged.action(act.name).condition == act.condition and merged.action(act.name).effects == act.effects
+    _, problem = parse_task(HOUSE / "domain.pddl", HOUSE / "problem.pddl")
+    from guided_lfd.pddl.reader import parse_problem_for
+
+    assert _optimal_length(merged, parse_problem_for(merged, HOUSE / "problem.pddl")) == 7
+    # The same ADL action twice is one action (compared with its formulas and effects).
+    twice = runner.invoke(app, ["merge", str(HOUSE / "domain.pddl"), str(HOUSE / "domain.pddl"), "-o", str(out)])
+    assert twice.exit_code == 0 and len(parse_domain(out).actions) == 4
