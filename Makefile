@@ -35,7 +35,7 @@ test: setup
 	$(BIN)/python -m pytest -q -n $(JOBS)
 
 test-slow: setup
-	GUIDED_LFD_FUZZ_EXAMPLES=1000 $(BIN)/python -m pytest -q -n $(JOBS) --slow
+	GUIDED_LFD_FUZZ_EXAMPLES=1000 GUIDED_LFD_ADL_EXAMPLES=1000 $(BIN)/python -m pytest -q -n $(JOBS) --slow
 
 # AMLGym (action-model learning benchmark) beside SAM and OffLAM, in an environment of its own.
 AMLGYM_VENV ?= .venv-amlgym

@@ -249,8 +249,8 @@ def ground(
     every state the task will be asked about, so actions whose static
     preconditions on them are false are pruned (as a planner's grounder does).
     ``actions`` overrides the domain's action list (e.g. with a skill removed).
-    ADL tasks go to Fast Downward's normal form (:func:`guided_lfd.planning.adl.ground_adl`),
-    for planning only: every static predicate fixed.
+    ADL tasks go to Fast Downward's normal form (:func:`guided_lfd.planning.adl.ground_adl`); with every
+    predicate fixed (planning), grounded by its reachability analysis from the initial state.
     """
     if domain.is_adl or problem.goal_condition is not None:
         return _ground_adl(domain, problem, fixed, actions, deadline)
@@ -300,16 +300,15 @@ def _ground_adl(domain: Domain, problem: Problem, fixed: Iterable[str], actions:
                 deadline: float | None) -> GroundTask:
     from dataclasses import replace
 
-    from guided_lfd.errors import UnsupportedFeatureError
     from guided_lfd.planning.adl import ground_adl
 
-    if not static_predicates(domain) <= set(fixed):
-        raise UnsupportedFeatureError(
-            "excuses on domains with ADL (conditional effects, quantifiers, disjunctions, derived predicates) "
-            "are not supported yet; plan and validate are", Location(domain.path))
     if actions is not None:
         domain = replace(domain, actions=list(actions))
-    return ground_adl(domain, problem, deadline)
+    basic = set(domain.predicates) - domain.derived_predicates()
+    if basic <= set(fixed):  # planning: nothing changes the initial state
+        return ground_adl(domain, problem, deadline)
+    # An excuse may change every atom but those of fixed static predicates (as for STRIPS tasks).
+    return ground_adl(domain, problem, deadline, basic - (static_predicates(domain) & set(fixed)))
 
 
 def _key_function(atom: Atom, params: list[str]):

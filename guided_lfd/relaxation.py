@@ -33,7 +33,9 @@ class RelaxedTask:
     """The relaxed facts and actions of a fixed set of ground actions (costs default to the actions' own)."""
 
     def __init__(self, actions: Sequence[GroundAction], goal_pos: int, goal_neg: int,
-                 costs: Sequence[int] | None = None) -> None:
+                 costs: Sequence[int] | None = None, sure_adds: Sequence[int] | None = None) -> None:
+        """``sure_adds``: per action, the adds that surely happen (default: all of ``add``); a delete makes
+        its complement fact true unless one of them re-adds the atom (an ADL action's conditional adds may not)."""
         self.actions = list(actions)
         negated_ids = set(bits(goal_neg))
         mentioned_ids = set(bits(goal_pos | goal_neg))
@@ -48,12 +50,13 @@ class RelaxedTask:
         pos_id, neg_id = self.pos_id, self.neg_id
         pre: list[list[int]] = []
         add: list[list[int]] = []
-        for act in self.actions:
+        for k, act in enumerate(self.actions):
             p = [pos_id[i] for i in act.pre_pos_ids] + [neg_id[i] for i in act.pre_neg_ids]
             pre.append(p or [0])
             adds = act.add_ids
+            sure = adds if sure_adds is None else set(bits(sure_adds[k]))
             add.append([pos_id[i] for i in adds]
-                       + [neg_id[i] for i in act.delete_ids if i in neg_id and i not in adds])
+                       + [neg_id[i] for i in act.delete_ids if i in neg_id and i not in sure])
         goal = [pos_id[i] for i in bits(goal_pos)] + [neg_id[i] for i in bits(goal_neg)]
         pre.append(goal or [0])  # the artificial goal action, cost 0
         add.append([1])

@@ -10,14 +10,10 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from guided_lfd.excuse.change import Change, excuse_state
-from guided_lfd.pddl.model import Atom, Domain, Literal, Problem
+from guided_lfd.pddl.model import Atom, Domain, Problem
 from guided_lfd.validation import PlanStep, validate_plan
 
 __all__ = ["check_excuse", "change_cost"]
-
-
-def _holds(lit: Literal, state: frozenset[Atom]) -> bool:
-    return (lit.atom in state) == lit.positive
 
 
 def change_cost(changes: list[Change], specs: Sequence[str]) -> int:
@@ -71,10 +67,13 @@ def check_excuse(
             problems.append(f"{change} removes an atom that is already false")
         if change.atom.predicate not in domain.predicates:
             problems.append(f"{change} is not an atom of the domain")
+        if change.atom.predicate in domain.derived_predicates():
+            problems.append(f"{change} changes a derived predicate, which follows from the others")
     state = excuse_state(problem.init, changes)
-    if all(_holds(lit, state) for lit in problem.goal) and changes:
+    # The goal with the excuse state's derived atoms (ADL), evaluated by the validator's lifted code.
+    if changes and not validate_plan(domain, state, problem.goal, [], problem, problem.goal_condition).unsatisfied_goal:
         problems.append("the excuse state already satisfies the goal")
-    report = validate_plan(domain, state, problem.goal, plan, problem)
+    report = validate_plan(domain, state, problem.goal, plan, problem, problem.goal_condition)
     if not report.valid:
         failure = report.first_failure
         if failure is not None:

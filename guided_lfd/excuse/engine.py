@@ -222,6 +222,11 @@ def unachievable_goals(task: GroundTask) -> list[Literal]:
     for act in task.actions:
         adds |= act.add
         deletes |= act.delete
+        for eff in act.effects:
+            adds |= eff.add
+            deletes |= eff.delete
+    adds |= task.derived  # a derived goal follows from basic atoms: no action adds it itself
+    deletes |= task.derived
     out: list[Literal] = []
     for i in bits(task.goal_pos & ~task.init & ~adds):
         out.append(Literal(task.atoms[i]))
@@ -416,6 +421,10 @@ class _Run:
     def execute(self) -> ExcuseReport:
         """Ground, build the change space, check solvability, search, and plan from each excuse."""
         options = self.options
+        if self.domain.is_adl or self.problem.goal_condition is not None:
+            from guided_lfd.excuse.adl import execute_adl
+
+            return execute_adl(self)
         self._enter("grounding")
         fixed = options.fixed_predicates(self.domain)
         prepared = prepare(self.domain, self.problem, options.semantics, fixed, options.costs,

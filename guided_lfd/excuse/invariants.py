@@ -196,6 +196,9 @@ def _conserved(check_task: GroundTask, task: GroundTask, masks: list[int]) -> bo
         touched: set[int] = set()
         for i in (*act.add_ids, *act.delete_ids):
             touched.update(groups_of.get(i, ()))
+        for eff in act.effects:  # ADL: whether a conditional effect runs depends on the state
+            if any(i in groups_of for i in bits(eff.add | eff.delete)):
+                return False
         for k in touched:
             mask = masks[k]
             added = act.add & mask & ~act.pre_pos

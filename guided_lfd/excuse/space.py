@@ -91,8 +91,8 @@ class ChangeSpace:
         return least
 
     def state(self, changes: int) -> int:
-        """The excuse state I' = I Δ E."""
-        return self.task.init ^ changes
+        """The excuse state I' = I Δ E (its derived atoms recomputed, for ADL tasks)."""
+        return self.task.close(self.task.init ^ changes)
 
     # -- consistency -------------------------------------------------------------
     def violated(self, state: int) -> list[MutexGroup]:
@@ -229,7 +229,14 @@ def build_space(
     for i, atom in enumerate(task.atoms):
         if atom.predicate not in fixed_preds and atom.predicate in task.domain.predicates:
             changeable |= 1 << i
-    relevant, rel_actions, negation = relevance(task)
+    changeable &= ~task.derived  # derived atoms follow from the basic ones
+    for i in bits(changeable):
+        if task.atoms[i].predicate in task.domain.derived_predicates():
+            changeable &= ~(1 << i)
+    if task.is_adl:  # backward relevance reads plain effects only: every atom and action may matter
+        relevant, rel_actions, negation = (1 << len(task.atoms)) - 1, list(task.actions), (1 << len(task.atoms)) - 1
+    else:
+        relevant, rel_actions, negation = relevance(task)
     space = ChangeSpace(
         task=task,
         semantics=semantics,

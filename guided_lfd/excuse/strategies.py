@@ -452,6 +452,8 @@ class BaselineSearch:
         from guided_lfd.planning import find_plan
 
         task = space.task
+        # ADL tasks: guided-lfd's A* (pyperplan reads STRIPS only); each plan is then optimal.
+        planner = "astar-lmcut" if task.is_adl else "gbfs-hff"
         atoms = list(bits(space.changeable))
         weights = space.weights
         best: int | None = None
@@ -467,14 +469,14 @@ class BaselineSearch:
                 bound = w  # every lighter change set was tried: none is an excuse
                 if any(s & changes == s for s in solutions):
                     continue  # a superset of an excuse is not minimal
-                state = task.init ^ changes
+                state = space.state(changes)
                 candidates += 1
                 if progress is not None and progress.due():
                     progress.search(candidates, calls, candidates, space.cost_bound(bound))
                 if not task.satisfies_goal(state) and space.consistent(state):
                     calls += 1
                     remaining = None if limits.deadline is None else max(0.01, limits.deadline - clock())
-                    result = find_plan(task, init=state, search="gbfs-hff", time_limit_s=remaining)
+                    result = find_plan(task, init=state, search=planner, time_limit_s=remaining)
                     if result.plan is not None:
                         best = w
                         solutions.append(changes)

@@ -22,7 +22,7 @@ from guided_lfd.pddl import costs
 from guided_lfd.pddl.formula import (FALSE, TRUE, ConditionalEffect, DerivedRule, Formula, Junction, Quantified,
                                      is_conjunction_of_literals, top_literals)
 from guided_lfd.pddl.model import (EQUALITY, TOTAL_COST, ActionSchema, Atom, Domain, Literal, Predicate, Problem,
-                                   either_type)
+                                   either_type, type_members)
 from guided_lfd.pddl.source import SExpr, SourceMap, Token
 
 #: List heads that only ADL has (keywords count only at the head of a list: an object may be called 'or').
@@ -130,17 +130,26 @@ def _action(act: Any) -> ActionSchema:
                         cost=_cost(act.cost), condition=condition, effects=tuple(effects))
 
 
-_QUOTED = re.compile(r"'([^'\s]+)'|Got: (\S+)")
+_QUOTED = re.compile(r"'([^'\s]+)'")
 
 
 def _translator_error(exc: Exception, src: SourceMap) -> PddlSyntaxError:
-    """The translator's layered error as one line, at the last name it quotes."""
+    """The translator's layered error as one line, at the name it is about.
+
+    Its text is the layers it was in (``->Parsing action 'unload-all'``),
+    then the reason, then often ``Got: WORD``.
+    """
     lines = [line.strip() for line in str(exc).splitlines() if line.strip()]
-    reason = next((line[len("Reason:"):].strip() for line in lines if line.startswith("Reason:")), None)
-    message = reason or (lines[-1].lstrip("->").strip() if lines else type(exc).__name__)
-    names = [quoted or got for quoted, got in _QUOTED.findall(" ".join(lines))]
+    layers = [line.lstrip("->").strip() for line in lines if line.startswith("->") or line.startswith("Parsing")]
+    rest = [line for line in lines if not (line.startswith("->") or line.startswith("Parsing"))]
+    got = next((line[len("Got:"):].strip() for line in rest if line.startswith("Got:")), None)
+    reason = " ".join(line.removeprefix("Reason:").strip() for line in rest if not line.startswith("Got:"))
+    reason = reason.rstrip(".") or (layers[-1] if layers else type(exc).__name__)
+    where_in = next((layer[len("Parsing "):] for layer in reversed(layers) if _QUOTED.search(layer)), None)
+    message = reason + (f" '{got}'" if got else "") + (f" (in {where_in})" if where_in else "")
+    names = [got] if got else _QUOTED.findall(" ".join(lines))
     where = src.locate(names[-1].lower()) if names else src.location(src.define().line, src.define().col)
-    return PddlSyntaxError(f"{message} (Fast Downward's reading of this ADL file)", where)
+    return PddlSyntaxError(f"{message} (as Fast Downward's parser reads ADL)", where)
 
 
 @contextlib.contextmanager
@@ -200,10 +209,12 @@ def read_domain(src: SourceMap, path: str) -> Domain:
                                from_translator(ax.condition)) for ax in fd_axioms)
     reqs = src.section(":requirements")
     requirements = tuple(t.lower for t in reqs.items[1:] if isinstance(t, Token)) if reqs else ()
-    return Domain(name=name, requirements=requirements, types=types,
-                  constants={c.name: _type_name(c.type_name) for c in fd_constants}, predicates=predicates,
-                  actions=actions, path=path, spellings=src.spellings(), source=src, functions=functions,
-                  warnings=tuple(warnings), axioms=axioms)
+    domain = Domain(name=name, requirements=requirements, types=types,
+                    constants={c.name: _type_name(c.type_name) for c in fd_constants}, predicates=predicates,
+                    actions=actions, path=path, spellings=src.spellings(), source=src, functions=functions,
+                    warnings=tuple(warnings), axioms=axioms)
+    _check_domain_types(domain, src)
+    return domain
 
 
 def read_problem(psrc: SourceMap, path: str, domain: Domain) -> Problem:
@@ -225,6 +236,94 @@ def read_problem(psrc: SourceMap, path: str, domain: Domain) -> Problem:
                      if isinstance(a, pddl.Atom) and a.predicate != EQUALITY)
     goal, goal_condition = _precondition(from_translator(fd_goal))
     values = costs.read_function_values(psrc, domain, objects) if domain.functions else {}
-    return Problem(name=name, domain_name=domain_name, objects=objects, init=init, goal=goal, path=path,
-                   spellings=psrc.spellings(), function_values=values,
-                   metric=bool(metric) and TOTAL_COST in domain.functions, goal_condition=goal_condition)
+    problem = Problem(name=name, domain_name=domain_name, objects=objects, init=init, goal=goal, path=path,
+                      spellings=psrc.spellings(), function_values=values,
+                      metric=bool(metric) and TOTAL_COST in domain.functions, goal_condition=goal_condition)
+    _check_problem_types(domain, problem, psrc)
+    return problem
+
+
+class _TypeCheck:
+    """Declared types and well-typed atoms, as the STRIPS paths check them (the translator does not).
+
+    An object must be of the parameter's type (or below it); a variable's type
+    must meet the parameter's (one below the other: IPC ADL domains quantify
+    over a supertype and use the variable where a subtype is expected, which
+    Fast Downward reads).
+    """
+
+    def __init__(self, domain: Domain, src: SourceMap, sections: tuple[str, ...] = ()) -> None:
+        from guided_lfd.pddl.fast_reader import _Types
+
+        self.domain, self.src, self.sections = domain, src, sections
+        self.types = _Types(domain.types)
+
+    def known(self, typ: str) -> None:
+        for member in type_members(typ):
+            if member not in self.domain.types:
+                raise PddlSemanticError(f"unknown type '{member}'", self.src.locate(member))
+
+    def variables(self, variables: tuple[tuple[str, str], ...], scope: dict[str, str]) -> dict[str, str]:
+        for name, typ in variables:
+            self.known(typ)
+        return {**scope, **dict(variables)}
+
+    def formula(self, formula: Formula, scope: dict[str, str], objects: dict[str, str]) -> None:
+        if isinstance(formula, Literal):
+            self.atom(formula.atom, scope, objects)
+        elif isinstance(formula, Junction):
+            for part in formula.parts:
+                self.formula(part, scope, objects)
+        else:
+            self.formula(formula.body, self.variables(formula.variables, scope), objects)
+
+    def atom(self, atom: Atom, scope: dict[str, str], objects: dict[str, str]) -> None:
+        pred = self.domain.predicates.get(atom.predicate)
+        if pred is None:  # '=' (the translator has checked names and arities)
+            return
+        for arg, (_, expected) in zip(atom.args, pred.params):
+            if arg in scope:
+                actual = scope[arg]
+                if self.types.below(actual, expected) or self.types.below(expected, actual):
+                    continue
+            elif arg not in objects or self.types.below(objects[arg], expected):
+                continue
+            else:
+                actual = objects[arg]
+            raise PddlSemanticError(f"'{arg}' is a {actual}, expected a {expected} (in {atom})",
+                                    self.src.locate(arg.lower(), *self.sections))
+
+
+def _check_domain_types(domain: Domain, src: SourceMap) -> None:
+    check = _TypeCheck(domain, src)
+    for parent in domain.types.values():
+        if parent is not None:
+            check.known(parent)
+    for typ in domain.constants.values():
+        check.known(typ)
+    for pred in domain.predicates.values():
+        check.variables(pred.params, {})
+    for act in domain.actions:
+        scope = check.variables(act.params, {})
+        for lit in act.precondition:
+            check.atom(lit.atom, scope, domain.constants)
+        if act.condition is not None:
+            check.formula(act.condition, scope, domain.constants)
+        for atom in (*act.add, *act.delete):
+            check.atom(atom, scope, domain.constants)
+        for eff in act.effects:
+            inner = check.variables(eff.variables, scope)
+            check.formula(eff.condition, inner, domain.constants)
+            check.atom(eff.literal.atom, inner, domain.constants)
+    for rule in domain.axioms:
+        check.formula(rule.condition, check.variables(rule.params, {}), domain.constants)
+
+
+def _check_problem_types(domain: Domain, problem: Problem, src: SourceMap) -> None:
+    check = _TypeCheck(domain, src, (":init", ":goal"))
+    objects = {**domain.constants, **problem.objects}
+    for typ in problem.objects.values():
+        check.known(typ)
+    for atom in problem.init:
+        check.atom(atom, {}, objects)
+    check.formula(problem.goal_condition or Junction("and", problem.goal), {}, objects)

@@ -150,6 +150,9 @@ class ActionSchema:
 
         Used for invariant synthesis, so that an invariant that only holds
         because a skill is missing (nobody can undo the effect) is not found.
+        An ADL action's reverse undoes each conditional effect under the same
+        variables and condition, and keeps only the top-level literals of its
+        precondition: more actions, and weaker ones, can only remove invariants.
         """
         pos_pre = {lit.atom for lit in self.precondition if lit.positive and lit.atom.predicate != EQUALITY}
         dels = set(self.delete)
@@ -159,6 +162,8 @@ class ActionSchema:
         # After the action, deleted atoms (not re-added) are false.
         neg_pre = {lit.atom for lit in self.precondition if not lit.positive and lit.atom.predicate != EQUALITY}
         new_pre += [Literal(a, False) for a in sorted(((neg_pre - adds) | (dels - adds)) - ((pos_pre - dels) | adds))]
+        effects = tuple(type(e)(e.variables, e.condition, Literal(e.literal.atom, not e.literal.positive))
+                        for e in self.effects)
         return ActionSchema(
             name=f"{self.name}__reversed",
             params=self.params,
@@ -167,6 +172,7 @@ class ActionSchema:
             delete=tuple(sorted(adds - pos_pre)),
             origin=f"reverse of {self.name}",
             cost=self.cost,
+            effects=effects,
         )
 
 

@@ -50,7 +50,36 @@ def _renamed(problem: Problem, domain_name: str) -> Problem:
     return replace(problem, domain_name=domain_name)
 
 
-def _explore(domain: Domain, problem: Problem) -> tuple:
+def _changeable(task: Any, domain: Domain, problem: Problem, predicates: set[str]) -> None:
+    """Make ``predicates`` fluent for the translator and every atom of theirs possible.
+
+    An excuse may change any atom of these predicates in the initial state,
+    so none may be compiled away as static and grounding must not prune by
+    reachability from the one initial state: each gets an action that adds it
+    and can never run (its precondition is an atom nothing adds), and the
+    exploration starts from every type-correct atom of theirs.
+    """
+    from fast_downward.translate import pddl
+
+    from guided_lfd.grounding import ground_atoms
+
+    never = pddl.Atom(NEVER, [])
+    for name in sorted(predicates):
+        args = [f"?a{k}" for k in range(domain.predicates[name].arity)]
+        effect = pddl.Effect([], pddl.Truth(), pddl.Atom(name, args))
+        task.actions.append(pddl.Action(f"{NEVER}-{name}", [pddl.TypedObject(a, "object") for a in args], len(args),
+                                        never, [effect], None))
+    skip = set(domain.predicates) - predicates
+    known = set(task.init)
+    task.init += [atom for atom in (pddl.Atom(a.predicate, list(a.args)) for a in ground_atoms(domain, problem, skip))
+                  if atom not in known]
+
+
+#: The atom no action adds, and the prefix of the translator-only actions that make predicates fluent.
+NEVER = "guided-lfd-never"
+
+
+def _explore(domain: Domain, problem: Problem, changeable: set[str] = frozenset()) -> tuple:  # type: ignore[assignment]
     """Normalise and ground with the translator: (reachable, atoms, actions, goal, axioms, layers)."""
     from fast_downward.translate import axiom_rules, instantiate, normalize, options
 
@@ -59,6 +88,8 @@ def _explore(domain: Domain, problem: Problem) -> tuple:
     quiet = io.StringIO()
     with contextlib.redirect_stdout(quiet), contextlib.redirect_stderr(quiet):
         task = _translator_task(domain, problem)
+        if changeable:
+            _changeable(task, domain, problem, changeable)
         normalize.normalize(task)
         reachable, atoms, actions, goal, axioms, _ = instantiate.explore(task)
         layers: dict = {}
@@ -67,19 +98,27 @@ def _explore(domain: Domain, problem: Problem) -> tuple:
     return reachable, atoms, actions, goal, axioms, layers
 
 
-def ground_adl(domain: Domain, problem: Problem, deadline: float | None = None) -> GroundTask:
+def ground_adl(domain: Domain, problem: Problem, deadline: float | None = None,
+               changeable: set[str] = frozenset()) -> GroundTask:  # type: ignore[assignment]
     """Ground an ADL task in Fast Downward's normal form (static atoms compiled away, as its translator does).
 
-    An unreachable goal gives a task whose goal is one atom no action adds
-    (every search proves it unsolvable at once).
+    ``changeable``: predicates whose every atom an excuse may change (kept, and
+    grounded over all type-correct atoms, see :func:`_changeable`); planning
+    gives none and gets the translator's reachability grounding.  An
+    unreachable goal gives a task whose goal is one atom no action adds (every
+    search proves it unsolvable at once).
     """
-    reachable, fd_atoms, fd_actions, fd_goal, fd_axioms, layer_of = _explore(domain, problem)
+    reachable, fd_atoms, fd_actions, fd_goal, fd_axioms, layer_of = _explore(domain, problem, changeable)
+    if changeable:
+        reachable = True  # the exploration started from every atom, not from the initial state
     if deadline is not None and time.monotonic() > deadline:
         raise SearchTimeout("grounding exceeded the time limit")
     if len(fd_actions) > MAX_GROUND_ACTIONS:
         raise TaskTooLarge(f"more than {MAX_GROUND_ACTIONS} ground actions", Location(problem.path))
     heads = sorted({_atom(ax.effect) for ax in fd_axioms})
-    atoms = sorted({_atom(a) for a in fd_atoms} - set(heads)) + heads
+    derived_names = domain.derived_predicates()
+    # Atoms of derived predicates no axiom needed by the task derives are never true: not kept as basic atoms.
+    atoms = sorted({_atom(a) for a in fd_atoms if a.predicate not in derived_names} - set(heads)) + heads
     index = {a: i for i, a in enumerate(atoms)}
     derived = mask_of(index[a] for a in heads)
     actions: list[GroundAction] = []
@@ -157,15 +196,18 @@ def _closure(fd_axioms: list[Any], layer_of: dict, index: dict[Atom, int], deriv
     return AxiomClosure([layers[k] for k in sorted(layers)], derived)
 
 
-def relaxed_view(task: GroundTask) -> tuple[list[GroundAction], int, int]:
-    """Actions, positive and negative goal of an admissible delete relaxation of an ADL task.
+def relaxed_view(task: GroundTask) -> tuple[list[GroundAction], int, int, list[int]]:
+    """Actions, positive and negative goal of an admissible delete relaxation of an ADL task, and each action's
+    sure adds (see :class:`~guided_lfd.relaxation.RelaxedTask`).
 
     Each action adds and deletes what any of its effects may (conditions
-    dropped: only more is reachable); axioms are actions of cost 0; negative
-    conditions on derived atoms are dropped (no action deletes a derived atom).
+    dropped: only more is reachable); only its plain adds win over its
+    deletes; axioms are actions of cost 0; negative conditions on derived
+    atoms are dropped (no action deletes a derived atom).
     """
     derived = task.derived
     out: list[GroundAction] = []
+    sure: list[int] = []
     for act in task.actions:
         add, delete = act.add, act.delete
         for eff in act.effects:
@@ -173,11 +215,13 @@ def relaxed_view(task: GroundTask) -> tuple[list[GroundAction], int, int]:
             delete |= eff.delete
         out.append(GroundAction(act.name, act.schema, act.args, act.pre_pos, act.pre_neg & ~derived, add, delete,
                                 act.cost))
+        sure.append(act.add)
     if task.axioms is not None:
         for layer in task.axioms.layers:
             for ax in layer:
                 out.append(GroundAction("axiom", "axiom", (), ax.pos, 0, 1 << ax.head, 0, 0))
-    return out, task.goal_pos, task.goal_neg & ~derived
+                sure.append(1 << ax.head)
+    return out, task.goal_pos, task.goal_neg & ~derived, sure
 
 
 def astar(task: GroundTask, init: int | None = None, deadline: float | None = None) -> list[GroundAction] | None:
@@ -188,8 +232,8 @@ def astar(task: GroundTask, init: int | None = None, deadline: float | None = No
     from guided_lfd.search import _path, _Successors
 
     start = task.close(task.init if init is None else init)
-    relaxed_actions, goal_pos_h, goal_neg_h = relaxed_view(task)
-    lmcut = RelaxedTask(relaxed_actions, goal_pos_h, goal_neg_h).lmcut
+    relaxed_actions, goal_pos_h, goal_neg_h, sure = relaxed_view(task)
+    lmcut = RelaxedTask(relaxed_actions, goal_pos_h, goal_neg_h, sure_adds=sure).lmcut
     actions = task.actions
     successors = _Successors(actions)
     goal_pos, goal_neg = task.goal_pos, task.goal_neg

@@ -1,0 +1,93 @@
+"""Excuses on ADL tasks: the paper's breadth-first search over change sets, an optimal planner call each.
+
+The landmark strategy and its reachability oracle work on STRIPS ground
+tasks (plain adds and deletes, no axioms).  An ADL task (conditional effects,
+quantified or disjunctive conditions, derived predicates) is grounded in Fast
+Downward's normal form with every changeable atom kept
+(:func:`guided_lfd.planning.adl.ground_adl`) and searched with the baseline
+strategy, whose candidate checks are guided-lfd's ADL A*: change sets by
+increasing weight, only basic atoms changed (derived atoms follow from them),
+the invariants of the consistent semantics synthesised from the normalised
+task.  Every excuse passes the independent check, which evaluates
+conditional effects and derived predicates with its own lifted code.
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import replace
+from typing import TYPE_CHECKING
+
+from guided_lfd.errors import OptionError
+from guided_lfd.excuse.space import MutexGroup, Semantics, build_space
+from guided_lfd.excuse.status import ExcuseStatus
+from guided_lfd.excuse.strategies import BaselineSearch, SearchLimits
+from guided_lfd.grounding import ground
+
+if TYPE_CHECKING:
+    from guided_lfd.excuse.engine import ExcuseReport, _Run
+
+#: The strategy every ADL task is searched with (see the module's docstring).
+ADL_STRATEGY = "baseline"
+
+
+def execute_adl(run: "_Run") -> "ExcuseReport":
+    """Ground, synthesise invariants, check solvability and search the minimal excuses of an ADL task."""
+    from guided_lfd.deadline import seconds_left
+    from guided_lfd.excuse.engine import MAX_EXCUSES, _steps, _verify, unachievable_goals
+    from guided_lfd.planning import find_plan
+
+    options = run.options
+    if options.slack:
+        raise OptionError(f"--slack {options.slack}: needs the landmark strategy, which plans STRIPS tasks only "
+                          "(this domain uses ADL)")
+    run.options = replace(options, strategy=ADL_STRATEGY)
+    run._enter("grounding")
+    fixed = options.fixed_predicates(run.domain)
+    task = ground(run.domain, run.problem, fixed=fixed, deadline=run.deadline)
+    groups: list[MutexGroup] = []
+    refuted: list[str] = []
+    if options.semantics is Semantics.CONSISTENT and not task.satisfies_goal(task.init):
+        run._enter("invariant synthesis")
+        from guided_lfd.excuse.invariants import mutex_groups
+
+        groups = mutex_groups(options.invariants_from or run.domain, task, run.deadline, refuted)
+    run._enter("change space")
+    space = build_space(task, options.semantics, list(fixed), list(options.costs), groups)
+    run.space = space
+    stats = run.stats
+    stats.ground_atoms, stats.ground_actions = len(task.atoms), len(task.actions)
+    stats.changeable_atoms, stats.relevant_atoms = space.changeable.bit_count(), space.relevant_atoms.bit_count()
+    stats.relevant_actions, stats.invariant_groups = len(space.relevant_actions), len(space.groups)
+    stats.fixed_predicates = fixed
+    stats.invariants_refuted_by_goal = refuted or None
+    run.unachievable = unachievable_goals(task)
+    run._enter("already solvable?")
+    plan0 = find_plan(task, search="astar-lmcut", time_limit_s=seconds_left(run.deadline, "already solvable?")).plan
+    if plan0 is not None:
+        _verify(run.domain, run.problem, [], plan0, space)
+        run.robot_plan_cost = sum(a.cost for a in plan0)
+        return run.report(ExcuseStatus.ALREADY_SOLVABLE, _steps(plan0), candidates=0, planner_calls=1)
+    run._enter("searching")
+    limits = SearchLimits(all_minimal=options.all_minimal, max_size=options.max_size, deadline=run.deadline,
+                          max_solutions=MAX_EXCUSES)
+    search_start = time.monotonic()
+    stats.setup_time_s = round(search_start - run.start, 6)
+    outcome = BaselineSearch().search(space, limits, run.progress)
+    stats.search_time_s = round(time.monotonic() - search_start, 6)
+    stats.candidates, stats.planner_calls, stats.nodes_expanded = (outcome.candidates, outcome.planner_calls + 1,
+                                                                   outcome.expanded)
+    if options.all_minimal and len(outcome.solutions) >= limits.max_solutions:
+        stats.truncated, stats.max_excuses = True, limits.max_solutions
+    run.phase = "robot plan"
+    for changes in outcome.solutions:  # each plan is the ADL A*'s: optimal
+        run.excuses.append(run.checked_excuse(changes, outcome.plans[changes], True))
+    status = outcome.status
+    if status is ExcuseStatus.TIMEOUT:
+        stats.phase = "searching"
+        if run.excuses:
+            status = ExcuseStatus.FOUND
+            stats.incomplete = True
+        else:
+            run._bound_reached(space, outcome.lower_bound)
+    return run.report(status)
