@@ -414,3 +414,29 @@ def test_random_adl_tasks_have_the_brute_forces_minimal_excuses(task, semantics)
     else:
         assert report.status == "excuse-found"
         assert sorted(sorted(str(c) for c in e.changes) for e in report.excuses) == expected
+
+
+PYVAL_SLICE = [("briefcaseworld", "pfile3"), ("elevators-00-adl", "s1-0"), ("elevators-00-full", "f1-0"),
+               ("miconic-fulladl", "f1-0"), ("miconic-simpleadl", "s1-0"), ("nurikabe-opt18", "p01"),
+               ("openstacks-opt08-adl", "p01"), ("schedule", "probschedule-2-0"), ("trucks", "p01"),
+               ("maintenance-opt14-adl", "maintenance.1.3.010.010.2-000")]
+
+
+@pytest.mark.parametrize("folder, name", PYVAL_SLICE)
+def test_adl_plans_validate_under_an_independent_validator(folder, name, tmp_path):
+    """PyVAL (pddl-pyvalidator, on unified-planning's reader) checks the plans; it reads no :derived, so the
+    domains with derived predicates are checked by guided-lfd's own validator only (the tests above)."""
+    pytest.importorskip("pyval")
+    from pyval.validator import PDDLValidator
+
+    folder_path = IPC_ADL / folder
+    domain_path = folder_path / "domain.pddl"
+    if not domain_path.exists():
+        domain_path = folder_path / f"{name}-domain.pddl"
+    domain, problem = parse_task(domain_path, folder_path / f"{name}.pddl")
+    _, result = plan_task(domain, problem)
+    assert result.plan is not None
+    plan = tmp_path / "plan.txt"
+    plan.write_text("".join(a.name + "\n" for a in result.plan))
+    report = PDDLValidator().validate(str(domain_path), str(folder_path / f"{name}.pddl"), str(plan))
+    assert report.is_valid, report.status

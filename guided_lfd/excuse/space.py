@@ -230,9 +230,6 @@ def build_space(
         if atom.predicate not in fixed_preds and atom.predicate in task.domain.predicates:
             changeable |= 1 << i
     changeable &= ~task.derived  # derived atoms follow from the basic ones
-    for i in bits(changeable):
-        if task.atoms[i].predicate in task.domain.derived_predicates():
-            changeable &= ~(1 << i)
     if task.is_adl:  # backward relevance reads plain effects only: every atom and action may matter
         relevant, rel_actions, negation = (1 << len(task.atoms)) - 1, list(task.actions), (1 << len(task.atoms)) - 1
     else:
