@@ -158,9 +158,10 @@ class GroundTask:
         """The derived atoms' mask (0 without axioms)."""
         return self.axioms.derived if self.axioms is not None else 0
 
-    @property
+    @functools.cached_property
     def is_adl(self) -> bool:
-        """Whether states need more than STRIPS successors (conditional effects or axioms)."""
+        """Whether states need more than STRIPS successors (conditional effects or axioms); worked out once
+        (planner calls ask it every time)."""
         return self.axioms is not None or any(a.effects for a in self.actions)
 
     def close(self, state: int) -> int:

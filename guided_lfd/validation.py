@@ -10,10 +10,12 @@ import re
 from dataclasses import dataclass, field
 
 from guided_lfd.errors import InputFileError, Location, PlanFileError
-from guided_lfd.pddl.formula import Formula
-from guided_lfd.pddl.formula import holds as formula_holds
+from typing import TYPE_CHECKING
+
 from guided_lfd.pddl.model import EQUALITY, Atom, Domain, Literal, MissingCostError, Problem, action_cost, objects_by_type
-from guided_lfd.pddl.semantics import conjuncts, derived_atoms, effect_atoms, failed_conditions, strata
+
+if TYPE_CHECKING:
+    from guided_lfd.pddl.formula import Formula
 from guided_lfd.pddl.source import read_text
 
 
@@ -147,7 +149,7 @@ def validate_plan(domain: Domain, state: frozenset[Atom] | set[Atom], goal: tupl
                                      if not holds(lit, current)]
         else:
             world = adl.world(current)
-            failed = failed_conditions(schema, binding, world, adl.objects)
+            failed = adl.failed(schema, binding, world)
         report = StepReport(i, step, failed)
         reports.append(report)
         if not failed and problem is not None:
@@ -161,32 +163,49 @@ def validate_plan(domain: Domain, state: frozenset[Atom] | set[Atom], goal: tupl
             adds = {a.substitute(binding) for a in schema.add}
             dels = {a.substitute(binding) for a in schema.delete}
         else:
-            adds, dels = effect_atoms(schema, binding, world, adl.objects)
+            adds, dels = adl.effects(schema, binding, world)
         current = (current - dels) | adds
     if adl is None:
         unsatisfied: list[Formula] = [lit for lit in goal if not holds(lit, current)]
     else:
-        world = adl.world(current)
-        parts: list[Formula] = list(goal) if goal_condition is None else conjuncts(goal_condition)
-        unsatisfied = [part for part in parts if not formula_holds(part, world, adl.objects)]
+        unsatisfied = adl.unsatisfied(goal, goal_condition, adl.world(current))
     return ValidationReport(reports, unsatisfied, frozenset(current), None if problem is None else total)
 
 
 class _AdlWorld:
-    """Objects by type and derived atoms, for evaluating ADL formulas on basic states."""
+    """Objects by type and derived atoms, for evaluating ADL formulas on basic states
+    (:mod:`guided_lfd.pddl.semantics`, imported only for ADL tasks)."""
 
     def __init__(self, domain: Domain, problem: Problem | None) -> None:
+        from guided_lfd.pddl import semantics
+
         if problem is None:  # quantifiers range over the problem's objects of each type
             raise ValueError("validating a plan of an ADL domain needs its problem")
-        self.domain = domain
+        self.domain, self.semantics = domain, semantics
         self.objects = objects_by_type(domain, problem)
-        self.layers = strata(domain)
+        self.layers = semantics.strata(domain)
 
     def world(self, state: set[Atom]) -> set[Atom]:
         """``state`` with its derived atoms."""
         if not self.layers:
             return state
-        return state | derived_atoms(self.domain, state, self.objects, self.layers)
+        return state | self.semantics.derived_atoms(self.domain, state, self.objects, self.layers)
+
+    def failed(self, schema, binding: dict[str, str], world: set[Atom]) -> list[Formula]:
+        """The precondition's parts that do not hold in ``world``."""
+        return self.semantics.failed_conditions(schema, binding, world, self.objects)
+
+    def effects(self, schema, binding: dict[str, str], world: set[Atom]) -> tuple[set[Atom], set[Atom]]:
+        """(adds, deletes) of the step in ``world``."""
+        return self.semantics.effect_atoms(schema, binding, world, self.objects)
+
+    def unsatisfied(self, goal: tuple[Literal, ...], goal_condition: Formula | None,
+                    world: set[Atom]) -> list[Formula]:
+        """The goal's parts that do not hold in ``world``."""
+        from guided_lfd.pddl.formula import holds as formula_holds
+
+        parts = list(goal) if goal_condition is None else self.semantics.conjuncts(goal_condition)
+        return [part for part in parts if not formula_holds(part, world, self.objects)]
 
 
 def cost_kind(problem: Problem) -> str:

@@ -17,13 +17,18 @@ import io
 import re
 from typing import Any
 
+from typing import TYPE_CHECKING
+
 from guided_lfd.errors import PddlSemanticError, PddlSyntaxError, SearchTimeout
-from guided_lfd.pddl import costs
-from guided_lfd.pddl.formula import (FALSE, TRUE, ConditionalEffect, DerivedRule, Formula, Junction, Quantified,
-                                     is_conjunction_of_literals, top_literals)
 from guided_lfd.pddl.model import (EQUALITY, TOTAL_COST, ActionSchema, Atom, Domain, Literal, Predicate, Problem,
                                    either_type, type_members)
 from guided_lfd.pddl.source import SExpr, SourceMap, Token
+
+if TYPE_CHECKING:
+    from guided_lfd.pddl.formula import Formula
+
+# Every STRIPS file is asked needs_adl(); the rest of this module (formulas, the
+# translator) is imported only when a file is ADL.
 
 #: List heads that only ADL has (keywords count only at the head of a list: an object may be called 'or').
 ADL_KEYWORDS = frozenset({"when", "forall", "exists", "or", "imply", ":derived"})
@@ -77,6 +82,8 @@ def from_translator(cond: Any) -> Formula:
     """A translator condition as a model formula (same structure, negation normal form)."""
     from fast_downward.translate import pddl
 
+    from guided_lfd.pddl.formula import FALSE, TRUE, Junction, Quantified
+
     if isinstance(cond, pddl.Truth):
         return TRUE
     if isinstance(cond, pddl.Falsity):
@@ -96,6 +103,7 @@ def from_translator(cond: Any) -> Formula:
 
 def _precondition(formula: Formula) -> tuple[tuple[Literal, ...], Formula | None]:
     """(top-level literals, the whole formula if it is more than those)."""
+    from guided_lfd.pddl.formula import is_conjunction_of_literals, top_literals
     if is_conjunction_of_literals(formula):
         return top_literals(formula), None
     return top_literals(formula), formula
@@ -114,6 +122,7 @@ def _cost(increase: Any) -> int | Atom | None:
 
 def _action(act: Any) -> ActionSchema:
     """A translator action as the model has it."""
+    from guided_lfd.pddl.formula import TRUE, ConditionalEffect
     pre, condition = _precondition(from_translator(act.precondition))
     add: list[Atom] = []
     delete: list[Atom] = []
@@ -205,6 +214,8 @@ def read_domain(src: SourceMap, path: str) -> Domain:
             raise PddlSemanticError(f"action '{act.name}' is declared twice (names are case-insensitive)",
                                     src.locate_second_action(act.name))
         seen.add(act.name)
+    from guided_lfd.pddl.formula import DerivedRule
+
     axioms = tuple(DerivedRule(ax.name, _variables(ax.parameters[:ax.num_external_parameters]),
                                from_translator(ax.condition)) for ax in fd_axioms)
     reqs = src.section(":requirements")
@@ -235,6 +246,8 @@ def read_problem(psrc: SourceMap, path: str, domain: Domain) -> Problem:
     init = frozenset(Atom(a.predicate, tuple(a.args)) for a in fd_init
                      if isinstance(a, pddl.Atom) and a.predicate != EQUALITY)
     goal, goal_condition = _precondition(from_translator(fd_goal))
+    from guided_lfd.pddl import costs
+
     values = costs.read_function_values(psrc, domain, objects) if domain.functions else {}
     problem = Problem(name=name, domain_name=domain_name, objects=objects, init=init, goal=goal, path=path,
                       spellings=psrc.spellings(), function_values=values,
@@ -269,6 +282,8 @@ class _TypeCheck:
         return {**scope, **dict(variables)}
 
     def formula(self, formula: Formula, scope: dict[str, str], objects: dict[str, str]) -> None:
+        from guided_lfd.pddl.formula import Junction
+
         if isinstance(formula, Literal):
             self.atom(formula.atom, scope, objects)
         elif isinstance(formula, Junction):
@@ -326,4 +341,6 @@ def _check_problem_types(domain: Domain, problem: Problem, src: SourceMap) -> No
         check.known(typ)
     for atom in problem.init:
         check.atom(atom, {}, objects)
+    from guided_lfd.pddl.formula import Junction
+
     check.formula(problem.goal_condition or Junction("and", problem.goal), {}, objects)

@@ -6,7 +6,6 @@ golden-file tests and repeated runs compare byte for byte.
 
 from __future__ import annotations
 
-from guided_lfd.pddl.formula import effect_text, formula_text
 from guided_lfd.pddl.model import EQUALITY, TOTAL_COST, ActionSchema, Atom, Domain, Literal, Predicate, Problem
 
 
@@ -64,6 +63,8 @@ def action_to_pddl(action: ActionSchema, indent: str = "  ") -> str:
             lines.append(f"{indent};; {line}")
     lines.append(f"{indent}(:action {action.name}")
     lines.append(f"{indent}  :parameters ({_typed(action.params)})")
+    if action.is_adl:
+        from guided_lfd.pddl.formula import effect_text, formula_text
     if action.condition is not None:
         lines.append(f"{indent}  :precondition {formula_text(action.condition)}")
     else:
@@ -125,6 +126,8 @@ def domain_to_pddl(domain: Domain, header: str | None = None) -> str:
             args = _typed(fun.params)
             declared.append(f"({fun.name}{' ' + args if args else ''}) - number")
         out.append("  (:functions " + "\n              ".join(declared) + ")")
+    if domain.axioms:
+        from guided_lfd.pddl.formula import formula_text
     for rule in domain.axioms:
         out.append("")
         head = " ".join((rule.predicate, _typed(rule.params))).strip()
@@ -152,8 +155,12 @@ def problem_to_pddl(problem: Problem, init: frozenset[Atom] | set[Atom] | None =
     if problem.metric:
         facts.append(f"(= ({TOTAL_COST}) 0)")
     out.append("  (:init " + "\n         ".join(facts) + ")")
-    goal = (formula_text(problem.goal_condition) if problem.goal_condition is not None
-            else _conj([str(l) for l in problem.goal]))
+    if problem.goal_condition is not None:
+        from guided_lfd.pddl.formula import formula_text
+
+        goal = formula_text(problem.goal_condition)
+    else:
+        goal = _conj([str(l) for l in problem.goal])
     if problem.metric:
         out.append(f"  (:goal {goal})")
         out.append(f"  (:metric minimize ({TOTAL_COST})))")
