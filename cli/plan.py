@@ -18,7 +18,7 @@ from guided_lfd.api import plan as plan_and_validate
 from guided_lfd.io import write_text
 from guided_lfd.pddl.reader import parse_task
 from guided_lfd.planning import DEFAULT_SEARCH, SEARCHES
-from guided_lfd.validation import cost_kind, format_plan
+from guided_lfd.planning.validation import cost_kind, format_plan
 
 
 @help_footer(

@@ -11,7 +11,7 @@ from guided_lfd import errors
 from guided_lfd.errors import EXIT_PLAN_INVALID
 from guided_lfd.io import json_document
 from guided_lfd.pddl.reader import parse_task
-from guided_lfd.validation import cost_kind, parse_plan, validate_plan
+from guided_lfd.planning.validation import cost_kind, parse_plan, validate_plan
 
 
 @help_footer(

@@ -33,8 +33,8 @@ _EXPORTS = {
     "Progress": "guided_lfd.excuse.progress",
     "Semantics": "guided_lfd.excuse.space",
     "Change": "guided_lfd.excuse.change",
-    "PlanStep": "guided_lfd.validation",
-    "ValidationReport": "guided_lfd.validation",
+    "PlanStep": "guided_lfd.planning.validation",
+    "ValidationReport": "guided_lfd.planning.validation",
     "Domain": "guided_lfd.pddl.model",
     "Problem": "guided_lfd.pddl.model",
     "GuidedLfdError": "guided_lfd.errors",
@@ -50,7 +50,7 @@ if TYPE_CHECKING:  # for type checkers and IDEs; at run time __getattr__ loads t
     from guided_lfd.excuse.progress import Progress
     from guided_lfd.excuse.space import Semantics
     from guided_lfd.pddl.model import Domain, Problem
-    from guided_lfd.validation import PlanStep, ValidationReport
+    from guided_lfd.planning.validation import PlanStep, ValidationReport
 
 
 def __getattr__(name: str) -> Any:

@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING, Any, Sequence
 
 from guided_lfd.deadline import checked_time_limit
 from guided_lfd.pddl.model import Domain, Problem
-from guided_lfd.validation import PlanStep, ValidationReport
+from guided_lfd.planning.validation import PlanStep, ValidationReport
 
 if TYPE_CHECKING:  # the extra 'up' only
     from unified_planning.model import Problem as UPProblem
@@ -109,7 +109,7 @@ def plan(domain: Domain, problem: Problem, search: str | None = None,
     validate or its cost disagrees with the validator's (a bug, never hidden).
     """
     from guided_lfd.planning import DEFAULT_SEARCH, plan_task
-    from guided_lfd.validation import validated
+    from guided_lfd.planning.validation import validated
 
     from guided_lfd.errors import OptionError
     from guided_lfd.planning import SEARCHES
@@ -130,11 +130,11 @@ def plan(domain: Domain, problem: Problem, search: str | None = None,
 def validate(domain: Domain, problem: Problem, plan: Source | Sequence[PlanStep | str]) -> ValidationReport:
     """Execute ``plan`` (a plan file, IPC plan text, or steps) from the initial state; cost included.
 
-    Steps may be :class:`~guided_lfd.validation.PlanStep` objects or strings
+    Steps may be :class:`~guided_lfd.planning.validation.PlanStep` objects or strings
     such as ``"(drive home shop)"``; a bad step is a one-line
     :class:`~guided_lfd.errors.PlanFileError`, as on the command line.
     """
-    from guided_lfd.validation import parse_plan, parse_plan_text, validate_plan
+    from guided_lfd.planning.validation import parse_plan, parse_plan_text, validate_plan
 
     if isinstance(plan, Path) or (isinstance(plan, str) and not _is_text(plan)):
         steps = parse_plan(str(plan), domain, problem)

@@ -32,7 +32,7 @@ from guided_lfd.io import json_document, write_text
 from guided_lfd.pddl.fit import check_model_fits
 from guided_lfd.pddl.model import Atom, Domain, Problem
 from guided_lfd.pddl.writer import domain_to_pddl
-from guided_lfd.validation import PlanStep
+from guided_lfd.planning.validation import PlanStep
 
 __all__ = ["Round", "TeachSession", "SimulatedHuman", "GivenTraces", "teach", "keep_facts", "check_human_model"]
 
@@ -274,7 +274,7 @@ def _first_unreachable(domain: Domain, task: Problem, changes: list[Change]) -> 
     """The first of ``changes`` that no plan of ``domain`` makes from ``task``'s state on its own (a relaxed
     check first, then each change's own optimal plan), or None when each one alone can be made."""
     from guided_lfd.evaluate import excuse_goal, optimal_plan
-    from guided_lfd.grounding import ground
+    from guided_lfd.planning.grounding import ground
 
     ground_task = ground(domain, task)
     reached, deletable = _relaxed_reach(ground_task)
@@ -691,7 +691,7 @@ def _why_not_original(taught: Domain, problem: Problem, learned: list[str], opti
 def _what_it_lacks(taught: Domain, problem: Problem, learned: list[str], options: ExcuseOptions,
                    deadline: float | None) -> str | None:
     """See :func:`_why_not_original`: the detail, or None when nothing more can be said."""
-    from guided_lfd.grounding import bits, ground
+    from guided_lfd.planning.grounding import bits, ground
 
     ground_task = ground(taught, problem, deadline=deadline)
     reached, _ = _relaxed_reach(ground_task)

@@ -16,7 +16,7 @@ from hypothesis import strategies as st
 
 from conftest import DATA
 from guided_lfd.errors import PddlSyntaxError, UnsupportedFeatureError
-from guided_lfd.grounding import ground
+from guided_lfd.planning.grounding import ground
 from guided_lfd.merge import merge_domains
 from guided_lfd.pddl import fast_reader, reader
 from guided_lfd.pddl.model import Atom

@@ -15,14 +15,14 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from guided_lfd.grounding import AxiomClosure, GroundAxiom, ground
+from guided_lfd.planning.grounding import AxiomClosure, GroundAxiom, ground
 from guided_lfd.pddl.formula import Junction, Quantified, holds
 from guided_lfd.pddl.model import Atom, Literal, objects_by_type
 from guided_lfd.pddl.reader import parse_domain, parse_task
 from guided_lfd.pddl.semantics import derived_atoms, effect_atoms, failed_conditions, strata
 from guided_lfd.pddl.writer import domain_to_pddl, problem_to_pddl
 from guided_lfd.planning import plan_task
-from guided_lfd.validation import PlanStep, validate_plan
+from guided_lfd.planning.validation import PlanStep, validate_plan
 
 ROOT = Path(__file__).resolve().parent.parent
 ADL = ROOT / "tests" / "data" / "adl"
@@ -344,7 +344,7 @@ def _adl_brute_force(domain, problem, groups, max_size: int = 2) -> tuple[int | 
     from dataclasses import replace
 
     from guided_lfd.excuse.change import Change
-    from guided_lfd.grounding import ground_atoms
+    from guided_lfd.planning.grounding import ground_atoms
 
     atoms = ground_atoms(domain, problem, skip=domain.derived_predicates())
     init = frozenset(problem.init)

@@ -12,7 +12,7 @@ from hypothesis import strategies as st
 
 from guided_lfd.excuse.space import Semantics, build_space
 from guided_lfd.excuse.strategies import STRATEGIES, SearchLimits, by_weight, colex_subsets
-from guided_lfd.grounding import ground
+from guided_lfd.planning.grounding import ground
 from guided_lfd.pddl.reader import parse_task
 
 BLOCKS = Path(__file__).resolve().parent.parent / "data" / "benchmarks" / "ipc" / "blocks"

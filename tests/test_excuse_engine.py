@@ -19,7 +19,7 @@ from guided_lfd.excuse.space import Semantics
 from guided_lfd.excuse.strategies import STRATEGIES
 from guided_lfd.pddl.model import Atom, Literal
 from guided_lfd.pddl.reader import parse_domain, parse_task
-from guided_lfd.validation import PlanStep
+from guided_lfd.planning.validation import PlanStep
 
 ALL_STRATEGIES = sorted(STRATEGIES)
 
@@ -180,7 +180,7 @@ def _parse_random(tmp_path_factory, name: str, pddl: tuple[str, str]):
 
 def excuse_checker(domain, problem, groups):
     """(ground atoms, is_excuse(change atoms)): an independent BFS and consistency check on each excuse state."""
-    from guided_lfd.grounding import ground_atoms
+    from guided_lfd.planning.grounding import ground_atoms
 
     atoms = ground_atoms(domain, problem)
     ground_actions = []

@@ -137,7 +137,7 @@ def test_every_trace_reads_segments_and_plays_its_human_plan(entry):
     from guided_lfd.demonstration.segment import segment
     from guided_lfd.demonstration.trace import HAND_PREDICATES, load_demonstration
     from guided_lfd.pddl.reader import parse_task
-    from guided_lfd.validation import PlanStep, validate_plan
+    from guided_lfd.planning.validation import PlanStep, validate_plan
 
     scenario = entry["scenario"]
     demo = load_demonstration(str(TRACES / entry["file"]))

@@ -14,7 +14,7 @@ from guided_lfd.excuse.engine import ExcuseOptions
 from guided_lfd.excuse.invariants import mutex_groups
 from guided_lfd.excuse.lmcut import INF, RelaxedExcuseTask
 from guided_lfd.excuse.space import Semantics, build_space
-from guided_lfd.grounding import ground
+from guided_lfd.planning.grounding import ground
 from guided_lfd.pddl.reader import parse_domain, parse_task
 
 IPC = ROOT / "data" / "benchmarks" / "ipc"

@@ -1,4 +1,4 @@
-"""Plan shortening and the LM-cut certificate of optimality (guided_lfd.optimal)."""
+"""Plan shortening and the LM-cut certificate of optimality (guided_lfd.planning.optimal)."""
 
 from __future__ import annotations
 
@@ -7,9 +7,9 @@ from collections import deque
 import pytest
 from hypothesis import HealthCheck, given, settings
 
-from guided_lfd.grounding import ground
-from guided_lfd.optimal import certified_optimal, is_plan, shorten_plan
-from guided_lfd.relaxation import INF, RelaxedTask
+from guided_lfd.planning.grounding import ground
+from guided_lfd.planning.optimal import certified_optimal, is_plan, shorten_plan
+from guided_lfd.planning.relaxation import INF, RelaxedTask
 from guided_lfd.pddl.reader import parse_task
 from guided_lfd.planning import find_plan
 from conftest import BLOCKS, kitchen

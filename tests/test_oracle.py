@@ -12,8 +12,8 @@ from guided_lfd.excuse import reach
 from guided_lfd.excuse.engine import ExcuseOptions, find_excuses
 from guided_lfd.excuse.reach import ReachabilityOracle
 from guided_lfd.excuse.space import Semantics, build_space
-from guided_lfd.grounding import ground
-from guided_lfd.h2 import PairReachability
+from guided_lfd.planning.grounding import ground
+from guided_lfd.planning.h2 import PairReachability
 from guided_lfd.pddl.reader import parse_task
 from test_excuse_engine import _parse_random, brute_force, small_tasks
 from test_optimal import _optimal_length

@@ -7,10 +7,10 @@ import json
 import pytest
 
 from conftest import BLOCKS, kitchen
-from guided_lfd.grounding import ground
+from guided_lfd.planning.grounding import ground
 from guided_lfd.pddl.reader import parse_task
 from guided_lfd.planning import SEARCHES, find_plan
-from guided_lfd.validation import PlanStep, validate_plan
+from guided_lfd.planning.validation import PlanStep, validate_plan
 
 
 @pytest.mark.parametrize("search", sorted(SEARCHES))

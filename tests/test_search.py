@@ -1,4 +1,4 @@
-"""guided-lfd's own optimal planner (guided_lfd.search): pruning keeps every plan, A* is optimal."""
+"""guided-lfd's own optimal planner (guided_lfd.planning.search): pruning keeps every plan, A* is optimal."""
 
 from __future__ import annotations
 
@@ -8,11 +8,11 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 
 from conftest import ROOT
-from guided_lfd.grounding import ground
-from guided_lfd.optimal import is_plan
+from guided_lfd.planning.grounding import ground
+from guided_lfd.planning.optimal import is_plan
 from guided_lfd.pddl.reader import parse_task
 from guided_lfd.planning import find_plan
-from guided_lfd.search import astar, planning_actions, reachable_actions
+from guided_lfd.planning.search import astar, planning_actions, reachable_actions
 from test_excuse_engine import small_tasks
 from test_optimal import _optimal_length, _task_from_text
 

@@ -88,7 +88,7 @@ def test_large_task_still_takes_the_numpy_path(monkeypatch):
     """numpy is imported on demand; a task on the numpy path gets it (and numpy.ma)."""
     from guided_lfd.excuse import lmcut
     from guided_lfd.excuse.space import Semantics, build_space
-    from guided_lfd.grounding import ground
+    from guided_lfd.planning.grounding import ground
     from guided_lfd.pddl.reader import parse_task
 
     task = ground(*parse_task(ROBOT, PROBLEM))

@@ -11,7 +11,7 @@ from guided_lfd.demonstration.learn import ground_actions, learn_domain
 from guided_lfd.demonstration.segment import segment, segments_document
 from guided_lfd.demonstration.study_data import DEMONSTRATORS, TABLE_I, TABLE_II_OBSERVED, render_study
 from guided_lfd.demonstration.trace import load_demonstration
-from guided_lfd.grounding import ground
+from guided_lfd.planning.grounding import ground
 from guided_lfd.pddl.reader import parse_task
 from guided_lfd.planning import find_plan
 

@@ -203,7 +203,7 @@ def test_a_past_deadline_is_a_timeout():
 
 
 def test_a_task_too_large_to_ground_is_a_memout_and_a_failure_an_internal_error(monkeypatch):
-    monkeypatch.setattr("guided_lfd.grounding.MAX_GROUND_ACTIONS", 0)
+    monkeypatch.setattr("guided_lfd.planning.grounding.MAX_GROUND_ACTIONS", 0)
     result = solve(rover_world(can_press=True))
     assert result.status == Status.MEMOUT and "ground actions" in result.log_messages[0].message
     monkeypatch.undo()

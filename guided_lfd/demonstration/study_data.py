@@ -21,7 +21,7 @@ from guided_lfd.demonstration.render import Noise, Scene, Step, render, schedule
 from guided_lfd.pddl.model import Atom, Literal
 from guided_lfd.pddl.reader import parse_task
 from guided_lfd.planning import plan_task
-from guided_lfd.validation import PlanStep, validate_plan
+from guided_lfd.planning.validation import PlanStep, validate_plan
 
 DEMONSTRATORS = ("P1", "P2", "P3", "P4", "P5")
 #: Table I: demonstration time in seconds (excuse, complete) per kitchen.

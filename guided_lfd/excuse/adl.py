@@ -22,7 +22,7 @@ from guided_lfd.errors import OptionError
 from guided_lfd.excuse.space import MutexGroup, Semantics, build_space
 from guided_lfd.excuse.status import ExcuseStatus
 from guided_lfd.excuse.strategies import BaselineSearch, SearchLimits
-from guided_lfd.grounding import ground
+from guided_lfd.planning.grounding import ground
 
 if TYPE_CHECKING:
     from guided_lfd.excuse.engine import ExcuseReport, _Run

@@ -11,7 +11,7 @@ from collections.abc import Sequence
 
 from guided_lfd.excuse.change import Change, excuse_state
 from guided_lfd.pddl.model import Atom, Domain, Problem
-from guided_lfd.validation import PlanStep, validate_plan
+from guided_lfd.planning.validation import PlanStep, validate_plan
 
 __all__ = ["check_excuse", "change_cost"]
 

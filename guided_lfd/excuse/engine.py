@@ -30,11 +30,11 @@ from guided_lfd.excuse.space import (
 from guided_lfd.excuse.statistics import ExcuseStatistics
 from guided_lfd.excuse.status import ExcuseStatus
 from guided_lfd.excuse.strategies import DEFAULT_STRATEGY, STRATEGIES, Probe, SearchLimits
-from guided_lfd.grounding import GroundAction, GroundTask, bits, mask_of
-from guided_lfd.optimal import certified_optimal, shorten_plan
+from guided_lfd.planning.grounding import GroundAction, GroundTask, bits, mask_of
+from guided_lfd.planning.optimal import certified_optimal, shorten_plan
 from guided_lfd.pddl.fit import check_model_fits
 from guided_lfd.pddl.model import Atom, Domain, Literal, Problem, pretty_atom
-from guided_lfd.validation import PlanStep, validated
+from guided_lfd.planning.validation import PlanStep, validated
 
 
 #: ``--all`` lists at most this many excuses (and says so in ``statistics.truncated`` when it stops there).

@@ -29,7 +29,7 @@ import math
 from typing import TYPE_CHECKING
 
 from guided_lfd.excuse.space import ChangeSpace
-from guided_lfd.grounding import bits
+from guided_lfd.planning.grounding import bits
 
 if TYPE_CHECKING:
     import numpy as np

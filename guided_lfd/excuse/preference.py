@@ -18,7 +18,7 @@ from itertools import combinations
 
 from guided_lfd.excuse.change import Change
 from guided_lfd.pddl.model import Atom, Domain, Problem
-from guided_lfd.validation import PlanStep, validate_plan
+from guided_lfd.planning.validation import PlanStep, validate_plan
 
 __all__ = ["PredictedDemonstration", "apply_preference", "predict_demonstration", "prefer_demonstration",
            "minimal_request", "sufficient_part"]

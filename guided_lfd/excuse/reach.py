@@ -9,7 +9,7 @@ excuse search:
 * every state of an exhausted (failed) search is remembered as *dead*, and
   every state on a found plan as *alive* with its remaining plan, so later
   candidates stop as soon as they meet a known state;
-* a check first asks h^2 (:mod:`guided_lfd.h2`) whether the goal is
+* a check first asks h^2 (:mod:`guided_lfd.planning.h2`) whether the goal is
   reachable at all when pairs of facts must be reachable together: that
   refutes most candidates that are not excuses in milliseconds, without
   searching (an instrument calibrated but not powered on stays so);
@@ -35,9 +35,9 @@ from typing import Any, Generator, Iterator
 
 from guided_lfd.errors import SearchTimeout
 from guided_lfd.excuse.space import ChangeSpace
-from guided_lfd.grounding import GroundAction, bits
-from guided_lfd.h2 import PairReachability
-from guided_lfd.relaxation import RelaxedTask
+from guided_lfd.planning.grounding import GroundAction, bits
+from guided_lfd.planning.h2 import PairReachability
+from guided_lfd.planning.relaxation import RelaxedTask
 
 #: Relevant actions from which reachability checks first hill-climb on h^FF.
 GUIDED_MIN_ACTIONS = 1000

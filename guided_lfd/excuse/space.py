@@ -19,7 +19,7 @@ from dataclasses import dataclass, field
 from enum import Enum
 
 from guided_lfd.errors import OptionError
-from guided_lfd.grounding import GroundAction, GroundTask, bits, mask_of
+from guided_lfd.planning.grounding import GroundAction, GroundTask, bits, mask_of
 from guided_lfd.pddl.model import Atom, Domain
 
 

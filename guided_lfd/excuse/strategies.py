@@ -21,7 +21,7 @@ from guided_lfd.excuse.progress import ProgressMeter
 from guided_lfd.excuse.reach import ReachabilityOracle
 from guided_lfd.excuse.space import ChangeSpace
 from guided_lfd.excuse.status import ExcuseStatus
-from guided_lfd.grounding import GroundAction, bits
+from guided_lfd.planning.grounding import GroundAction, bits
 
 
 def clock() -> float:

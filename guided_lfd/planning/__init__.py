@@ -1,6 +1,6 @@
 """Planning on guided-lfd's ground tasks: guided-lfd's A* with LM-cut, and pyperplan's searches.
 
-The default, ``astar-lmcut``, is :func:`guided_lfd.search.astar` over the
+The default, ``astar-lmcut``, is :func:`guided_lfd.planning.search.astar` over the
 actions reachable from the initial state and relevant to the goal.  The
 ``pyperplan-*`` configurations (and ``bfs``, ``gbfs-hff``: the baseline's
 planner calls) hand the ground task to pyperplan as a
@@ -18,7 +18,7 @@ from dataclasses import dataclass, replace
 from typing import Callable, Iterator
 
 from guided_lfd.deadline import deadline_after, watchdog
-from guided_lfd.grounding import GroundAction, GroundTask, bits
+from guided_lfd.planning.grounding import GroundAction, GroundTask, bits
 
 #: Registered configurations: name -> (search, heuristic or None, optimal?).  ``guided`` is
 #: guided-lfd's own A*; the other searches are pyperplan's (imported when used).
@@ -132,7 +132,7 @@ def find_plan(
 def _guided_astar(task: GroundTask, init: int | None, actions: list[GroundAction] | None,
                   time_limit_s: float | None, search: str, start: float) -> PlanResult:
     """guided-lfd's A* with LM-cut over the reachable, relevant actions."""
-    from guided_lfd.search import astar, planning_actions
+    from guided_lfd.planning.search import astar, planning_actions
 
     init = task.init if init is None else init
     deadline = None if time_limit_s is None else time.monotonic() + time_limit_s
@@ -152,7 +152,7 @@ def plan_task(domain, problem, search: str = DEFAULT_SEARCH, time_limit_s: float
     """Ground ``problem`` for planning (static atoms pruned) and plan for it; ``time_limit_s`` bounds both (the
     grounding checks it cooperatively, so the limit holds in a thread too, where no watchdog can run)."""
     from guided_lfd.deadline import deadline_after, seconds_left
-    from guided_lfd.grounding import ground
+    from guided_lfd.planning.grounding import ground
 
     deadline = deadline_after(time_limit_s)
     task = ground(domain, problem, fixed=domain.predicates, deadline=deadline)

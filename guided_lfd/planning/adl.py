@@ -4,7 +4,7 @@
 Downward's translator normalise them (quantifiers and disjunctions compiled
 into axioms and split actions, complicated goals into a derived atom) and
 ground them by its relaxed reachability analysis, and turns the result into
-a :class:`~guided_lfd.grounding.GroundTask` whose actions carry conditional
+a :class:`~guided_lfd.planning.grounding.GroundTask` whose actions carry conditional
 effects and whose states are closed under the axioms.
 
 :func:`astar` is guided-lfd's A* for such tasks, with LM-cut on a relaxation
@@ -24,10 +24,10 @@ from typing import Any
 
 from guided_lfd.deadline import linger
 from guided_lfd.errors import Location, SearchTimeout, TaskTooLarge
-from guided_lfd.grounding import (MAX_GROUND_ACTIONS, AxiomClosure, GroundAction, GroundAxiom, GroundEffect,
+from guided_lfd.planning.grounding import (MAX_GROUND_ACTIONS, AxiomClosure, GroundAction, GroundAxiom, GroundEffect,
                                   GroundTask, mask_of)
 from guided_lfd.pddl.model import Atom, Domain, Problem
-from guided_lfd.relaxation import INF, RelaxedTask
+from guided_lfd.planning.relaxation import INF, RelaxedTask
 
 
 def _translator_task(domain: Domain, problem: Problem) -> Any:
@@ -61,7 +61,7 @@ def _changeable(task: Any, domain: Domain, problem: Problem, predicates: set[str
     """
     from fast_downward.translate import pddl
 
-    from guided_lfd.grounding import ground_atoms
+    from guided_lfd.planning.grounding import ground_atoms
 
     never = pddl.Atom(NEVER, [])
     for name in sorted(predicates):
@@ -198,7 +198,7 @@ def _closure(fd_axioms: list[Any], layer_of: dict, index: dict[Atom, int], deriv
 
 def relaxed_view(task: GroundTask) -> tuple[list[GroundAction], int, int, list[int]]:
     """Actions, positive and negative goal of an admissible delete relaxation of an ADL task, and each action's
-    sure adds (see :class:`~guided_lfd.relaxation.RelaxedTask`).
+    sure adds (see :class:`~guided_lfd.planning.relaxation.RelaxedTask`).
 
     Each action adds and deletes what any of its effects may (conditions
     dropped: only more is reachable); only its plain adds win over its
@@ -229,7 +229,7 @@ def astar(task: GroundTask, init: int | None = None, deadline: float | None = No
 
     Raises :class:`SearchTimeout` past ``deadline`` (a ``time.monotonic()`` value).
     """
-    from guided_lfd.search import _path, _Successors
+    from guided_lfd.planning.search import _path, _Successors
 
     start = task.close(task.init if init is None else init)
     relaxed_actions, goal_pos_h, goal_neg_h, sure = relaxed_view(task)

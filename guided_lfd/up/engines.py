@@ -27,7 +27,7 @@ from guided_lfd.api import PlanReport, plan, validate
 from guided_lfd.deadline import MAX_TIME_LIMIT, deadline_after, seconds_left
 from guided_lfd.errors import GuidedLfdError, PlanFileError, SearchTimeout, TaskTooLarge
 from guided_lfd.up.task import SUPPORTED_KIND, UpTask, to_task
-from guided_lfd.validation import ValidationReport
+from guided_lfd.planning.validation import ValidationReport
 
 __all__ = ["GuidedLfdPlanner", "GuidedLfdValidator", "register"]
 

@@ -20,7 +20,7 @@ from unified_planning.plans import ActionInstance, SequentialPlan
 
 from guided_lfd.errors import UnsupportedFeatureError
 from guided_lfd.pddl.model import EQUALITY, Atom, Domain, Literal, Problem
-from guided_lfd.validation import PlanStep
+from guided_lfd.planning.validation import PlanStep
 
 __all__ = ["SUPPORTED_KIND", "UpTask", "to_task", "unsupported_features"]
 

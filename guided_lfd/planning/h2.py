@@ -15,7 +15,7 @@ proves the goal unreachable; a "yes" proves nothing.
 The pairs are kept as one bit set per fact: ``partners[x]`` has bit ``y``
 when the pair ``{x, y}`` is reachable (bit ``x`` when ``x`` is), so an
 action's compatible facts are the AND of its preconditions' sets.  It runs
-on the fact table of a :class:`~guided_lfd.relaxation.RelaxedTask`
+on the fact table of a :class:`~guided_lfd.planning.relaxation.RelaxedTask`
 (complement facts for negative preconditions and goals included).
 """
 
@@ -23,7 +23,7 @@ from __future__ import annotations
 
 from typing import Generator
 
-from guided_lfd.relaxation import RelaxedTask
+from guided_lfd.planning.relaxation import RelaxedTask
 
 #: Actions a pass processes between two yields (so a caller can stop it).
 ACTIONS_PER_STEP = 512

@@ -5,7 +5,7 @@ witness).  This module makes it short and, where it can, proves it optimal:
 
 * :func:`shorten_plan` removes loops (a state met twice) and every action
   whose removal leaves a valid plan (greedy action elimination);
-* :meth:`~guided_lfd.relaxation.RelaxedTask.lmcut` (LM-cut, Helmert and
+* :meth:`~guided_lfd.planning.relaxation.RelaxedTask.lmcut` (LM-cut, Helmert and
   Domshlak 2009) gives an admissible lower bound on the cost of any plan
   from a state;
 * :func:`certified_optimal` says whether a plan's cost equals that bound,
@@ -17,8 +17,8 @@ from __future__ import annotations
 
 from typing import Sequence
 
-from guided_lfd.grounding import GroundAction
-from guided_lfd.relaxation import RelaxedTask
+from guided_lfd.planning.grounding import GroundAction
+from guided_lfd.planning.relaxation import RelaxedTask
 
 __all__ = ["certified_optimal", "is_plan", "shorten_plan"]
 

@@ -21,8 +21,8 @@ import time
 from typing import Sequence
 
 from guided_lfd.errors import SearchTimeout
-from guided_lfd.grounding import GroundAction, GroundTask, bits
-from guided_lfd.relaxation import INF, RelaxedTask
+from guided_lfd.planning.grounding import GroundAction, GroundTask, bits
+from guided_lfd.planning.relaxation import INF, RelaxedTask
 
 
 def reachable_actions(actions: Sequence[GroundAction], state: int) -> list[GroundAction]:
