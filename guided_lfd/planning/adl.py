@@ -16,9 +16,7 @@ actions of cost 0.
 from __future__ import annotations
 
 import contextlib
-import heapq
 import io
-import itertools
 import time
 from typing import Any
 
@@ -27,7 +25,7 @@ from guided_lfd.errors import Location, SearchTimeout, TaskTooLarge
 from guided_lfd.planning.grounding import (MAX_GROUND_ACTIONS, AxiomClosure, GroundAction, GroundAxiom, GroundEffect,
                                   GroundTask, mask_of)
 from guided_lfd.pddl.model import Atom, Domain, Problem
-from guided_lfd.planning.relaxation import INF, RelaxedTask
+from guided_lfd.planning.relaxation import RelaxedTask
 
 
 def _translator_task(domain: Domain, problem: Problem) -> Any:
@@ -227,49 +225,12 @@ def relaxed_view(task: GroundTask) -> tuple[list[GroundAction], int, int, list[i
 def astar(task: GroundTask, init: int | None = None, deadline: float | None = None) -> list[GroundAction] | None:
     """An optimal plan of an ADL task from ``init`` (default: its initial state), or None: proved unsolvable.
 
-    Raises :class:`SearchTimeout` past ``deadline`` (a ``time.monotonic()`` value).
+    guided-lfd's A* (:func:`guided_lfd.planning.search.astar`) with the task's successors and LM-cut on
+    :func:`relaxed_view`.  Raises :class:`SearchTimeout` past ``deadline`` (a ``time.monotonic()`` value).
     """
-    from guided_lfd.planning.search import _path, _Successors
+    from guided_lfd.planning.search import astar as search
 
+    relaxed_actions, goal_pos, goal_neg, sure = relaxed_view(task)
+    relaxed = RelaxedTask(relaxed_actions, goal_pos, goal_neg, sure_adds=sure)
     start = task.close(task.init if init is None else init)
-    relaxed_actions, goal_pos_h, goal_neg_h, sure = relaxed_view(task)
-    lmcut = RelaxedTask(relaxed_actions, goal_pos_h, goal_neg_h, sure_adds=sure).lmcut
-    actions = task.actions
-    successors = _Successors(actions)
-    goal_pos, goal_neg = task.goal_pos, task.goal_neg
-    h0 = lmcut(start)
-    if h0 == INF:
-        return None
-    g_of: dict[int, int] = {start: 0}
-    h_of: dict[int, float] = {start: h0}
-    parent: dict[int, tuple[int, int]] = {}
-    tie = itertools.count()
-    heap: list[tuple[float, float, int, int, int]] = [(h0, h0, 0, 0, start)]
-    expanded = 0
-    while heap:
-        _, _, _, g, state = heapq.heappop(heap)
-        if g > g_of[state]:
-            continue
-        if state & goal_pos == goal_pos and not state & goal_neg:
-            return _path(actions, parent, state)
-        expanded += 1
-        if deadline is not None and not expanded & 63 and time.monotonic() > deadline:
-            raise SearchTimeout("planner exceeded its time limit")
-        for ai in successors.candidates(state):
-            act = actions[ai]
-            if not act.applicable(state):
-                continue
-            nxt = task.successor(act, state)
-            ng = g + act.cost
-            if ng >= g_of.get(nxt, INF):
-                continue
-            g_of[nxt] = ng
-            parent[nxt] = (state, ai)
-            h = h_of.get(nxt)
-            if h is None:
-                h = h_of[nxt] = lmcut(nxt)
-            if h == INF:
-                continue
-            heapq.heappush(heap, (ng + h, h, next(tie), ng, nxt))
-    return None
-
+    return search(task.actions, start, task.goal_pos, task.goal_neg, relaxed, deadline, successor=task.successor)

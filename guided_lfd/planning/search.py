@@ -18,7 +18,7 @@ from __future__ import annotations
 import heapq
 import itertools
 import time
-from typing import Sequence
+from typing import Callable, Sequence
 
 from guided_lfd.errors import SearchTimeout
 from guided_lfd.planning.grounding import GroundAction, GroundTask, bits
@@ -108,11 +108,14 @@ def astar(
     goal_neg: int,
     relaxed: RelaxedTask | None = None,
     deadline: float | None = None,
+    successor: Callable[[GroundAction, int], int] | None = None,
 ) -> list[GroundAction] | None:
     """An optimal plan from ``init`` with ``actions`` (None: proved unsolvable).
 
     ``relaxed`` is the LM-cut table over the same actions and goal (built
-    here if not given); action costs are its ``base_costs``.
+    here if not given; its first actions are ``actions``); action costs are its ``base_costs``.
+    ``successor``: the state an applicable action leads to, when it is more than adds and deletes
+    (an ADL task's :meth:`~guided_lfd.planning.grounding.GroundTask.successor`).
     Raises :class:`SearchTimeout` past ``deadline`` (a ``time.monotonic()`` value).
     """
     actions = list(actions)
@@ -147,7 +150,7 @@ def astar(
             pp = pre_pos[ai]
             if state & pp != pp or state & pre_neg[ai]:
                 continue
-            nxt = (state & keep[ai]) | add[ai]
+            nxt = (state & keep[ai]) | add[ai] if successor is None else successor(actions[ai], state)
             ng = g + cost[ai]
             if ng >= g_of.get(nxt, INF):
                 continue
