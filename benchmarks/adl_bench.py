@@ -22,7 +22,6 @@ from __future__ import annotations
 
 import argparse
 import csv
-import json
 import re
 import statistics
 import subprocess
@@ -31,6 +30,9 @@ import tempfile
 import time
 from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from plan_bench import guided_run  # noqa: E402  (the same guided-lfd process as the STRIPS comparison)
 
 ROOT = Path(__file__).resolve().parent.parent
 ADL = ROOT / "data" / "benchmarks" / "ipc-adl"
@@ -90,22 +92,8 @@ def run_fd(script: Path, domain: Path, problem: Path, limit: float) -> tuple[str
 
 def run_guided(domain: Path, problem: Path, limit: float) -> tuple[str, int | None, float, float | None]:
     """(status, plan cost, wall s, search s) of one `guided-lfd plan` process."""
-    exe = Path(sys.executable).with_name("guided-lfd")
-    cmd = [str(exe if exe.exists() else "guided-lfd"), "plan", str(domain), str(problem), "--json", "--quiet",
-           "--time-limit", f"{limit:g}"]
-    start = time.perf_counter()
-    try:
-        proc = subprocess.run(cmd, capture_output=True, text=True, timeout=limit + 30)
-    except subprocess.TimeoutExpired:
-        return "killed", None, time.perf_counter() - start, None
-    wall = time.perf_counter() - start
-    if proc.returncode == 20:
-        return "timeout", None, wall, None
-    try:
-        doc = json.loads(proc.stdout)
-    except json.JSONDecodeError:
-        return f"exit {proc.returncode}", None, wall, None
-    return doc["status"], doc.get("cost"), wall, doc.get("time_s")
+    status, doc, wall = guided_run(domain, problem, limit)
+    return status, None if doc is None else doc.get("cost"), wall, None if doc is None else doc.get("time_s")
 
 
 def run_task(domain: Path, problem: Path, limit: float, script: Path | None) -> dict:

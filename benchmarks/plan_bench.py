@@ -43,23 +43,31 @@ def _exe(name: str) -> str:
     return str(path) if path.exists() else name
 
 
-def run_guided(domain: Path, problem: Path, limit: float) -> tuple[str, int | None, float, float | None]:
-    """(status, plan length, wall s, search s) of one `guided-lfd plan` process."""
+def guided_run(domain: Path, problem: Path, limit: float) -> tuple[str, dict | None, float]:
+    """(status, the --json document when it solved, wall s) of one `guided-lfd plan` process."""
     cmd = [_exe("guided-lfd"), "plan", str(domain), str(problem), "--json", "--quiet", "--time-limit", f"{limit:g}"]
     start = time.perf_counter()
     try:
         proc = subprocess.run(cmd, capture_output=True, text=True, timeout=limit + 30)
     except subprocess.TimeoutExpired:
-        return "killed", None, time.perf_counter() - start, None
+        return "killed", None, time.perf_counter() - start
     wall = time.perf_counter() - start
     if proc.returncode == 20:
-        return "timeout", None, wall, None
+        return "timeout", None, wall
     try:
         doc = json.loads(proc.stdout)
     except json.JSONDecodeError:
-        return f"exit {proc.returncode}", None, wall, None
-    if doc["status"] != "solved":
-        return doc["status"], None, wall, doc.get("time_s")
+        return f"exit {proc.returncode}", None, wall
+    return doc["status"], doc, wall
+
+
+def run_guided(domain: Path, problem: Path, limit: float) -> tuple[str, int | None, float, float | None]:
+    """(status, plan length, wall s, search s) of one `guided-lfd plan` process."""
+    status, doc, wall = guided_run(domain, problem, limit)
+    if doc is None:
+        return status, None, wall, None
+    if status != "solved":
+        return status, None, wall, doc.get("time_s")
     return "solved", len(doc["plan"]), wall, doc.get("time_s")
 
 

@@ -19,49 +19,32 @@ from dataclasses import replace
 from typing import TYPE_CHECKING
 
 from guided_lfd.errors import OptionError
-from guided_lfd.excuse.space import MutexGroup, Semantics, build_space
+from guided_lfd.excuse.space import ChangeSpace
 from guided_lfd.excuse.status import ExcuseStatus
 from guided_lfd.excuse.strategies import BaselineSearch, SearchLimits
-from guided_lfd.planning.grounding import ground
 
 if TYPE_CHECKING:
-    from guided_lfd.excuse.engine import ExcuseReport, _Run
+    from guided_lfd.excuse.engine import ExcuseOptions, ExcuseReport, _Run
 
 #: The strategy every ADL task is searched with (see the module's docstring).
 ADL_STRATEGY = "baseline"
 
 
-def execute_adl(run: "_Run") -> "ExcuseReport":
-    """Ground, synthesise invariants, check solvability and search the minimal excuses of an ADL task."""
-    from guided_lfd.deadline import seconds_left
-    from guided_lfd.excuse.engine import MAX_EXCUSES, _steps, _verify, unachievable_goals
-    from guided_lfd.planning import find_plan
-
-    options = run.options
+def adl_options(options: "ExcuseOptions") -> "ExcuseOptions":
+    """The options an ADL task is searched with: the baseline strategy (``--slack`` needs the landmark one)."""
     if options.slack:
         raise OptionError(f"--slack {options.slack}: needs the landmark strategy, which plans STRIPS tasks only "
                           "(this domain uses ADL)")
-    run.options = replace(options, strategy=ADL_STRATEGY)
-    run._enter("grounding")
-    fixed = options.fixed_predicates(run.domain)
-    task = ground(run.domain, run.problem, fixed=fixed, deadline=run.deadline)
-    groups: list[MutexGroup] = []
-    refuted: list[str] = []
-    if options.semantics is Semantics.CONSISTENT and not task.satisfies_goal(task.init):
-        run._enter("invariant synthesis")
-        from guided_lfd.excuse.invariants import mutex_groups
+    return replace(options, strategy=ADL_STRATEGY)
 
-        groups = mutex_groups(options.invariants_from or run.domain, task, run.deadline, refuted)
-    run._enter("change space")
-    space = build_space(task, options.semantics, list(fixed), list(options.costs), groups)
-    run.space = space
-    stats = run.stats
-    stats.ground_atoms, stats.ground_actions = len(task.atoms), len(task.actions)
-    stats.changeable_atoms, stats.relevant_atoms = space.changeable.bit_count(), space.relevant_atoms.bit_count()
-    stats.relevant_actions, stats.invariant_groups = len(space.relevant_actions), len(space.groups)
-    stats.fixed_predicates = fixed
-    stats.invariants_refuted_by_goal = refuted or None
-    run.unachievable = unachievable_goals(task)
+
+def search_adl(run: "_Run", space: ChangeSpace) -> "ExcuseReport":
+    """Check solvability and search the minimal excuses of an ADL task prepared by the engine."""
+    from guided_lfd.deadline import seconds_left
+    from guided_lfd.excuse.engine import MAX_EXCUSES, _steps, _verify
+    from guided_lfd.planning import find_plan
+
+    options, task, stats = run.options, space.task, run.stats
     run._enter("already solvable?")
     plan0 = find_plan(task, search="astar-lmcut", time_limit_s=seconds_left(run.deadline, "already solvable?")).plan
     if plan0 is not None:

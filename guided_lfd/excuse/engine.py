@@ -421,10 +421,11 @@ class _Run:
     def execute(self) -> ExcuseReport:
         """Ground, build the change space, check solvability, search, and plan from each excuse."""
         options = self.options
-        if self.domain.is_adl or self.problem.goal_condition is not None:
-            from guided_lfd.excuse.adl import execute_adl
+        adl = self.domain.is_adl or self.problem.goal_condition is not None
+        if adl:
+            from guided_lfd.excuse.adl import adl_options
 
-            return execute_adl(self)
+            self.options = options = adl_options(options)
         self._enter("grounding")
         fixed = options.fixed_predicates(self.domain)
         prepared = prepare(self.domain, self.problem, options.semantics, fixed, options.costs,
@@ -438,6 +439,10 @@ class _Run:
         stats.fixed_predicates = fixed
         stats.invariants_refuted_by_goal = prepared.refuted or None
         self.unachievable = unachievable_goals(task)
+        if adl:
+            from guided_lfd.excuse.adl import search_adl
+
+            return search_adl(self, space)
         # Already solvable: no excuse needed.  The compiled relaxed task and the
         # oracle are built once here and handed to the search, which reuses the
         # oracle's memory of dead states.
