@@ -396,6 +396,9 @@ def evaluate(robot: Domain, problem: Problem, human: Domain, excuse: list[Change
              merged: Domain | None = None, nonminimal: list[Change] | None = None,
              bound: int = DEFAULT_EXPLORATION_BOUND) -> Evaluation:
     """All the paper's measures for the task (see the module docstring)."""
+    from guided_lfd.pddl.fit import refuse_adl
+
+    refuse_adl("evaluate", problem, robot, human, merged)
     reach = RobotReachability(robot, problem)
     sizes = predicted_sizes(human, problem, excuse, reach, nonminimal)
     misdirection = misdirected_guidance(human, robot, problem, excuse, bound, reach)

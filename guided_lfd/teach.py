@@ -29,7 +29,7 @@ from guided_lfd.excuse.change import Change, excuse_state
 from guided_lfd.excuse.engine import ExcuseOptions, check_option_names, describe_change, find_excuses
 from guided_lfd.excuse.status import ExcuseStatus
 from guided_lfd.io import json_document, write_text
-from guided_lfd.pddl.fit import check_model_fits
+from guided_lfd.pddl.fit import check_model_fits, refuse_adl
 from guided_lfd.pddl.model import Atom, Domain, Problem
 from guided_lfd.pddl.writer import domain_to_pddl
 from guided_lfd.planning.validation import PlanStep
@@ -510,6 +510,7 @@ def _prepare_session(robot: Domain, problem: Problem, demonstrator, out: Path, o
                      human: Domain | None) -> None:
     """Every check that refuses a session, before its folder is made (or a previous session's is cleared)."""
     simulated = demonstrator.human if isinstance(demonstrator, SimulatedHuman) else None
+    refuse_adl("teach", problem, robot, human, simulated)
     for model, option in ((human, "--human"), (simulated if simulated is not human else None, "--simulate")):
         if model is not None:
             check_human_model(model, problem)

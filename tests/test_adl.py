@@ -440,3 +440,20 @@ def test_adl_plans_validate_under_an_independent_validator(folder, name, tmp_pat
     plan.write_text("".join(a.name + "\n" for a in result.plan))
     report = PDDLValidator().validate(str(domain_path), str(folder_path / f"{name}.pddl"), str(plan))
     assert report.is_valid, report.status
+
+
+def test_teach_and_evaluate_refuse_adl_in_one_line_before_any_work(runner, app, tmp_path):
+    from guided_lfd.errors import UnsupportedFeatureError
+    from guided_lfd.evaluate import evaluate
+
+    domain = ADL / "receptacles" / "domain.pddl"
+    problem = ADL / "receptacles" / "problem.pddl"
+    session = tmp_path / "session"
+    result = runner.invoke(app, ["teach", str(domain), str(problem), "--simulate", str(domain), "-o", str(session)])
+    assert result.exit_code == 33 and not session.exists()
+    assert result.stderr.strip() == (f"{domain}: unsupported: teach does not handle ADL (conditional effects, "
+                                     "quantifiers, disjunctions, derived predicates) yet; plan, validate, excuse and "
+                                     "merge do")
+    robot, task = parse_task(domain, problem)
+    with pytest.raises(UnsupportedFeatureError, match="evaluate does not handle ADL"):
+        evaluate(robot, task, robot, [])

@@ -11,7 +11,7 @@ something else there, so it is refused (exit 34) before any work.
 from __future__ import annotations
 
 from guided_lfd.errors import MismatchError
-from guided_lfd.pddl.model import Domain, type_ancestors
+from guided_lfd.pddl.model import Domain, Problem, type_ancestors
 
 __all__ = ["check_model_fits"]
 
@@ -44,3 +44,20 @@ def check_model_fits(robot: Domain, model: Domain, option: str) -> None:
                 raise MismatchError(f"{option}: argument {k} of predicate {spelled} is of type {theirs} here and of "
                                     f"type {ours} in the robot's domain {robot.path}; expected the same or a related "
                                     "type", where)
+
+
+def refuse_adl(command: str, problem: Problem | None, *domains: Domain | None) -> None:
+    """Refuse (exit 33) a command that does not handle ADL yet, naming the first domain or problem that uses it."""
+    from guided_lfd.errors import Location, UnsupportedFeatureError
+
+    for domain in domains:
+        if domain is not None and domain.is_adl:
+            where = Location(domain.path)
+            break
+    else:
+        if problem is None or problem.goal_condition is None:
+            return
+        where = Location(problem.path)
+    raise UnsupportedFeatureError(
+        f"{command} does not handle ADL (conditional effects, quantifiers, disjunctions, derived predicates) yet; "
+        "plan, validate, excuse and merge do", where)
