@@ -29,23 +29,18 @@ from guided_lfd.planning.relaxation import RelaxedTask
 
 
 def _translator_task(domain: Domain, problem: Problem) -> Any:
-    """The translator's task for the model's domain and problem (written as PDDL and parsed back)."""
-    from fast_downward.translate.pddl_parser.parsing_functions import parse_task
-
-    from guided_lfd.pddl.adl_reader import _nested
-    from guided_lfd.pddl.source import SourceMap
-    from guided_lfd.pddl.writer import domain_to_pddl, problem_to_pddl
-
-    named = problem if problem.domain_name == domain.name else None
-    dtext = domain_to_pddl(domain)
-    ptext = problem_to_pddl(named or _renamed(problem, domain.name))
-    return parse_task(_nested(SourceMap(domain.path, dtext).define()), _nested(SourceMap(problem.path, ptext).define()))
-
-
-def _renamed(problem: Problem, domain_name: str) -> Problem:
+    """The translator's task for the model's domain and problem (written as PDDL and parsed back, as
+    :func:`guided_lfd.excuse.invariants.lifted_invariants` hands tasks to it)."""
     from dataclasses import replace
 
-    return replace(problem, domain_name=domain_name)
+    from fast_downward.translate.pddl_parser import lisp_parser, parsing_functions
+
+    from guided_lfd.pddl.writer import domain_to_pddl, problem_to_pddl
+
+    dtext = domain_to_pddl(domain)
+    ptext = problem_to_pddl(replace(problem, domain_name=domain.name))
+    return parsing_functions.parse_task(lisp_parser.parse_nested_list(dtext.splitlines(keepends=True)),
+                                        lisp_parser.parse_nested_list(ptext.splitlines(keepends=True)))
 
 
 def _changeable(task: Any, domain: Domain, problem: Problem, predicates: set[str]) -> None:
