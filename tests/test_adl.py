@@ -131,6 +131,7 @@ def test_every_ipc_adl_domain_reads_and_round_trips_through_the_writer():
     ("object-among-types.pddl", "object-among-types-problem.pddl"),
     ("domain.pddl", "digit-names.pddl"),
     ("domain.pddl", "object-called-domain.pddl"),
+    ("type-called-domain.pddl", "type-called-domain-problem.pddl"),
 ])
 def test_valid_pddl_tarski_refuses_reads_and_plans(domain, problem):
     gaps = ADL / "gaps"

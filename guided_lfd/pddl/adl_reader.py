@@ -205,6 +205,8 @@ def read_domain(src: SourceMap, path: str) -> Domain:
             raise PddlSemanticError(f"type '{t.name}' is declared twice in :types, with parents "
                                     f"'{types[t.name]}' and '{parent}'", src.locate_second(t.name))
         types[t.name] = parent
+    for parent in [p for p in types.values() if p is not None and p not in types]:
+        types.setdefault(parent, "object")  # a parent only named after '-' is a type (as Fast Downward reads it)
     predicates = {p.name: Predicate(p.name, _variables(p.arguments)) for p in fd_predicates if p.name != EQUALITY}
     functions = {f.name: Predicate(f.name, _variables(f.arguments)) for f in fd_functions}
     actions = [_action(act) for act in fd_actions]
