@@ -18,6 +18,7 @@ from guided_lfd.excuse.engine import ExcuseOptions, ExcuseReport, find_excuses
 from guided_lfd.excuse.progress import Progress as SearchProgress
 from guided_lfd.excuse.space import Semantics
 from guided_lfd.excuse.strategies import DEFAULT_STRATEGY, STRATEGIES
+from guided_lfd.excuse.verify import MAX_VERIFIED_SETS
 from guided_lfd.io import write_text
 from guided_lfd.pddl.fit import check_model_fits
 from guided_lfd.pddl.reader import parse_domain, parse_task
@@ -89,6 +90,11 @@ def excuse(
                                  help="Also write the problem with the excuse state as its initial state to FILE "
                                       "('-' = stdout).")
     ] = None,
+    verify: Annotated[
+        bool, typer.Option("--verify", help="Re-verify the minimum: enumerate every cheaper change set and refuse "
+                                            "each with the checker's own invariants and another planner (up to "
+                                            f"{MAX_VERIFIED_SETS} sets; statistics.minimality says how it went).")
+    ] = False,
     svg: SvgOption = None,
     dot: DotOption = None,
     output: OutputOption = "-",
@@ -128,6 +134,7 @@ def excuse(
             all_minimal=all_minimal or prefer is not None, max_size=max_size, time_limit=time_limit, slack=slack or 0,
             invariants_from=parse_domain(invariants_from) if invariants_from else None,
             fixed_from=parse_domain(fixed_from) if fixed_from else None, started=started,
+            verify=verify,
         )
         human_domain = parse_domain(human) if human else None
         if human_domain is not None:

@@ -20,6 +20,7 @@ from conftest import BLOCKS, ROOT
 from guided_lfd.errors import EXIT_TIME_LIMIT
 from guided_lfd.excuse import strategies
 from guided_lfd.excuse.check import check_excuse
+from guided_lfd.excuse.laws import derive_laws
 from guided_lfd.excuse.engine import ExcuseOptions, ExcuseReport, find_excuses
 from guided_lfd.excuse.progress import Progress, ProgressMeter
 from guided_lfd.excuse.status import ExcuseStatus
@@ -56,7 +57,7 @@ def assert_checked(report: ExcuseReport, domain: Domain, problem: Problem, opts:
     """The best candidate passes the independent checker every printed excuse passes."""
     best = report.best_candidate
     assert best is not None
-    groups = [(frozenset(group_atoms), exactly) for group_atoms, exactly in report.checked_groups]
+    groups = derive_laws(domain, problem) if report.semantics.value == "consistent" else None
     assert check_excuse(domain, problem, best.changes, best.plan, groups, opts.fixed_predicates(domain),
                         opts.costs, best.cost) == []
 

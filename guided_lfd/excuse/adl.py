@@ -48,7 +48,7 @@ def search_adl(run: "_Run", space: ChangeSpace) -> "ExcuseReport":
     run._enter("already solvable?")
     plan0 = find_plan(task, search="astar-lmcut", time_limit_s=seconds_left(run.deadline, "already solvable?")).plan
     if plan0 is not None:
-        _verify(run.domain, run.problem, [], plan0, space)
+        _verify(run.domain, run.problem, [], plan0)
         run.robot_plan_cost = sum(a.cost for a in plan0)
         return run.report(ExcuseStatus.ALREADY_SOLVABLE, _steps(plan0), candidates=0, planner_calls=1)
     run._enter("searching")

@@ -10,7 +10,8 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from guided_lfd.excuse.change import Change, excuse_state
-from guided_lfd.pddl.model import Atom, Domain, Problem
+from guided_lfd.excuse.laws import WorldLaws
+from guided_lfd.pddl.model import Domain, Problem
 from guided_lfd.planning.validation import PlanStep, validate_plan
 
 __all__ = ["check_excuse", "change_cost"]
@@ -40,16 +41,15 @@ def check_excuse(
     problem: Problem,
     changes: list[Change],
     plan: list[PlanStep],
-    groups: list[tuple[frozenset[Atom], bool]] | None = None,
+    laws: WorldLaws | None = None,
     fixed: Sequence[str] = (),
     costs: Sequence[str] | None = None,
     cost: int | None = None,
 ) -> list[str]:
     """Reasons why ``changes`` with ``plan`` is *not* a valid excuse (empty = valid).
 
-    ``groups`` are (atoms, exactly_one) invariants the excuse state must keep
-    (consistent semantics), checked as stated: at most one true atom, and
-    exactly one where ``exactly_one`` is set.  No change may touch a ``fixed``
+    ``laws`` are the invariants the excuse state must keep (consistent semantics), derived by the checker
+    itself (:func:`guided_lfd.excuse.laws.derive_laws`), not the engine's groups.  No change may touch a ``fixed``
     predicate; with ``costs`` (the ``--cost`` specifications), ``cost`` must
     be what they give the changes (:func:`change_cost`).
     """
@@ -80,9 +80,6 @@ def check_excuse(
             problems.append(f"plan step {failure.index} {failure.step} is not applicable in the excuse state")
         else:
             problems.append("the plan does not reach the goal from the excuse state")
-    for members, exactly_one in groups or []:
-        count = len(members & state)
-        if count > 1 or (exactly_one and count == 0):
-            names = " ".join(str(a) for a in sorted(members))
-            problems.append(f"the excuse state breaks the invariant over {names} ({count} true)")
+    if laws is not None:
+        problems += [f"the excuse state breaks the invariant {law}" for law in laws.broken(frozenset(state))]
     return problems

@@ -19,6 +19,7 @@ from guided_lfd.deadline import checked_time_limit, deadline_after, linger, ling
 from guided_lfd.errors import SearchTimeout
 from guided_lfd.excuse.change import Change, excuse_state
 from guided_lfd.excuse.check import check_excuse
+from guided_lfd.excuse.laws import WorldLaws, derive_laws
 from guided_lfd.excuse import strategies
 from guided_lfd.excuse.lmcut import RelaxedExcuseTask
 from guided_lfd.excuse.prepare import prepare
@@ -66,6 +67,8 @@ class ExcuseOptions:
     #: ``time.monotonic()`` when the run started (the time limit counts from
     #: it: a command line starts it before reading its files); None = now.
     started: float | None = None
+    #: Re-verify the minimum by enumerating every cheaper change set (:mod:`guided_lfd.excuse.verify`).
+    verify: bool = False
 
     def __post_init__(self) -> None:
         from guided_lfd.errors import OptionError
@@ -139,7 +142,6 @@ class ExcuseReport:
     unachievable_goals: list[Literal]
     invariant_groups: list[MutexGroup]
     robot_plan: list[PlanStep] | None = None  # when the task is already solvable
-    checked_groups: list[tuple[frozenset[Atom], bool]] = field(default_factory=list)
     robot_plan_cost: int | None = None  # the cost of ``robot_plan`` (see Excuse.plan_cost)
     #: Why the first excuse was chosen among the minimal ones (:func:`guided_lfd.excuse.preference.apply_preference`).
     preference: str | None = None
@@ -329,7 +331,10 @@ def find_excuses(
     gc.disable()
     try:
         with watchdog(deadline, "excuse search"):
-            return run.execute()
+            report = run.execute()
+            if options.verify and report.status is ExcuseStatus.FOUND and not report.statistics.incomplete:
+                run.verify_minimality(report)
+            return report
     except SearchTimeout:
         return run.timed_out()
     finally:
@@ -358,6 +363,7 @@ class _Run:
         self.unachievable: list[Literal] = []
         self.robot_plan_cost: int | None = None
         self.candidate: Excuse | None = None  # the probe's excuse, checked
+        self._laws: WorldLaws | None = None
         self.candidate_weight = 0
 
     def _enter(self, phase: str) -> None:
@@ -373,11 +379,10 @@ class _Run:
         self.stats.time_s = round(time.monotonic() - self.start, 4)
         space = self.space
         groups = space.groups if space is not None else []
-        checked = _group_atoms(space) if space is not None else []
         robot_cost = self.robot_plan_cost if robot_plan is not None else None
         candidate = self.candidate if status is ExcuseStatus.TIMEOUT else None
         return ExcuseReport(status, sorted(self.excuses, key=_excuse_order), self.options.semantics,
-                            self.options.strategy, self.stats, self.unachievable, groups, robot_plan, checked,
+                            self.options.strategy, self.stats, self.unachievable, groups, robot_plan,
                             robot_cost, domain=self.domain, problem=self.problem, best_candidate=candidate,
                             unit_costs=space is None or not space.costs, max_size=self.options.max_size)
 
@@ -414,9 +419,35 @@ class _Run:
         space = self.space
         assert space is not None
         change_list = _changes_of(space.task, changes)
-        _verify(self.domain, self.problem, change_list, plan, space, self.options, space.cost(changes))
+        _verify(self.domain, self.problem, change_list, plan, self.laws(), self.options, space.cost(changes))
         return Excuse(change_list, space.cost(changes), excuse_state(self.problem.init, change_list), _steps(plan),
                       optimal, sum(a.cost for a in plan))
+
+    def laws(self) -> WorldLaws | None:
+        """The checker's own invariants for the consistent semantics, derived once per run."""
+        if self.options.semantics is not Semantics.CONSISTENT:
+            return None
+        if self._laws is None:
+            remaining = 300.0 if self.deadline is None else max(1.0, self.deadline - time.monotonic())
+            self._laws = derive_laws(self.options.invariants_from or self.domain, self.problem, remaining)
+        return self._laws
+
+    def verify_minimality(self, report: ExcuseReport) -> None:
+        """``--verify``: no cheaper change set is an excuse, by enumeration with the checker's own laws and
+        another planner; the statistics say how it went.  A cheaper excuse is a bug, refused as one."""
+        from guided_lfd.excuse.verify import verify_minimal
+
+        fixed = self.options.fixed_predicates(self.domain)
+        try:
+            found = verify_minimal(self.domain, self.problem, report.excuses[0].cost, self.laws(), fixed,
+                                   self.options.costs, self.options.max_size, self.deadline)
+        except SearchTimeout:
+            report.statistics.minimality = "timeout"
+            return
+        report.statistics.minimality, report.statistics.minimality_sets = found.outcome, found.sets
+        if found.smaller is not None:
+            raise RuntimeError("internal check failed: the cheaper change set " + " ".join(map(str, found.smaller))
+                               + " is an excuse too")
 
     def execute(self) -> ExcuseReport:
         """Ground, build the change space, check solvability, search, and plan from each excuse."""
@@ -460,7 +491,7 @@ class _Run:
             self._enter("robot plan")
             plan, _ = _robot_plan(task, space, oracle, task.init, plan0, options.optimal_plans, self.deadline,
                                   robot_plan_deadline(self.start))
-            _verify(self.domain, self.problem, [], plan, space)
+            _verify(self.domain, self.problem, [], plan)
             self.robot_plan_cost = sum(a.cost for a in plan)
             return self.report(ExcuseStatus.ALREADY_SOLVABLE, _steps(plan), candidates=0, planner_calls=1)
         return self.search(task, space, oracle, relaxed)
@@ -531,22 +562,16 @@ def _excuse_order(e: Excuse) -> tuple:
     return (e.cost, e.size, [str(c) for c in e.changes])
 
 
-def _group_atoms(space: ChangeSpace) -> list[tuple[frozenset[Atom], bool]]:
-    """The invariant groups as atom sets, for the independent checker."""
-    return [(frozenset(space.task.atoms[i] for i in bits(g.mask)), g.exactly_one) for g in space.groups]
-
-
 def _verify(domain: Domain, problem: Problem, changes: list[Change], plan: list[GroundAction],
-            space: ChangeSpace, options: ExcuseOptions | None = None, cost: int | None = None) -> None:
+            laws: WorldLaws | None = None, options: ExcuseOptions | None = None, cost: int | None = None) -> None:
     """Refuse to return an excuse the independent checker rejects (a bug); ``cost`` is the search's, which the
-    checker recomputes from the options' ``--cost`` specifications."""
+    checker recomputes from the options' ``--cost`` specifications, ``laws`` the checker's own invariants."""
     steps = [PlanStep(a.schema, a.args) for a in plan]
-    groups = _group_atoms(space)
     if not changes:
         validated(domain, problem, steps, "the robot plan")
         return
     fixed = options.fixed_predicates(domain) if options is not None else ()
     costs = options.costs if options is not None else None
-    problems = check_excuse(domain, problem, changes, steps, groups, fixed, costs, cost)
+    problems = check_excuse(domain, problem, changes, steps, laws, fixed, costs, cost)
     if problems:
         raise RuntimeError("internal check failed for excuse " + " ".join(map(str, changes)) + ": " + "; ".join(problems))

@@ -43,6 +43,9 @@ class ExcuseStatistics:
     incomplete: bool | None = None  # --all ran out of time: the excuses listed are minimal, maybe not all
     truncated: bool | None = None  # --all stopped at ``max_excuses``: more minimal excuses may exist
     max_excuses: int | None = None  # the cap --all stopped at (set with ``truncated``)
+    #: --verify: 'verified' (every cheaper change set enumerated and refused), 'too-many' or 'timeout'.
+    minimality: str | None = None
+    minimality_sets: int | None = None  # the cheaper change sets --verify counted
     time_s: float | None = None  # the whole run
 
     def to_dict(self) -> dict[str, Any]:

@@ -1,0 +1,5 @@
+(define (problem deliver)
+  (:domain courier)
+  (:objects hall kitchen office - room box letter - parcel)
+  (:init (robot-in hall) (parcel-in box hall) (parcel-in letter kitchen) (free))
+  (:goal (and (parcel-in box office) (parcel-in letter office))))
