@@ -307,6 +307,10 @@ def _scene(problem: Problem, domain: Domain):
     return Scene(positions=positions, types=dict(objects), spellings={**domain.spellings, **problem.spellings})
 
 
+#: The frame rates a simulated demonstration is rendered at (the VR recorder's are 15-120 Hz).
+MIN_RATE_HZ, MAX_RATE_HZ = 1.0, 1000.0
+
+
 @dataclass
 class SimulatedHuman:
     """A demonstrator simulated by a human model: its shortest plan to the request, rendered as a hand trace."""
@@ -315,6 +319,18 @@ class SimulatedHuman:
     rate_hz: float = 90.0
     seed: int = 0
     robot: Domain | None = None  # whose hand facts the trace declares (else the human model's)
+
+    def __post_init__(self) -> None:
+        from guided_lfd.errors import OptionError
+
+        if not isinstance(self.human, Domain):
+            raise OptionError(f"SimulatedHuman: human: expected a Domain, got {type(self.human).__name__}")
+        rate = self.rate_hz
+        if isinstance(rate, bool) or not isinstance(rate, (int, float)) or not MIN_RATE_HZ <= rate <= MAX_RATE_HZ:
+            raise OptionError(f"SimulatedHuman: rate_hz {rate!r}: expected a frame rate from {MIN_RATE_HZ:g} to "
+                              f"{MAX_RATE_HZ:g} Hz")
+        if isinstance(self.seed, bool) or not isinstance(self.seed, int):
+            raise OptionError(f"SimulatedHuman: seed {self.seed!r}: expected a whole number")
 
     def demonstrate(self, folder: Path, state: frozenset[Atom], request: list[Change],
                     problem: Problem) -> tuple[Path, Path] | None:
@@ -418,12 +434,26 @@ def teach(robot: Domain, problem: Problem, demonstrator: Demonstrator, out: Path
     ``out/robot.pddl`` is the robot's domain after each round;
     ``session.json`` and ``session.md`` are written by the caller.
     """
+    out = _session_path(out)
+    if isinstance(max_rounds, bool) or not isinstance(max_rounds, int) or max_rounds < 1:
+        from guided_lfd.errors import OptionError
+
+        raise OptionError(f"max_rounds {max_rounds!r}: expected a whole number of rounds >= 1")
     was_there = out.exists()
     options = options or ExcuseOptions()
     _prepare_session(robot, problem, demonstrator, out, options, human)
     with replacing_previous_session(out, was_there):
         return _rounds(robot, problem, demonstrator, out, max_rounds, options, human, prefer, redundancy, deadline,
                        on_request)
+
+
+def _session_path(out: object) -> Path:
+    """``out`` as a path (a library caller may pass a string), refused as OptionError if it is neither."""
+    if isinstance(out, (str, Path)) and str(out):
+        return Path(out)
+    from guided_lfd.errors import OptionError
+
+    raise OptionError(f"out {out!r}: expected the session folder's path")
 
 
 def _rounds(robot: Domain, problem: Problem, demonstrator: Demonstrator, out: Path, max_rounds: int,

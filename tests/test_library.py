@@ -212,3 +212,49 @@ def test_find_excuses_in_a_loop_and_in_threads_leaves_the_process_as_it_was():
         thread.join(60)
     assert results == [expected] * 40
     assert gc.isenabled() and signal.getsignal(signal.SIGALRM) == handler and not deadline.lingering()
+
+
+@pytest.mark.parametrize("call, message", [
+    (lambda robot, task, human, tmp: guided_lfd_teach(robot, task, human, tmp, max_rounds="3"),
+     "max_rounds '3': expected a whole number of rounds >= 1"),
+    (lambda robot, task, human, tmp: guided_lfd_teach(robot, task, human, tmp, max_rounds=0),
+     "max_rounds 0: expected a whole number of rounds >= 1"),
+    (lambda robot, task, human, tmp: guided_lfd_teach(robot, task, human, 3),
+     "out 3: expected the session folder's path"),
+    (lambda robot, task, human, tmp: guided_lfd_teach(robot, task, human, ""),
+     "out '': expected the session folder's path"),
+])
+def test_bad_teach_arguments_are_option_errors(tmp_path, call, message):
+    """#25 adversarial round: teach(max_rounds='3') and teach(out=3) escaped as TypeError/AttributeError."""
+    from guided_lfd.errors import OptionError
+    from guided_lfd.teach import SimulatedHuman
+
+    robot, task = read_task(*kitchen(1))
+    human, _ = read_task(*kitchen(1, "human"))
+    with pytest.raises(OptionError, match=re.escape(message)):
+        call(robot, task, SimulatedHuman(human), tmp_path / "session")
+    assert not (tmp_path / "session").exists()
+
+
+def guided_lfd_teach(*args, **kwargs):
+    from guided_lfd.teach import teach
+
+    return teach(*args, **kwargs)
+
+
+@pytest.mark.parametrize("kwargs, message", [
+    ({"rate_hz": 0}, "rate_hz 0: expected a frame rate from 1 to 1000 Hz"),
+    ({"rate_hz": 1e9}, "rate_hz 1000000000.0: expected a frame rate from 1 to 1000 Hz"),
+    ({"rate_hz": float("nan")}, "rate_hz nan: expected a frame rate from 1 to 1000 Hz"),
+    ({"rate_hz": "90"}, "rate_hz '90': expected a frame rate from 1 to 1000 Hz"),
+    ({"seed": 1.5}, "seed 1.5: expected a whole number"),
+])
+def test_a_simulated_human_refuses_a_frame_rate_it_cannot_render(kwargs, message):
+    """#25 adversarial round: SimulatedHuman(rate_hz=0) or 1e9 Hz escaped as internal errors in the middle of a
+    session, after its folder was made."""
+    from guided_lfd.errors import OptionError
+    from guided_lfd.teach import SimulatedHuman
+
+    human, _ = read_task(*kitchen(1, "human"))
+    with pytest.raises(OptionError, match=re.escape(message)):
+        SimulatedHuman(human, **kwargs)
