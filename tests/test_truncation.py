@@ -51,3 +51,18 @@ def test_a_search_the_time_limit_ended_says_the_list_may_not_be_all():
     assert cut_short(report) == ["the time limit ended the search: the excuses listed are minimal, but maybe not "
                                  "all of them"]
 
+
+
+SLACK_TASK = [str(DATA / "many-excuses-slack" / "domain.pddl"), str(DATA / "many-excuses-slack" / "problem.pddl")]
+
+
+def test_slack_without_a_time_limit_stops_at_the_cap_and_says_so(runner, app, monkeypatch):
+    """#25: --all --slack lists the minimal excuses and the ones within the slack; the cap holds for both and
+    the warning speaks of the slack, not of minimal excuses."""
+    report = find_excuses(*parse_task(*SLACK_TASK), ExcuseOptions(all_minimal=True, slack=1))
+    assert sorted(e.size for e in report.excuses) == [1] * 3 + [2] * 15 and report.statistics.truncated is None
+    monkeypatch.setattr(engine, "MAX_EXCUSES", 10)
+    doc = runner.invoke(app, ["excuse", *SLACK_TASK, "--all", "--slack", "1", "--json"])
+    assert doc.exit_code == 0
+    assert len(json.loads(doc.stdout)["alternatives"]) == 9
+    assert "warning: --all stopped at 10 excuses: more excuses within --slack 1 may exist" in doc.stderr

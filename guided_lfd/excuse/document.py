@@ -167,7 +167,8 @@ def cut_short(report: ExcuseReport) -> list[str]:
     """Why the excuses listed may not be every one asked for (``--all`` at its cap or out of time), if so."""
     stats, out = report.statistics, []
     if stats.truncated:
-        out.append(f"--all stopped at {stats.max_excuses:,} excuses: more minimal excuses may exist")
+        more = f"more excuses within --slack {report.slack}" if report.slack else "more minimal excuses"
+        out.append(f"--all stopped at {stats.max_excuses:,} excuses: {more} may exist")
     if stats.incomplete:
         out.append("the time limit ended the search: the excuses listed are minimal, but maybe not all of them")
     return out

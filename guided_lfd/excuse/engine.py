@@ -154,6 +154,8 @@ class ExcuseReport:
     unit_costs: bool = True
     #: The run's ``max_size`` (a lower bound speaks of the excuses within it).
     max_size: int | None = None
+    #: ``--slack`` the run had (its list holds excuses up to this much costlier than the minimum).
+    slack: int = 0
 
     @property
     def excuse(self) -> Excuse | None:
@@ -384,7 +386,8 @@ class _Run:
         return ExcuseReport(status, sorted(self.excuses, key=_excuse_order), self.options.semantics,
                             self.options.strategy, self.stats, self.unachievable, groups, robot_plan,
                             robot_cost, domain=self.domain, problem=self.problem, best_candidate=candidate,
-                            unit_costs=space is None or not space.costs, max_size=self.options.max_size)
+                            unit_costs=space is None or not space.costs, max_size=self.options.max_size,
+                            slack=self.options.slack)
 
     def timed_out(self) -> ExcuseReport:
         """The report when the time limit ended the run: excuses completed so far stay."""

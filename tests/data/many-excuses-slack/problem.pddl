@@ -1,0 +1,5 @@
+(define (problem gate2-6)
+  (:domain gate2)
+  (:objects k1 k2 k3 - key p1 p2 p3 p4 p5 p6 - part)
+  (:init)
+  (:goal (open)))
