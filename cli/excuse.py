@@ -79,7 +79,9 @@ def excuse(
                                       "demonstration (the --human model's shortest plan to it) is shortest.")
     ] = None,
     human: Annotated[
-        str | None, typer.Option("--human", metavar="DOMAIN", help="The human model --prefer predicts with.")
+        str | None, typer.Option("--human", metavar="DOMAIN",
+                                 help="The human model: the excuse changes only what its actions change (as with "
+                                      "--fixed-from, which wins if given), and --prefer predicts with it.")
     ] = None,
     slack: Annotated[
         int | None, typer.Option("--slack", metavar="K", help="With --all or --prefer: also the excuses up to K "
@@ -90,6 +92,12 @@ def excuse(
                                  help="Also write the problem with the excuse state as its initial state to FILE "
                                       "('-' = stdout).")
     ] = None,
+    change_structure: Annotated[
+        bool, typer.Option("--change-structure",
+                           help="Let the excuse change the world's structure: the kinds of things and fixed graphs "
+                                "(adjacency, floors) that no action changes, held fixed by default unless --fixed-from "
+                                "or --human says what can change.")
+    ] = False,
     verify: Annotated[
         bool, typer.Option("--verify", help="Re-verify the minimum: enumerate every cheaper change set and refuse "
                                             "each with the checker's own invariants and another planner (up to "
@@ -111,8 +119,6 @@ def excuse(
     """
     if prefer not in (None, "demonstration"):
         raise errors.OptionError(f"--prefer {prefer}: expected 'demonstration'")
-    if human and not prefer:
-        raise errors.OptionError("--human: the human model is for --prefer demonstration; expected both")
     if prefer and not human:
         raise errors.OptionError("--prefer demonstration: needs the human model (--human DOMAIN)")
     if slack and not (all_minimal or prefer):
@@ -134,11 +140,13 @@ def excuse(
             all_minimal=all_minimal or prefer is not None, max_size=max_size, time_limit=time_limit, slack=slack or 0,
             invariants_from=parse_domain(invariants_from) if invariants_from else None,
             fixed_from=parse_domain(fixed_from) if fixed_from else None, started=started,
-            verify=verify,
+            verify=verify, change_structure=change_structure,
         )
         human_domain = parse_domain(human) if human else None
         if human_domain is not None:
             check_model_fits(dom, human_domain, "--human")
+            if options.fixed_from is None:  # what the human can change decides what the excuse may change
+                options.fixed_from = human_domain
     ui.reading_warnings(dom, options.invariants_from, options.fixed_from)
     report = _run(dom, prob, options)
     if prefer and human_domain is not None and report.excuses:

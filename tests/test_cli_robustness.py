@@ -654,7 +654,7 @@ def _baseline_under_outside_cap(tmp_path, interrupt_after: float | None):
 
     start = time.monotonic()
     proc = subprocess.Popen([*cli_command(), "excuse", str(robot), task.problem_file, "--strategy", "baseline",
-                             "--time-limit", "60", "--quiet"], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                             "--change-structure", "--time-limit", "60", "--quiet"], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                             text=True, preexec_fn=cap)
     if interrupt_after is not None:
         time.sleep(interrupt_after)

@@ -190,7 +190,8 @@ def excuse_checker(domain, problem, groups):
     """(ground atoms, is_excuse(change atoms)): an independent BFS and consistency check on each excuse state."""
     from guided_lfd.planning.grounding import ground_atoms
 
-    atoms = ground_atoms(domain, problem)
+    # What the default options hold fixed (the world's structure) is no change set the search may try.
+    atoms = ground_atoms(domain, problem, skip=set(ExcuseOptions().fixed_predicates(domain, problem)))
     ground_actions = []
     for act in domain.actions:
         choices = [OBJECTS] * len(act.params)

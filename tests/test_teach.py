@@ -251,10 +251,15 @@ def test_the_time_limit_bounds_the_whole_session(runner, app, tmp_path):
     assert time.monotonic() - start < 5
 
 
-def test_the_human_model_is_for_the_preference_only(runner, app):
+def test_the_human_model_decides_what_the_excuse_may_change_without_prefer(runner, app):
+    """#28: excuse --human alone holds fixed what no action of the human changes (as teach does), not the
+    world's structure the robot's domain suggests; it was refused without --prefer (37)."""
     robot, problem = kitchen(2)
-    result = runner.invoke(app, ["excuse", robot, problem, "--human", HUMAN[2]])
-    assert result.exit_code == 37 and "--prefer demonstration" in result.stderr
+    result = runner.invoke(app, ["excuse", robot, problem, "--human", HUMAN[2], "--json"])
+    assert result.exit_code == 0, result.stderr
+    doc = json.loads(result.stdout)
+    assert [c["atom"] for c in doc["excuse"]["changes"]] == ["(clear pinkdrawer)"]
+    assert doc["statistics"]["fixed_predicates"] == ["graspable"] and "structure_held" not in doc["statistics"]
 
 
 

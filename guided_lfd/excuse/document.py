@@ -22,8 +22,16 @@ __all__ = ["candidate_text", "excuse_document", "excuse_summary", "excuse_text",
 def excuse_summary(report: ExcuseReport, spellings: dict[str, str]) -> str:
     """Why no excuse is given, in one line (empty when one is)."""
     if report.status is ExcuseStatus.NONE:
-        fixed = report.statistics.fixed_predicates or []
+        stats = report.statistics
+        structure = list(stats.structure_held or {})
+        if stats.structural_excuse:
+            return (f"no excuse keeps the world's structure ({', '.join(structure)} held fixed: kinds of things and "
+                    f"fixed graphs no action changes); only one that changes it exists: "
+                    f"{' '.join(stats.structural_excuse)} (--change-structure allows it)")
+        fixed = [p for p in stats.fixed_predicates or [] if p not in structure]
         while_fixed = f" with {', '.join(fixed)} held fixed" if fixed else ""
+        if structure:
+            while_fixed += f"{' and' if fixed else ' with'} the world's structure ({', '.join(structure)}) kept"
         if report.unachievable_goals:
             goals = ", ".join(str(g) for g in report.unachievable_goals)
             return (f"no excuse exists: no robot skill achieves {goals}{while_fixed}, and no change of the initial "

@@ -69,6 +69,9 @@ class ExcuseOptions:
     started: float | None = None
     #: Re-verify the minimum by enumerating every cheaper change set (:mod:`guided_lfd.excuse.verify`).
     verify: bool = False
+    #: Let the excuse change the world's structure (kinds of things, fixed graphs: see
+    #: :mod:`guided_lfd.excuse.structure`), held fixed by default when no ``fixed_from`` model says what can change.
+    change_structure: bool = False
 
     def __post_init__(self) -> None:
         from guided_lfd.errors import OptionError
@@ -94,13 +97,27 @@ class ExcuseOptions:
                 raise OptionError(f"{name}: expected a Domain (guided_lfd.read_task or parse_domain), got "
                                   f"{type(getattr(self, name)).__name__}")
 
-    def fixed_predicates(self, domain: Domain) -> list[str]:
-        """``fixed`` plus the predicates no action of ``fixed_from`` changes (that ``domain`` has)."""
+    def fixed_predicates(self, domain: Domain, problem: Problem | None = None) -> list[str]:
+        """``fixed`` plus the predicates no action of ``fixed_from`` changes (that ``domain`` has), and, given the
+        ``problem``, the world's structure (:meth:`held_structure`)."""
         out = list(self.fixed)
         if self.fixed_from is not None:
             static = set(self.fixed_from.predicates) - self.fixed_from.fluent_predicates()
             out += sorted(p for p in static if p in domain.predicates and p not in out)
+        if problem is not None:
+            out += [p for p in self.held_structure(domain, problem) if p not in out]
         return out
+
+    def held_structure(self, domain: Domain, problem: Problem) -> dict[str, str]:
+        """The structural predicates held fixed by default, each with why: none with ``change_structure`` or a
+        ``fixed_from`` model (it says what can change); a predicate given a ``--cost`` stays changeable."""
+        if self.change_structure or self.fixed_from is not None:
+            return {}
+        from guided_lfd.excuse.structure import structural_predicates
+
+        priced = {spec.rpartition("=")[0].strip().lstrip("(").split(" ")[0].lower() for spec in self.costs}
+        models = [self.invariants_from] if self.invariants_from is not None else []
+        return {p: why for p, why in structural_predicates(domain, problem, models).items() if p not in priced}
 
 
 @dataclass
@@ -440,7 +457,7 @@ class _Run:
         another planner; the statistics say how it went.  A cheaper excuse is a bug, refused as one."""
         from guided_lfd.excuse.verify import verify_minimal
 
-        fixed = self.options.fixed_predicates(self.domain)
+        fixed = self.options.fixed_predicates(self.domain, self.problem)
         try:
             found = verify_minimal(self.domain, self.problem, report.excuses[0].cost, self.laws(), fixed,
                                    self.options.costs, self.options.max_size, self.deadline)
@@ -461,7 +478,7 @@ class _Run:
 
             self.options = options = adl_options(options)
         self._enter("grounding")
-        fixed = options.fixed_predicates(self.domain)
+        fixed = options.fixed_predicates(self.domain, self.problem)
         prepared = prepare(self.domain, self.problem, options.semantics, fixed, options.costs,
                            options.invariants_from, self.deadline, self._enter)
         task, space, oracle = prepared.task, prepared.space, prepared.oracle
@@ -471,6 +488,7 @@ class _Run:
         stats.changeable_atoms, stats.relevant_atoms = space.changeable.bit_count(), space.relevant_atoms.bit_count()
         stats.relevant_actions, stats.invariant_groups = len(space.relevant_actions), len(space.groups)
         stats.fixed_predicates = fixed
+        stats.structure_held = options.held_structure(self.domain, self.problem) or None
         stats.invariants_refuted_by_goal = prepared.refuted or None
         self.unachievable = unachievable_goals(task)
         if adl:
@@ -529,9 +547,23 @@ class _Run:
                 self.stats.incomplete = True
             else:
                 self._bound_reached(space, outcome.lower_bound)
+        if status is ExcuseStatus.NONE and self.stats.structure_held:
+            self._structure_in_the_way()
         if status is ExcuseStatus.NONE and space.groups and not self.unachievable:
             self._invariants_in_the_way(task, space)
         return self.report(status)
+
+    def _structure_in_the_way(self) -> None:
+        """No excuse keeps the world's structure: the excuse that changes it, if there is one, goes into the
+        statistics (the answer names it and ``--change-structure``)."""
+        changing = replace(self.options, change_structure=True, all_minimal=False, optimal_plans=False,
+                           verify=False, started=self.start)
+        try:
+            report = find_excuses(self.domain, self.problem, changing)
+        except SearchTimeout:
+            return
+        if report.excuse is not None:
+            self.stats.structural_excuse = [str(c) for c in report.excuse.changes]
 
     def _bound_reached(self, space: ChangeSpace, weight: int) -> None:
         """A timed-out search: its proven lower bound as a cost; whether the probe's excuse meets it."""
@@ -573,7 +605,7 @@ def _verify(domain: Domain, problem: Problem, changes: list[Change], plan: list[
     if not changes:
         validated(domain, problem, steps, "the robot plan")
         return
-    fixed = options.fixed_predicates(domain) if options is not None else ()
+    fixed = options.fixed_predicates(domain, problem) if options is not None else ()
     costs = options.costs if options is not None else None
     problems = check_excuse(domain, problem, changes, steps, laws, fixed, costs, cost)
     if problems:

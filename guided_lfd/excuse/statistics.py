@@ -24,11 +24,15 @@ class ExcuseStatistics:
     relevant_actions: int | None = None
     invariant_groups: int | None = None
     fixed_predicates: list[str] | None = None
+    #: The world's structure held fixed by default (in ``fixed_predicates`` too), each predicate with why.
+    structure_held: dict[str, str] | None = None
     #: Invariants left out of the consistent semantics because the task's goal breaks them (no law of the world).
     invariants_refuted_by_goal: list[str] | None = None
     #: No excuse keeps the invariants, but the literal semantics has one (``literal_excuse``): those it breaks.
     invariants_in_the_way: list[str] | None = None
     literal_excuse: list[str] | None = None
+    #: No excuse keeps the world's structure (``structure_held``), but this one, which changes it, exists.
+    structural_excuse: list[str] | None = None
     setup_time_s: float | None = None  # from the run's start to the search's
     search_time_s: float | None = None
     candidates: int | None = None  # change sets that reached the reachability check

@@ -89,7 +89,9 @@ def _is_excuse(task, problem: Problem, changes: list[Change], laws: WorldLaws | 
         return False
     mask = 0
     for atom in state:
-        mask |= 1 << task.index[atom]
+        # The translator's grounding compiles fixed static atoms into the actions: they have no index.
+        if atom in task.index:
+            mask |= 1 << task.index[atom]
     mask = task.close(mask)
     if changes and task.satisfies_goal(mask):
         return False

@@ -1,0 +1,5 @@
+(define (problem to-the-lab)
+  (:domain rooms)
+  (:objects bot - robot hall office lab - room)
+  (:init (at bot hall) (connected hall office) (connected office hall))
+  (:goal (at bot lab)))

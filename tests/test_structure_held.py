@@ -1,0 +1,97 @@
+"""Excuses a person would accept (#28): the world's structure is held fixed by default.
+
+A truck does not become an airplane and a map does not gain a road: static predicates that say what things are
+(kinds) or how places connect (fixed graphs) are not changed unless --change-structure (or a model of what can
+change: --fixed-from, --human) says otherwise.
+"""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+
+from conftest import DATA, kitchen
+from guided_lfd.excuse.engine import ExcuseOptions, find_excuses
+from guided_lfd.excuse.structure import structural_predicates
+from guided_lfd.pddl.reader import parse_domain, parse_task
+
+STRUCTURE = DATA / "structure"
+LOGISTICS = (str(STRUCTURE / "robot.pddl"), str(STRUCTURE / "problem.pddl"))
+ROOMS = (str(STRUCTURE / "rooms.pddl"), str(STRUCTURE / "rooms-problem.pddl"))
+
+
+def _changes(report) -> list[list[str]]:
+    return [[str(c) for c in e.changes] for e in report.excuses]
+
+
+def test_kinds_and_fixed_graphs_are_found_with_why():
+    domain, problem = parse_task(*LOGISTICS)
+    held = structural_predicates(domain, problem)
+    assert sorted(held) == ["airplane", "airport", "city", "in-city", "location", "package", "truck"]
+    assert held["airport"] == "a kind: true of 2 object(s) in a domain whose types are predicates"
+    assert held["in-city"] == "a fixed graph over objects"
+    rooms = structural_predicates(*parse_task(*ROOMS))
+    assert rooms == {"connected": "a fixed graph over room objects"}
+
+
+def test_a_state_is_no_kind():
+    """Kitchen II: 'clear' holds of some drawers and not of the blocked one: a state the excuse may change."""
+    domain, problem = parse_task(*kitchen(2))
+    held = structural_predicates(domain, problem)
+    assert "clear" not in held and held["graspable"] == "a kind: true of every item"
+    report = find_excuses(domain, problem)
+    assert _changes(report) == [["+(clear pinkdrawer)"]]
+    assert report.statistics.structure_held == held
+
+
+def test_the_depot_does_not_become_an_airport():
+    """Without drive-truck, the cheapest consistent excuse made the depot an airport; held fixed, the parcel
+    is moved instead (what a person can demonstrate)."""
+    domain, problem = parse_task(*LOGISTICS)
+    default = find_excuses(domain, problem, ExcuseOptions(all_minimal=True))
+    assert _changes(default) == [["+(at p1 airport1)", "-(at p1 depot1)"], ["-(at p1 depot1)", "+(in p1 a1)"],
+                                 ["-(at p1 depot1)", "+(in p1 t1)"]]
+    free = find_excuses(domain, problem, ExcuseOptions(all_minimal=True, change_structure=True))
+    assert _changes(free) == [["+(airport depot1)"]]
+    assert free.statistics.structure_held is None
+
+
+def test_a_cost_on_a_structural_predicate_makes_it_changeable():
+    domain, problem = parse_task(*LOGISTICS)
+    report = find_excuses(domain, problem, ExcuseOptions(costs=["airport=1"]))
+    assert _changes(report) == [["+(airport depot1)"]] and "airport" not in report.statistics.structure_held
+
+
+def test_a_model_of_what_can_change_replaces_the_guess():
+    """With --fixed-from the complete domain, what its actions change decides (no structure_held)."""
+    domain, problem = parse_task(*LOGISTICS)
+    complete = parse_domain(STRUCTURE / "logistics.pddl")
+    report = find_excuses(domain, problem, ExcuseOptions(fixed_from=complete))
+    assert report.statistics.structure_held is None
+    assert "airport" in report.statistics.fixed_predicates and "at" not in report.statistics.fixed_predicates
+
+
+@pytest.mark.parametrize("json_out", [False, True])
+def test_a_task_whose_only_excuse_is_structural_says_so(runner, app, json_out):
+    result = runner.invoke(app, ["excuse", *ROOMS, *(["--json"] if json_out else [])])
+    assert result.exit_code == 11
+    said = ("no excuse keeps the world's structure (connected held fixed: kinds of things and fixed graphs no "
+            "action changes); only one that changes it exists: +(connected hall lab) (--change-structure allows it)")
+    assert said in result.stderr if not json_out else json.loads(result.stdout)["message"] == said
+    if json_out:
+        assert json.loads(result.stdout)["statistics"]["structural_excuse"] == ["+(connected hall lab)"]
+    allowed = runner.invoke(app, ["excuse", *ROOMS, "--change-structure", "--json"])
+    assert allowed.exit_code == 0
+    assert [c["change"] for c in json.loads(allowed.stdout)["excuse"]["changes"]] == ["+(connected hall lab)"]
+
+
+def test_the_checker_refuses_a_change_to_the_structure():
+    from guided_lfd.excuse.change import Change
+    from guided_lfd.excuse.check import check_excuse
+    from guided_lfd.pddl.model import Atom
+
+    domain, problem = parse_task(*LOGISTICS)
+    held = ExcuseOptions().fixed_predicates(domain, problem)
+    change = [Change(Atom("airport", ("depot1",)), True)]
+    assert check_excuse(domain, problem, change, [], None, held)[0] == "+(airport depot1) changes airport, which is fixed"
