@@ -58,8 +58,10 @@ def bench(
 
     if step not in STEPS:
         raise OptionError(f"STEP {step}: expected one of: {', '.join(STEPS)}")
-    if memory_limit < 0:
-        raise OptionError(f"--memory-limit {memory_limit}: expected MiB >= 0 (0 = no cap)")
+    from guided_lfd.memory import MAX_MEMORY_MIB
+
+    if not 0 <= memory_limit <= MAX_MEMORY_MIB:
+        raise OptionError(f"--memory-limit {memory_limit}: expected MiB from 0 (no cap) to {MAX_MEMORY_MIB}")
     if executor not in ("local", "dask"):
         raise OptionError(f"--executor {executor}: expected local or dask")
     root, ipc, suite, results = _paths(step, root, ipc, suite, results)
@@ -123,6 +125,10 @@ def _not_inside(path: Path, folders: list[Path], option: str) -> None:
                               "elsewhere")
 
 
+#: More runs at a time than this is no setting for one machine (each run is a process of its own).
+MAX_JOBS = 256
+
+
 def _check_options(time_limit: float, jobs: int, strategies: str, semantics: str) -> None:
     """Refuse (exit 37) a time limit, job count, strategy or semantics the runs could not use."""
     from guided_lfd.deadline import checked_time_limit
@@ -130,8 +136,8 @@ def _check_options(time_limit: float, jobs: int, strategies: str, semantics: str
     from guided_lfd.excuse.strategies import STRATEGIES
 
     checked_time_limit(time_limit)
-    if jobs < 1:
-        raise OptionError(f"--jobs {jobs}: expected a number of runs at a time >= 1")
+    if not 1 <= jobs <= MAX_JOBS:
+        raise OptionError(f"--jobs {jobs}: expected a number of runs at a time from 1 to {MAX_JOBS}")
     for name in strategies.split(","):
         if name not in STRATEGIES:
             raise OptionError(f"--strategies {strategies}: unknown strategy '{name}' (expected some of: "
@@ -148,7 +154,9 @@ def _run(benchmark, root: Path, suite_file: Path, results: Path, results_csv: Pa
     """Run the suite (resuming a partial run), then write the results CSV (a subset run merges its rows)."""
     suite = benchmark.read_suite(suite_file, root)
     if only:
-        keys = only.split(",")
+        keys = [k for k in only.split(",") if k.strip()]
+        if not keys:
+            raise OptionError(f"--only {only!r}: expected comma-separated parts of task ids")
         unmatched = [k for k in keys if not any(k in t.id for t in suite)]
         if unmatched:
             raise OptionError(f"--only {only}: '{unmatched[0]}' matches no task of {suite_file}")

@@ -189,9 +189,10 @@ def apply_memory_limit(megabytes: int | None) -> None:
     """Cap this process's memory (``--memory-limit``): running out is then the memout exit, not the OOM killer."""
     if megabytes is None:
         return
-    if megabytes < 1:
-        raise OptionError(f"--memory-limit {megabytes}: expected a number of MiB >= 1")
-    from guided_lfd.memory import cap_own_memory
+    from guided_lfd.memory import MAX_MEMORY_MIB, cap_own_memory
+
+    if not 1 <= megabytes <= MAX_MEMORY_MIB:
+        raise OptionError(f"--memory-limit {megabytes}: expected a number of MiB from 1 to {MAX_MEMORY_MIB}")
 
     cap_own_memory(megabytes)
 

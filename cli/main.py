@@ -273,6 +273,14 @@ def run() -> None:
             code = EXIT_OUTPUT
     except KeyboardInterrupt as exc:  # outside a command (its --help, the group's options)
         code = EXIT_TERMINATED if isinstance(exc, Terminated) else EXIT_INTERRUPTED
+    if code == 0 and _stdout_is_null() and not stdout_was_null:
+        # rich met a reader that closed stdout part-way (| head -c10) and pointed it at the null device: the
+        # output is cut, which is no success
+        _say("-: output error: standard output closed by the reader (broken pipe)")
+        code = EXIT_OUTPUT
+    elif code == 0 and sys.stdout is None and _asks_for_help(sys.argv[1:]):
+        _say("-: output error: standard output is closed")  # help or the version had nowhere to go
+        code = EXIT_OUTPUT
     if code in (EXIT_INTERRUPTED, EXIT_TERMINATED) and not cli.interruption_reported:
         # Stopped while typer parsed the options: typer calls every KeyboardInterrupt 130, without a word.
         code = EXIT_TERMINATED if _TERMINATED else EXIT_INTERRUPTED
@@ -281,6 +289,11 @@ def run() -> None:
 
 
 _TERMINATED = False
+
+
+def _asks_for_help(args: list[str]) -> bool:
+    """Whether the command line asks only for help or the version (what goes to stdout before any command)."""
+    return any(a in ("-h", "--help", "--version") for a in args)
 
 
 def _terminate(signum: int, frame: Any) -> None:
@@ -335,6 +348,8 @@ def _end(code: Any) -> None:
         try:
             if stream is not None:  # None: the stream was closed when the process started (`>&-`)
                 stream.flush()
-        except (OSError, ValueError):  # a closed pipe or stream: nothing more can be said
-            pass
+        except (OSError, ValueError):  # a closed pipe or stream: nothing more can be said on it
+            if stream is sys.stdout and code == 0:  # what was left of the output did not reach its reader
+                _say("-: output error: standard output closed by the reader (broken pipe)")
+                code = EXIT_OUTPUT
     os._exit(code)

@@ -89,13 +89,31 @@ def _write_stdout(text: str) -> None:
     if stream is None:
         raise OutputError("standard output is closed", Location("-"))
     try:
-        stream.write(text)
-        stream.flush()
+        fd = _real_descriptor(stream)
+        if fd is None:
+            stream.write(text)
+            stream.flush()
+        else:
+            # Python's buffered stdout takes a short write to a pipe whose reader left (| head -c10) as done,
+            # and the rest of the output is lost without a word: write every byte, or fail.
+            stream.flush()
+            view = memoryview(text.encode(stream.encoding or "utf-8", errors="replace"))
+            while view:
+                view = view[os.write(fd, view):]
     except BrokenPipeError:
         raise OutputError("standard output closed by the reader (broken pipe)", Location("-")) from None
     except (OSError, ValueError) as exc:
         reason = exc.strerror if isinstance(exc, OSError) and exc.strerror else str(exc)
         raise OutputError(f"cannot write standard output ({reason})", Location("-")) from None
+
+
+def _real_descriptor(stream) -> int | None:
+    """``stream``'s file descriptor when it is the process's own stdout (not a test runner's capture)."""
+    try:
+        fd = stream.fileno()
+    except (AttributeError, OSError, ValueError):
+        return None
+    return fd if fd == 1 else None
 
 
 def check_writable(path: str | Path) -> None:

@@ -24,6 +24,11 @@ def cap_memory(pid: int, megabytes: int) -> None:
         pass  # it has ended already
 
 
+#: The largest ``--memory-limit`` (MiB): 1 EiB, far above any machine, and its bytes still fit the C long the
+#: operating system's limit takes.
+MAX_MEMORY_MIB = 2**40
+
+
 def cap_own_memory(megabytes: int) -> None:
     """Cap this process's address space (``--memory-limit``); see :func:`cap_memory`."""
     import os

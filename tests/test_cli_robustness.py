@@ -674,3 +674,31 @@ def test_ctrl_c_works_under_an_outside_memory_cap(tmp_path):
     code, err, took = _baseline_under_outside_cap(tmp_path, 2.0)
     assert code in (130, 22), err  # interrupted, or out of memory first on a fast machine
     assert took < 10
+
+
+@pytest.mark.parametrize("args", [
+    ["plan", DOMAIN, PROBLEM, "--memory-limit", "8796093022208"],
+    ["excuse", DOMAIN, PROBLEM, "--memory-limit", "8796093022208"],
+])
+def test_a_memory_limit_too_large_for_the_system_is_an_option_error(runner, app, args):
+    """#25 second round: 2**43 MiB was 'internal error: OverflowError' (the bytes overflow a C long)."""
+    result = runner.invoke(app, args)
+    assert result.exit_code == 37
+    assert one_line(result) == ("option error: --memory-limit 8796093022208: expected a number of MiB from 1 to "
+                                "1099511627776")
+
+
+@pytest.mark.parametrize("args, message", [
+    (["--only", ","], "--only ',': expected comma-separated parts of task ids"),
+    (["--jobs", "99999999999999999999"], "--jobs 99999999999999999999: expected a number of runs at a time from 1 "
+                                          "to 256"),
+    (["--memory-limit", "8796093022208"], "--memory-limit 8796093022208: expected MiB from 0 (no cap) to "
+                                          "1099511627776"),
+])
+def test_bench_refuses_an_empty_only_an_unbounded_jobs_and_a_huge_memory_limit(runner, app, tmp_path, args,
+                                                                                message):
+    """#25 second round: '--only ,' ran all 1,524 runs, --jobs had no bound, the memory limit overflowed."""
+    result = runner.invoke(app, ["bench", "run", "--results", str(tmp_path / "r"), *args])
+    assert result.exit_code == 37, result.output
+    assert message in result.stderr
+    assert not (tmp_path / "r").exists()

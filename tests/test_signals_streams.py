@@ -141,3 +141,27 @@ def test_a_signal_early_in_a_run_is_its_code_and_one_line(delay, signum, code, l
     proc.send_signal(signum)
     _, err = proc.communicate(timeout=60)
     assert (proc.returncode, err) == (code, line + "\n")
+
+
+@pytest.mark.parametrize("args", [["--help"], ["excuse", "-h"], ["--version"]])
+def test_help_and_the_version_with_stdout_closed_are_an_output_error(args):
+    """#25 second round: help and the version with stdout closed from the start (`>&-`) exited 0."""
+    code, err = _run([*cli_command(), *args], close=1)
+    assert code == EXIT_OUTPUT, err
+    assert err == "-: output error: standard output is closed\n"
+
+
+def test_a_reader_that_leaves_part_way_is_an_output_error_not_a_cut_success(tmp_path):
+    """#25 second round: `excuse --all | head -c10` exited 0 with 65,536 of 204,273 bytes written (Python's
+    buffered stdout took the pipe's short write as done).  Here ~240 kB of text, far beyond a pipe's buffer."""
+    task = ROOT / "tests" / "data" / "many-excuses-slack"
+    parts = " ".join(f"p{i}" for i in range(60))
+    problem = tmp_path / "p.pddl"
+    problem.write_text(f"(define (problem g) (:domain gate2) (:objects k1 k2 k3 - key {parts} - part) (:init) "
+                       "(:goal (open)))")
+    command = " ".join([*cli_command(), "excuse", str(task / "domain.pddl"), str(problem), "--all", "--slack", "1",
+                        "-q"])
+    proc = subprocess.run(["bash", "-c", f"{command} | head -c10 >/dev/null; exit ${{PIPESTATUS[0]}}"],
+                          capture_output=True, text=True, timeout=120)
+    assert proc.returncode == EXIT_OUTPUT, proc.stderr
+    assert proc.stderr == "-: output error: standard output closed by the reader (broken pipe)\n"

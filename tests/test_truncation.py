@@ -66,3 +66,14 @@ def test_slack_without_a_time_limit_stops_at_the_cap_and_says_so(runner, app, mo
     assert doc.exit_code == 0
     assert len(json.loads(doc.stdout)["alternatives"]) == 9
     assert "warning: --all stopped at 10 excuses: more excuses within --slack 1 may exist" in doc.stderr
+
+
+@pytest.mark.parametrize("strategy", sorted(STRATEGIES))
+def test_a_list_of_exactly_the_cap_is_not_called_cut(monkeypatch, strategy):
+    """#25 second round: 1,000 excuses of a task with exactly 1,000 were reported as 'stopped at 1,000'."""
+    monkeypatch.setattr(engine, "MAX_EXCUSES", 8)
+    report = find_excuses(*parse_task(*TASK), ExcuseOptions(all_minimal=True, strategy=strategy))
+    assert len(report.excuses) == 8 and report.statistics.truncated is None
+    monkeypatch.setattr(engine, "MAX_EXCUSES", 7)
+    report = find_excuses(*parse_task(*TASK), ExcuseOptions(all_minimal=True, strategy=strategy))
+    assert len(report.excuses) == 7 and report.statistics.truncated is True

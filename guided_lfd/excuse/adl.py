@@ -41,7 +41,7 @@ def adl_options(options: "ExcuseOptions") -> "ExcuseOptions":
 def search_adl(run: "_Run", space: ChangeSpace) -> "ExcuseReport":
     """Check solvability and search the minimal excuses of an ADL task prepared by the engine."""
     from guided_lfd.deadline import seconds_left
-    from guided_lfd.excuse.engine import MAX_EXCUSES, _steps, _verify
+    from guided_lfd.excuse.engine import MAX_EXCUSES, _steps, _verify, cap_excuses
     from guided_lfd.planning import find_plan
 
     options, task, stats = run.options, space.task, run.stats
@@ -53,15 +53,14 @@ def search_adl(run: "_Run", space: ChangeSpace) -> "ExcuseReport":
         return run.report(ExcuseStatus.ALREADY_SOLVABLE, _steps(plan0), candidates=0, planner_calls=1)
     run._enter("searching")
     limits = SearchLimits(all_minimal=options.all_minimal, max_size=options.max_size, deadline=run.deadline,
-                          max_solutions=MAX_EXCUSES)
+                          max_solutions=MAX_EXCUSES + 1)
     search_start = time.monotonic()
     stats.setup_time_s = round(search_start - run.start, 6)
     outcome = BaselineSearch().search(space, limits, run.progress)
     stats.search_time_s = round(time.monotonic() - search_start, 6)
     stats.candidates, stats.planner_calls, stats.nodes_expanded = (outcome.candidates, outcome.planner_calls + 1,
                                                                    outcome.expanded)
-    if options.all_minimal and len(outcome.solutions) >= limits.max_solutions:
-        stats.truncated, stats.max_excuses = True, limits.max_solutions
+    cap_excuses(outcome, stats)
     run.phase = "robot plan"
     for changes in outcome.solutions:  # each plan is the ADL A*'s: optimal
         run.excuses.append(run.checked_excuse(changes, outcome.plans[changes], True))

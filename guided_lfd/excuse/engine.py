@@ -523,15 +523,14 @@ class _Run:
         options = self.options
         self._enter("searching")
         limits = SearchLimits(all_minimal=options.all_minimal, max_size=options.max_size, deadline=self.deadline,
-                              slack=options.slack, max_solutions=MAX_EXCUSES, probe=self.probe())
+                              slack=options.slack, max_solutions=MAX_EXCUSES + 1, probe=self.probe())
         search_start = time.monotonic()
         self.stats.setup_time_s = round(search_start - self.start, 6)
         outcome = STRATEGIES[options.strategy].search(space, limits, self.progress, oracle=oracle, relaxed=relaxed)
         self.stats.search_time_s = round(time.monotonic() - search_start, 6)
         self.stats.candidates, self.stats.planner_calls = outcome.candidates, outcome.planner_calls + 1
         self.stats.nodes_expanded, self.stats.counters = outcome.expanded, dict(outcome.extra)
-        if options.all_minimal and len(outcome.solutions) >= limits.max_solutions:
-            self.stats.truncated, self.stats.max_excuses = True, limits.max_solutions
+        cap_excuses(outcome, self.stats)
         self.phase = "robot plan"
         plans_until = robot_plan_deadline(self.start)
         for changes in outcome.solutions:
@@ -587,6 +586,14 @@ class _Run:
         broken = sorted({g.invariant for g in space.groups if g.need(state)})
         self.stats.invariants_in_the_way = broken or None
         self.stats.literal_excuse = [str(c) for c in report.excuse.changes]
+
+
+def cap_excuses(outcome: strategies.SearchOutcome, stats: ExcuseStatistics) -> None:
+    """At most :data:`MAX_EXCUSES`: the search looks for one more, so that a list of exactly that many is not
+    called cut; one beyond it is dropped and the statistics say the list was cut there."""
+    if len(outcome.solutions) > MAX_EXCUSES:
+        del outcome.solutions[MAX_EXCUSES:]
+        stats.truncated, stats.max_excuses = True, MAX_EXCUSES
 
 
 def _steps(plan: list[GroundAction]) -> list[PlanStep]:
