@@ -435,16 +435,38 @@ def teach(robot: Domain, problem: Problem, demonstrator: Demonstrator, out: Path
     ``session.json`` and ``session.md`` are written by the caller.
     """
     out = _session_path(out)
-    if isinstance(max_rounds, bool) or not isinstance(max_rounds, int) or max_rounds < 1:
-        from guided_lfd.errors import OptionError
-
-        raise OptionError(f"max_rounds {max_rounds!r}: expected a whole number of rounds >= 1")
+    _check_teach_arguments(robot, problem, demonstrator, max_rounds, options, human, prefer, deadline)
     was_there = out.exists()
     options = options or ExcuseOptions()
     _prepare_session(robot, problem, demonstrator, out, options, human)
     with replacing_previous_session(out, was_there):
         return _rounds(robot, problem, demonstrator, out, max_rounds, options, human, prefer, redundancy, deadline,
                        on_request)
+
+
+def _check_teach_arguments(robot: object, problem: object, demonstrator: object, max_rounds: object,
+                           options: object, human: object, prefer: object, deadline: object) -> None:
+    """:func:`teach`'s arguments of the wrong kind, as the documented :class:`OptionError`."""
+    import math
+
+    from guided_lfd.errors import OptionError
+
+    none = type(None)
+    for name, value, kind, expected in (("robot", robot, Domain, "Domain"), ("problem", problem, Problem, "Problem"),
+                                        ("human", human, (Domain, none), "a Domain or None"),
+                                        ("options", options, (ExcuseOptions, none), "ExcuseOptions or None")):
+        if not isinstance(value, kind):
+            raise OptionError(f"{name}: expected {expected}, got {type(value).__name__}")
+    if not callable(getattr(demonstrator, "demonstrate", None)):
+        raise OptionError(f"demonstrator: expected an object with demonstrate() (SimulatedHuman, GivenTraces), got "
+                          f"{type(demonstrator).__name__}")
+    if isinstance(max_rounds, bool) or not isinstance(max_rounds, int) or max_rounds < 1:
+        raise OptionError(f"max_rounds {max_rounds!r}: expected a whole number of rounds >= 1")
+    if deadline is not None and (isinstance(deadline, bool) or not isinstance(deadline, (int, float))
+                                 or not math.isfinite(deadline)):
+        raise OptionError(f"deadline {deadline!r}: expected a time.monotonic() value (or None)")
+    if prefer and human is None:
+        raise OptionError("prefer: needs the human model it predicts demonstrations with (human=...)")
 
 
 def _session_path(out: object) -> Path:

@@ -258,3 +258,45 @@ def test_a_simulated_human_refuses_a_frame_rate_it_cannot_render(kwargs, message
     human, _ = read_task(*kitchen(1, "human"))
     with pytest.raises(OptionError, match=re.escape(message)):
         SimulatedHuman(human, **kwargs)
+
+
+@pytest.mark.parametrize("call, message", [
+    (lambda d, p: find_excuses(d, None), "problem: expected a Problem (guided_lfd.read_task), got NoneType"),
+    (lambda d, p: find_excuses(p, d), "domain: expected a Domain (guided_lfd.read_task), got Problem"),
+    (lambda d, p: find_excuses(d, p, {"all_minimal": True}), "options: expected ExcuseOptions (or None), got dict"),
+    (lambda d, p: find_excuses(d, p, on_progress=5), "on_progress: expected a function of one Progress (or None)"),
+    (lambda d, p: ExcuseOptions(fixed=None), "fixed None: expected a list of strings"),
+    (lambda d, p: ExcuseOptions(all_minimal="no"), "all_minimal 'no': expected True or False"),
+    (lambda d, p: ExcuseOptions(started=float("nan")), "started nan: expected a time.monotonic() value"),
+    (lambda d, p: ExcuseOptions(started="x"), "started 'x': expected a time.monotonic() value"),
+])
+def test_arguments_of_the_wrong_kind_are_option_errors(call, message):
+    """#25 second round: these escaped as TypeError/AttributeError, or (nan, 'no') were taken silently."""
+    from guided_lfd.errors import OptionError
+
+    domain, problem = read_task(*kitchen(1))
+    with pytest.raises(OptionError, match=re.escape(message)):
+        call(domain, problem)
+
+
+@pytest.mark.parametrize("kwargs, message", [
+    ({"demonstrator": None}, "demonstrator: expected an object with demonstrate()"),
+    ({"demonstrator": "human.pddl"}, "demonstrator: expected an object with demonstrate()"),
+    ({"deadline": "soon"}, "deadline 'soon': expected a time.monotonic() value"),
+    ({"deadline": float("nan")}, "deadline nan: expected a time.monotonic() value"),
+    ({"options": {}}, "options: expected ExcuseOptions"),
+    ({"human": "human.pddl"}, "human: expected a Domain or None, got str"),
+    ({"robot": "robot.pddl"}, "robot: expected Domain, got str"),
+    ({"prefer": True}, "prefer: needs the human model"),
+])
+def test_teach_arguments_of_the_wrong_kind_are_option_errors(tmp_path, kwargs, message):
+    from guided_lfd.errors import OptionError
+    from guided_lfd.teach import SimulatedHuman, teach
+
+    robot, task = read_task(*kitchen(1))
+    human, _ = read_task(*kitchen(1, "human"))
+    arguments = {"robot": robot, "problem": task, "demonstrator": SimulatedHuman(human), "out": tmp_path / "s",
+                 **kwargs}
+    with pytest.raises(OptionError, match=re.escape(message)):
+        teach(**arguments)
+    assert not (tmp_path / "s").exists()

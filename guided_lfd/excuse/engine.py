@@ -10,6 +10,7 @@ before it is returned.
 from __future__ import annotations
 
 import gc
+import math
 import time
 from dataclasses import dataclass, field, replace
 from typing import Any
@@ -88,9 +89,16 @@ class ExcuseOptions:
             raise OptionError(f"max_size {self.max_size!r}: expected a number of changes >= 0 (or None)")
         if isinstance(self.slack, bool) or not isinstance(self.slack, int) or self.slack < 0:
             raise OptionError(f"slack {self.slack!r}: expected a whole cost >= 0")
+        for name in ("all_minimal", "optimal_plans", "verify", "change_structure"):
+            if not isinstance(getattr(self, name), bool):
+                raise OptionError(f"{name} {getattr(self, name)!r}: expected True or False")
+        started = self.started
+        if started is not None and (isinstance(started, bool) or not isinstance(started, (int, float))
+                                    or not math.isfinite(started)):
+            raise OptionError(f"started {started!r}: expected a time.monotonic() value (or None)")
         for name in ("fixed", "costs"):
             value = getattr(self, name)
-            if isinstance(value, str) or not all(isinstance(v, str) for v in value):
+            if not isinstance(value, (list, tuple)) or not all(isinstance(v, str) for v in value):
                 raise OptionError(f"{name} {value!r}: expected a list of strings (as --{name.rstrip('s')} takes them)")
         for name in ("invariants_from", "fixed_from"):
             if getattr(self, name) is not None and not isinstance(getattr(self, name), Domain):
@@ -332,6 +340,7 @@ def find_excuses(
     ``on_progress`` gets a :class:`~guided_lfd.excuse.progress.Progress` at
     each phase and, while the search runs, a few times a second.
     """
+    _check_arguments(domain, problem, options, on_progress)
     options = options or ExcuseOptions()
     if options.strategy not in STRATEGIES:
         from guided_lfd.errors import OptionError
@@ -586,6 +595,19 @@ class _Run:
         broken = sorted({g.invariant for g in space.groups if g.need(state)})
         self.stats.invariants_in_the_way = broken or None
         self.stats.literal_excuse = [str(c) for c in report.excuse.changes]
+
+
+def _check_arguments(domain: object, problem: object, options: object, on_progress: object) -> None:
+    """A library call's arguments of the wrong kind, as the documented :class:`OptionError`."""
+    from guided_lfd.errors import OptionError
+
+    for name, value, kind in (("domain", domain, Domain), ("problem", problem, Problem)):
+        if not isinstance(value, kind):
+            raise OptionError(f"{name}: expected a {kind.__name__} (guided_lfd.read_task), got {type(value).__name__}")
+    if options is not None and not isinstance(options, ExcuseOptions):
+        raise OptionError(f"options: expected ExcuseOptions (or None), got {type(options).__name__}")
+    if on_progress is not None and not callable(on_progress):
+        raise OptionError(f"on_progress: expected a function of one Progress (or None), got {type(on_progress).__name__}")
 
 
 def cap_excuses(outcome: strategies.SearchOutcome, stats: ExcuseStatistics) -> None:
