@@ -17,6 +17,7 @@ from guided_lfd.excuse.document import read_excuse
 from guided_lfd.excuse.engine import find_excuses
 from guided_lfd.excuse.status import ExcuseStatus
 from guided_lfd.io import write_text
+from guided_lfd.pddl.fit import check_model_fits
 from guided_lfd.pddl.reader import parse_domain, parse_problem_for, parse_task
 from guided_lfd.reporting import csv_text
 
@@ -75,6 +76,7 @@ def evaluate(
     robot_domain, task = parse_task(robot, problem)
     human_domain = parse_domain(human)
     ui.reading_warnings(robot_domain, human_domain)
+    check_model_fits(robot_domain, human_domain, "--human")  # as excuse and teach: exit 34 naming the predicate
     parse_problem_for(human_domain, problem)  # the human's domain must fit the task too
     if excuse is not None:
         changes = read_excuse(excuse, robot_domain, task)

@@ -54,3 +54,14 @@ def test_the_humans_own_model_fits_and_types_of_its_own_naming_are_allowed():
     check_model_fits(robot, parse_domain(str(KITCHEN / "human.pddl")), "--human")
     for domain in sorted((ROOT / "data" / "domains").glob("*/human.pddl")):
         check_model_fits(parse_domain(str(domain.parent / "robot.pddl")), parse_domain(str(domain)), "--human")
+
+
+@pytest.mark.parametrize("model, said", [
+    (ARITY, "--human: predicate open takes 2 argument(s) here and 1 in the robot's domain"),
+    (TYPE, "--human: argument 1 of predicate open is of type item here and of type drawer"),
+])
+def test_evaluate_refuses_a_human_model_that_does_not_fit(runner, app, model, said):
+    """#25 second round: evaluate --human took such models (exit 0, meaningless measures)."""
+    result = runner.invoke(app, ["evaluate", ROBOT, PROBLEM, "--human", model])
+    assert result.exit_code == EXIT_MISMATCH, result.output
+    assert said in result.stderr and result.stdout == ""
