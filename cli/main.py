@@ -267,15 +267,11 @@ def run() -> None:
         code: Any = 0
     except SystemExit as exc:
         code = exc.code
-        if code == 1 and (_stdout_broke() or (_stdout_is_null() and not stdout_was_null)):
-            # click's own answer to a broken stdout while it writes help or the version: exit 1, without a word
-            _say("-: output error: standard output closed by the reader (broken pipe)")
-            code = EXIT_OUTPUT
     except KeyboardInterrupt as exc:  # outside a command (its --help, the group's options)
         code = EXIT_TERMINATED if isinstance(exc, Terminated) else EXIT_INTERRUPTED
-    if code == 0 and _stdout_is_null() and not stdout_was_null:
-        # rich met a reader that closed stdout part-way (| head -c10) and pointed it at the null device: the
-        # output is cut, which is no success
+    if (code == 1 and _stdout_broke()) or (code in (0, 1) and _stdout_is_null() and not stdout_was_null):
+        # click's own answer to a broken stdout while it writes help or the version (exit 1, without a word),
+        # or rich's (stdout pointed at the null device, exit 0): the output is cut, which is no success
         _say("-: output error: standard output closed by the reader (broken pipe)")
         code = EXIT_OUTPUT
     elif code == 0 and sys.stdout is None and _asks_for_help(sys.argv[1:]):

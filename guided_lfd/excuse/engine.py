@@ -12,6 +12,7 @@ from __future__ import annotations
 import gc
 import math
 import time
+from collections.abc import Sequence
 from dataclasses import dataclass, field, replace
 from typing import Any
 
@@ -27,7 +28,7 @@ from guided_lfd.excuse.prepare import prepare
 from guided_lfd.excuse.progress import ProgressCallback, ProgressMeter
 from guided_lfd.excuse.reach import ReachabilityOracle
 from guided_lfd.excuse.space import (
-    ChangeSpace, MutexGroup, Semantics, check_cost_predicates, check_fixed,
+    ChangeSpace, MutexGroup, Semantics, check_cost_predicates, check_fixed, cost_predicates,
 )
 from guided_lfd.excuse.statistics import ExcuseStatistics
 from guided_lfd.excuse.status import ExcuseStatus
@@ -123,7 +124,7 @@ class ExcuseOptions:
             return {}
         from guided_lfd.excuse.structure import structural_predicates
 
-        priced = {spec.rpartition("=")[0].strip().lstrip("(").split(" ")[0].lower() for spec in self.costs}
+        priced = cost_predicates(self.costs)
         models = [self.invariants_from] if self.invariants_from is not None else []
         return {p: why for p, why in structural_predicates(domain, problem, models).items() if p not in priced}
 
@@ -392,6 +393,8 @@ class _Run:
         self.robot_plan_cost: int | None = None
         self.candidate: Excuse | None = None  # the probe's excuse, checked
         self._laws: WorldLaws | None = None
+        #: What the excuse may not change (``--fixed``, ``--fixed-from``, the world's structure), worked out once.
+        self.fixed: list[str] = []
         self.candidate_weight = 0
 
     def _enter(self, phase: str) -> None:
@@ -448,7 +451,8 @@ class _Run:
         space = self.space
         assert space is not None
         change_list = _changes_of(space.task, changes)
-        _verify(self.domain, self.problem, change_list, plan, self.laws(), self.options, space.cost(changes))
+        _verify(self.domain, self.problem, change_list, plan, self.laws(), self.fixed, self.options.costs,
+                space.cost(changes))
         return Excuse(change_list, space.cost(changes), excuse_state(self.problem.init, change_list), _steps(plan),
                       optimal, sum(a.cost for a in plan))
 
@@ -466,9 +470,8 @@ class _Run:
         another planner; the statistics say how it went.  A cheaper excuse is a bug, refused as one."""
         from guided_lfd.excuse.verify import verify_minimal
 
-        fixed = self.options.fixed_predicates(self.domain, self.problem)
         try:
-            found = verify_minimal(self.domain, self.problem, report.excuses[0].cost, self.laws(), fixed,
+            found = verify_minimal(self.domain, self.problem, report.excuses[0].cost, self.laws(), self.fixed,
                                    self.options.costs, self.options.max_size, self.deadline)
         except SearchTimeout:
             report.statistics.minimality = "timeout"
@@ -487,7 +490,7 @@ class _Run:
 
             self.options = options = adl_options(options)
         self._enter("grounding")
-        fixed = options.fixed_predicates(self.domain, self.problem)
+        self.fixed = fixed = options.fixed_predicates(self.domain, self.problem)
         prepared = prepare(self.domain, self.problem, options.semantics, fixed, options.costs,
                            options.invariants_from, self.deadline, self._enter)
         task, space, oracle = prepared.task, prepared.space, prepared.oracle
@@ -564,14 +567,18 @@ class _Run:
     def _structure_in_the_way(self) -> None:
         """No excuse keeps the world's structure: the excuse that changes it, if there is one, goes into the
         statistics (the answer names it and ``--change-structure``)."""
-        changing = replace(self.options, change_structure=True, all_minimal=False, optimal_plans=False,
-                           verify=False, started=self.start)
+        excuse = self._other_excuse(change_structure=True, verify=False)
+        if excuse is not None:
+            self.stats.structural_excuse = [str(c) for c in excuse.changes]
+
+    def _other_excuse(self, **options: Any) -> Excuse | None:
+        """The first excuse under these ``options`` instead of the run's, in the run's time (None: none, or no
+        time left); only its changes are wanted, so no optimal plan is searched for it."""
+        other = replace(self.options, all_minimal=False, optimal_plans=False, started=self.start, **options)
         try:
-            report = find_excuses(self.domain, self.problem, changing)
+            return find_excuses(self.domain, self.problem, other).excuse
         except SearchTimeout:
-            return
-        if report.excuse is not None:
-            self.stats.structural_excuse = [str(c) for c in report.excuse.changes]
+            return None
 
     def _bound_reached(self, space: ChangeSpace, weight: int) -> None:
         """A timed-out search: its proven lower bound as a cost; whether the probe's excuse meets it."""
@@ -582,19 +589,13 @@ class _Run:
     def _invariants_in_the_way(self, task: GroundTask, space: ChangeSpace) -> None:
         """No excuse keeps the invariants: when the literal semantics finds one, name the invariants its excuse
         state breaks (they may hold only because a skill is missing) in the statistics."""
-        # Only the excuse's changes are wanted: no optimal plan is searched for it.
-        literal = replace(self.options, semantics=Semantics.LITERAL, all_minimal=False, optimal_plans=False,
-                          started=self.start)
-        try:
-            report = find_excuses(self.domain, self.problem, literal)
-        except SearchTimeout:
+        excuse = self._other_excuse(semantics=Semantics.LITERAL)
+        if excuse is None:
             return
-        if report.excuse is None:
-            return
-        state = mask_of(task.index[atom] for atom in report.excuse.state if atom in task.index)
+        state = mask_of(task.index[atom] for atom in excuse.state if atom in task.index)
         broken = sorted({g.invariant for g in space.groups if g.need(state)})
         self.stats.invariants_in_the_way = broken or None
-        self.stats.literal_excuse = [str(c) for c in report.excuse.changes]
+        self.stats.literal_excuse = [str(c) for c in excuse.changes]
 
 
 def _check_arguments(domain: object, problem: object, options: object, on_progress: object) -> None:
@@ -627,15 +628,14 @@ def _excuse_order(e: Excuse) -> tuple:
 
 
 def _verify(domain: Domain, problem: Problem, changes: list[Change], plan: list[GroundAction],
-            laws: WorldLaws | None = None, options: ExcuseOptions | None = None, cost: int | None = None) -> None:
+            laws: WorldLaws | None = None, fixed: Sequence[str] = (), costs: Sequence[str] | None = None,
+            cost: int | None = None) -> None:
     """Refuse to return an excuse the independent checker rejects (a bug); ``cost`` is the search's, which the
-    checker recomputes from the options' ``--cost`` specifications, ``laws`` the checker's own invariants."""
+    checker recomputes from the ``--cost`` specifications ``costs``, ``laws`` the checker's own invariants."""
     steps = [PlanStep(a.schema, a.args) for a in plan]
     if not changes:
         validated(domain, problem, steps, "the robot plan")
         return
-    fixed = options.fixed_predicates(domain, problem) if options is not None else ()
-    costs = options.costs if options is not None else None
     problems = check_excuse(domain, problem, changes, steps, laws, fixed, costs, cost)
     if problems:
         raise RuntimeError("internal check failed for excuse " + " ".join(map(str, changes)) + ": " + "; ".join(problems))

@@ -15,6 +15,7 @@ is ``I ^ E``.  This module holds everything the search strategies share:
 from __future__ import annotations
 
 import re
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from enum import Enum
 
@@ -201,6 +202,18 @@ def check_cost_predicates(specs: list[str], domain: Domain) -> None:
         match = _COST.match(spec)
         if match and not match.group(1).startswith("("):
             _check_cost_predicate(spec, match.group(1), domain)
+
+
+def cost_predicates(specs: Sequence[str]) -> set[str]:
+    """The predicates ``--cost`` specifications price, each atom specification's included."""
+    out = set()
+    for spec in specs:
+        match = _COST.match(spec)
+        if match:
+            target = match.group(1).lower()
+            words = target.strip("()").split() if target.startswith("(") else [target]
+            out.update(words[:1])
+    return out
 
 
 def check_fixed(fixed: list[str], domain: Domain) -> list[str]:
