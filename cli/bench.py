@@ -7,7 +7,7 @@ from typing import Annotated
 
 import typer
 
-from cli.common import QuietOption, command, help_footer, ui
+from cli.common import QuietOption, command, help_footer, ui, path_name
 from guided_lfd import errors
 from guided_lfd.errors import OptionError
 
@@ -23,15 +23,15 @@ STEPS = ("generate", "run", "report", "all")
 @command
 def bench(
     step: Annotated[str, typer.Argument(metavar="STEP", help="generate | run | report | all (run, then report).")],
-    root: Annotated[Path | None, typer.Option("--root", metavar="DIR", help="Repository root (data/, benchmarks/; "
+    root: Annotated[Path | None, typer.Option("--root", parser=path_name, metavar="DIR", help="Repository root (data/, benchmarks/; "
                                                                         "default: the working folder if it has "
                                                                         "them, else the installed checkout).")]
     = None,
-    ipc: Annotated[Path | None, typer.Option("--ipc", metavar="DIR", help="IPC collection (default ROOT/data/benchmarks/ipc).")] = None,
+    ipc: Annotated[Path | None, typer.Option("--ipc", parser=path_name, metavar="DIR", help="IPC collection (default ROOT/data/benchmarks/ipc).")] = None,
     tasks: Annotated[str, typer.Option("--tasks", metavar="NAMES", help="Comma-separated IPC task names per domain.")]
     = ",".join(f"task{i:02d}" for i in range(1, 11)),
-    suite: Annotated[Path | None, typer.Option("--suite", metavar="CSV", help="Suite file (default ROOT/benchmarks/suite.csv).")] = None,
-    results: Annotated[Path | None, typer.Option("--results", metavar="DIR", help="Results folder (default ROOT/benchmarks/results).")] = None,
+    suite: Annotated[Path | None, typer.Option("--suite", parser=path_name, metavar="CSV", help="Suite file (default ROOT/benchmarks/suite.csv).")] = None,
+    results: Annotated[Path | None, typer.Option("--results", parser=path_name, metavar="DIR", help="Results folder (default ROOT/benchmarks/results).")] = None,
     time_limit: Annotated[float, typer.Option("--time-limit", metavar="SECONDS", help="Per run.")] = 60.0,
     jobs: Annotated[int, typer.Option("--jobs", metavar="N", help="Runs at a time.")] = 2,
     memory_limit: Annotated[int, typer.Option("--memory-limit", metavar="MIB",
@@ -161,6 +161,7 @@ def _run(benchmark, root: Path, suite_file: Path, results: Path, results_csv: Pa
         if unmatched:
             raise OptionError(f"--only {only}: '{unmatched[0]}' matches no task of {suite_file}")
         suite = [t for t in suite if any(k in t.id for k in keys)]
+    benchmark.check_removed_actions(suite, suite_file)
     done = [0]
     total = len(suite) * len(strategies.split(",")) * len(semantics.split(","))
     log = benchmark.RowLog(results / "results.partial.csv")

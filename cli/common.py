@@ -6,6 +6,7 @@ import builtins
 import functools
 import os
 import re
+import stat
 import sys
 from typing import TYPE_CHECKING, Annotated, Callable, TypeVar
 
@@ -211,6 +212,15 @@ def check_time_limit(value: float | None) -> float | None:
     return checked_time_limit(value)
 
 
+def path_name(value: str) -> "Path":
+    """A path option's value as a Path; an empty name is refused (exit 37), not taken for the working folder."""
+    from pathlib import Path
+
+    if not str(value).strip():
+        raise typer.BadParameter("expected a file or folder name, got an empty one")
+    return Path(value)
+
+
 def check_output_folder(folder: "Path", option: str) -> None:
     """Refuse (exit 40), before any work, an output folder that is a file or cannot be made or written."""
     from pathlib import Path
@@ -265,6 +275,15 @@ def _same_file(a: str, b: str) -> bool:
         return False
 
 
+def _is_standard_input(path: str) -> bool:
+    """Whether ``path`` is the file redirected to standard input (``plan - p.pddl -o d.pddl < d.pddl``)."""
+    try:
+        given, stdin = os.stat(path), os.fstat(0)
+    except (OSError, ValueError):  # no such output yet, or no standard input: nothing to overwrite
+        return False
+    return stat.S_ISREG(stdin.st_mode) and (given.st_dev, given.st_ino) == (stdin.st_dev, stdin.st_ino)
+
+
 def check_files(inputs: list[str | None], outputs: dict[str, str | None]) -> None:
     """Refuse, before any work, outputs that would replace an input or each other, or cannot be written.
 
@@ -283,6 +302,8 @@ def check_files(inputs: list[str | None], outputs: dict[str, str | None]) -> Non
         for source in files:
             if _same_file(path, source):
                 raise OptionError(f"{option} {path} is an input of this run; expected another file")
+        if "-" in named and _is_standard_input(path):
+            raise OptionError(f"{option} {path} is the file on standard input ('-'); expected another file")
         for other_option, other in given[:k]:
             if _same_file(path, other):
                 raise OptionError(f"{option} {path} is also {other_option}; expected another file")

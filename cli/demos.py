@@ -7,7 +7,7 @@ from typing import Annotated
 
 import typer
 
-from cli.common import QuietOption, check_output_folder, command, help_footer, ui
+from cli.common import QuietOption, check_output_folder, command, help_footer, ui, path_name
 from guided_lfd import errors
 
 
@@ -19,9 +19,9 @@ from guided_lfd import errors
 )
 @command
 def demos(
-    out: Annotated[Path | None, typer.Argument(metavar="OUT", help="Where the traces go (default: the shipped "
+    out: Annotated[Path | None, typer.Argument(parser=path_name, metavar="OUT", help="Where the traces go (default: the shipped "
                                                                   "data/demos).")] = None,
-    domains: Annotated[Path | None, typer.Option("--domains", metavar="DIR",
+    domains: Annotated[Path | None, typer.Option("--domains", parser=path_name, metavar="DIR",
                                                  help="The kitchens' domains and problems (default: the shipped "
                                                       "data/domains).")] = None,
     quiet: QuietOption = False,
@@ -33,6 +33,7 @@ def demos(
     byte the shipped data/demos.
     """
     from guided_lfd.demonstration.study_data import render_study
+    from guided_lfd.io import staged_folder
     from guided_lfd.paths import data_root, require
 
     root = data_root(None, "data/domains")
@@ -40,5 +41,6 @@ def demos(
     out = out or root / "data" / "demos"
     require(domains, hint="run from the checkout, or give --domains")
     check_output_folder(out, "OUT")
-    rendered = render_study(domains, out)
+    with staged_folder(out) as stage:  # an interrupted run leaves OUT as it was
+        rendered = render_study(domains, stage)
     ui.info(f"rendered {len(rendered)} demonstrations into {out}")

@@ -7,7 +7,7 @@ from typing import Annotated
 
 import typer
 
-from cli.common import QuietOption, command, help_footer
+from cli.common import QuietOption, command, help_footer, path_name
 from guided_lfd import errors
 
 
@@ -19,14 +19,14 @@ from guided_lfd import errors
 )
 @command
 def quality(
-    demos: Annotated[Path | None, typer.Option("--demos", metavar="DIR",
+    demos: Annotated[Path | None, typer.Option("--demos", parser=path_name, metavar="DIR",
                                                help="Labelled demonstrations, one folder per kitchen (default: "
                                                     "data/demos of the working folder or the installed checkout).")]
     = None,
-    domains: Annotated[Path | None, typer.Option("--domains", metavar="DIR",
+    domains: Annotated[Path | None, typer.Option("--domains", parser=path_name, metavar="DIR",
                                                  help="Each kitchen's human.pddl, the reference for learning "
                                                       "(default: the domains folder beside --demos).")] = None,
-    traces: Annotated[list[Path] | None, typer.Option("--traces", metavar="DIR",
+    traces: Annotated[list[Path] | None, typer.Option("--traces", parser=path_name, metavar="DIR",
                                                        help="Also every source and scenario: an independent trace "
                                                             "source DIR/SCENARIO/CONDITION/*.csv (repeatable), "
                                                             "one row per condition.")] = None,

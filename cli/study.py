@@ -7,7 +7,7 @@ from typing import Annotated
 
 import typer
 
-from cli.common import QuietOption, check_output_folder, command, help_footer, ui
+from cli.common import QuietOption, check_output_folder, command, help_footer, ui, path_name
 from guided_lfd import errors
 
 
@@ -19,10 +19,10 @@ from guided_lfd import errors
 )
 @command
 def study(
-    root: Annotated[Path | None, typer.Option("--root", metavar="DIR", help="Repository root (with data/; default: "
+    root: Annotated[Path | None, typer.Option("--root", parser=path_name, metavar="DIR", help="Repository root (with data/; default: "
                                                                         "the working folder if it has the data, "
                                                                         "else the installed checkout).")] = None,
-    out: Annotated[Path, typer.Option("--out", metavar="DIR", help="Where the results go.")] = Path("results"),
+    out: Annotated[Path, typer.Option("--out", parser=path_name, metavar="DIR", help="Where the results go.")] = Path("results"),
     quiet: QuietOption = False,
 ) -> None:
     """Reproduce the paper's user study from the shipped data.
@@ -33,7 +33,7 @@ def study(
     the paper's.
     """
     from guided_lfd.reporting import PLOTS_HINT
-    from guided_lfd.io import write_text
+    from guided_lfd.io import staged_folder, write_text
     from guided_lfd.paths import data_root, require
     from guided_lfd.study import run_study, side_by_side, write_artefacts, write_report
 
@@ -45,8 +45,10 @@ def study(
     check_output_folder(out, "--out")
     # What guided_lfd.study.reproduce does, keeping write_report's answer: were the plots drawn?
     paper, kitchens = run_study(root, lambda message: ui.info(f"  {message}"))
-    write_artefacts(out, kitchens)
-    if write_report(out, paper, kitchens) is None:
+    with staged_folder(out) as stage:  # an interrupted run leaves --out as it was
+        write_artefacts(stage, kitchens)
+        drawn = write_report(stage, paper, kitchens)
+    if drawn is None:
         ui.info_plain(f"plots skipped: {PLOTS_HINT}")
     write_text("-", side_by_side(paper, kitchens))
     ui.info(f"wrote {out / 'study.md'}")

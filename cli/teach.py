@@ -8,7 +8,7 @@ from typing import Annotated
 
 import typer
 
-from cli.common import (JsonOption, QuietOption, TimeLimitOption, check_inputs, check_time_limit, command, help_footer,
+from cli.common import (JsonOption, path_name, QuietOption, TimeLimitOption, check_inputs, check_time_limit, command, help_footer,
                         one_line, started_at, ui)
 from guided_lfd.deadline import deadline_after, watchdog
 from guided_lfd import errors
@@ -113,10 +113,10 @@ def _check_session(session: Path, inputs: list[str | None]) -> None:
 def teach(
     robot: Annotated[str, typer.Argument(metavar="ROBOT", help="The robot's domain (its skills).")],
     problem: Annotated[str, typer.Argument(metavar="PROBLEM", help="The task to teach.")],
-    session: Annotated[Path, typer.Option("-o", "--output", metavar="SESSION_DIR",
+    session: Annotated[Path, typer.Option("-o", "--output", parser=path_name, metavar="SESSION_DIR",
                                           help="Folder for every round's files, robot.pddl, session.json and "
                                                "session.md.")] = Path("session"),
-    demo: Annotated[list[Path] | None, typer.Option("--demo", metavar="TRACE",
+    demo: Annotated[list[Path] | None, typer.Option("--demo", parser=path_name, metavar="TRACE",
                                                     help="A demonstration's trace CSV (its state file beside it, "
                                                          "TRACE.state.csv); repeatable, one per round, in order.")] = None,
     simulate: Annotated[str | None, typer.Option("--simulate", metavar="HUMAN",

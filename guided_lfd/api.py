@@ -12,6 +12,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any, Sequence
 
 from guided_lfd.deadline import checked_time_limit
+from guided_lfd.errors import OptionError
 from guided_lfd.pddl.model import Domain, Problem
 from guided_lfd.planning.validation import PlanStep, ValidationReport
 
@@ -42,7 +43,9 @@ def read_task(domain: "Source | UPProblem", problem: Source | None = None) -> tu
     if not isinstance(domain, (str, Path)):
         return _read_up_problem(domain, problem)
     if problem is None:
-        raise TypeError("read_task: a domain needs its problem (a path or PDDL text)")
+        raise OptionError("read_task: a domain needs its problem (a path or PDDL text)")
+    if not isinstance(problem, (str, Path)):
+        raise OptionError(f"read_task: expected the problem as a path or PDDL text, got {type(problem).__name__}")
     from guided_lfd.pddl.reader import parse_task
 
     # Text as a file would give it: without a byte-order mark.
@@ -56,7 +59,7 @@ def read_task(domain: "Source | UPProblem", problem: Source | None = None) -> tu
 def _read_up_problem(up_problem: object, problem: Source | None) -> tuple[Domain, Problem]:
     """The task of a unified-planning problem (a problem is not given beside it)."""
     if not type(up_problem).__module__.startswith("unified_planning.") or problem is not None:
-        raise TypeError("read_task: expected a domain and a problem (paths or PDDL text), or a unified-planning "
+        raise OptionError("read_task: expected a domain and a problem (paths or PDDL text), or a unified-planning "
                         f"Problem alone; got {type(up_problem).__name__}"
                         + ("" if problem is None else f" and {type(problem).__name__}"))
     from guided_lfd.up import to_task
@@ -111,9 +114,9 @@ def plan(domain: Domain, problem: Problem, search: str | None = None,
     from guided_lfd.planning import DEFAULT_SEARCH, plan_task
     from guided_lfd.planning.validation import validated
 
-    from guided_lfd.errors import OptionError
     from guided_lfd.planning import SEARCHES
 
+    _check_task("plan", domain, problem)
     search = search or DEFAULT_SEARCH
     if search not in SEARCHES:
         raise OptionError(f"unknown search '{search}' (expected one of: {', '.join(SEARCHES)})")
@@ -127,6 +130,14 @@ def plan(domain: Domain, problem: Problem, search: str | None = None,
     return PlanReport(domain.path, problem.path, steps, report.cost, result.optimal, search, result.time_s)
 
 
+def _check_task(call: str, domain: object, problem: object) -> None:
+    """A domain and a problem of the wrong kind, as the documented :class:`~guided_lfd.errors.OptionError`."""
+    for name, value, kind in (("domain", domain, Domain), ("problem", problem, Problem)):
+        if not isinstance(value, kind):
+            raise OptionError(f"{call}: expected the {name} as a {kind.__name__} (guided_lfd.read_task), got "
+                              f"{type(value).__name__}")
+
+
 def validate(domain: Domain, problem: Problem, plan: Source | Sequence[PlanStep | str]) -> ValidationReport:
     """Execute ``plan`` (a plan file, IPC plan text, or steps) from the initial state; cost included.
 
@@ -136,6 +147,10 @@ def validate(domain: Domain, problem: Problem, plan: Source | Sequence[PlanStep 
     """
     from guided_lfd.planning.validation import parse_plan, parse_plan_text, validate_plan
 
+    _check_task("validate", domain, problem)
+    if not isinstance(plan, (str, Path, list, tuple)):
+        raise OptionError(f"validate: expected the plan as a path, plan text or a list of steps, got "
+                          f"{type(plan).__name__}")
     if isinstance(plan, Path) or (isinstance(plan, str) and not _is_text(plan)):
         steps = parse_plan(str(plan), domain, problem)
     elif isinstance(plan, str):

@@ -5,8 +5,9 @@ from __future__ import annotations
 import os
 import stat
 import sys
+from contextlib import contextmanager
 from pathlib import Path
-from typing import Any
+from typing import Any, Iterator
 
 from guided_lfd.errors import Location, OutputError
 from guided_lfd.pddl.source import read_text
@@ -59,6 +60,43 @@ def write_text(path: str | Path, text: str) -> None:
         if isinstance(exc, OSError):
             raise OutputError(f"cannot write ({exc.strerror or exc})", Location(name)) from None
         raise
+
+
+@contextmanager
+def staged_folder(out: Path) -> Iterator[Path]:
+    """A hidden folder beside ``out`` to write a run's many outputs into; they move into ``out`` when the run ends.
+
+    A run that fails or is interrupted (Ctrl-C, SIGTERM) before then leaves ``out`` as it was and removes the
+    staged files, so a folder of results is never half replaced; the move itself is one rename per file.
+    ``out`` is made if need be (its parents too); files already in ``out`` that the run does not write are kept.
+    """
+    import shutil
+    import tempfile
+
+    try:
+        out.parent.mkdir(parents=True, exist_ok=True)
+        stage = Path(tempfile.mkdtemp(prefix=f".{out.name[:50]}.staged-", dir=out.parent))
+    except OSError as exc:
+        raise OutputError(f"cannot write there ({exc.strerror or exc})", Location(str(out))) from None
+    try:
+        yield stage
+        _move_into(stage, out)
+    finally:
+        shutil.rmtree(stage, ignore_errors=True)
+
+
+def _move_into(stage: Path, out: Path) -> None:
+    """Move every file under ``stage`` to the same place under ``out`` (each an atomic replace)."""
+    try:
+        out.mkdir(exist_ok=True)
+        for folder, subfolders, files in os.walk(stage):
+            target = out / Path(folder).relative_to(stage)
+            for name in subfolders:
+                (target / name).mkdir(exist_ok=True)
+            for name in files:
+                os.replace(Path(folder) / name, target / name)
+    except OSError as exc:
+        raise OutputError(f"cannot write there ({exc.strerror or exc})", Location(str(out))) from None
 
 
 def _output_target(name: str) -> Path:

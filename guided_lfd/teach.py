@@ -627,30 +627,60 @@ def _check_same_task(out: Path, problem: Problem, refuse) -> None:
 @contextmanager
 def replacing_previous_session(out: Path, was_there: bool = True) -> Iterator[None]:
     """Set aside what a previous session of the task left in ``out`` (checked by :func:`check_session_folder`)
-    while the new one runs: it is deleted when the new one ends, and put back as it was if the new one is
-    interrupted (Ctrl-C, SIGTERM), so an interrupted run loses nothing and leaves nothing (``was_there``:
-    whether ``out`` existed before the run; if not, it is removed again)."""
+    while the new one runs: it is deleted when the new one ends, and put back as it was if the new one fails
+    or is interrupted (an error, Ctrl-C, SIGTERM), so such a run loses nothing and leaves nothing (``was_there``:
+    whether ``out`` existed before the run; if not, it is removed again).  A previous session the OS will not
+    let us move is the output error (exit 40), with nothing moved."""
     import shutil
-    import tempfile
 
-    previous = sorted(out.iterdir()) if out.is_dir() else []
-    aside = Path(tempfile.mkdtemp(prefix=f".{out.name}.previous-", dir=out.parent)) if previous else None
-    for entry in previous:
-        entry.rename(aside / entry.name)
+    aside = _set_aside(out)
     try:
         yield
-    except KeyboardInterrupt:
-        for entry in out.iterdir():  # what this run made
-            shutil.rmtree(entry) if entry.is_dir() and not entry.is_symlink() else entry.unlink()
-        if aside is not None:
-            for entry in aside.iterdir():
-                entry.rename(out / entry.name)
-        elif not was_there:
-            out.rmdir()
+    except BaseException:
+        _put_back(out, aside, was_there)
         raise
-    finally:
+    if aside is not None:
+        shutil.rmtree(aside, ignore_errors=True)
+
+
+def _set_aside(out: Path) -> Path | None:
+    """Move the previous session's entries in ``out`` into a new hidden folder beside it (None: nothing there)."""
+    import tempfile
+
+    from guided_lfd.errors import Location, OutputError
+
+    moved: list[Path] = []
+    aside: Path | None = None
+    try:
+        previous = sorted(out.iterdir()) if out.is_dir() else []
+        if not previous:
+            return None
+        aside = Path(tempfile.mkdtemp(prefix=f".{out.name}.previous-", dir=out.parent))
+        for entry in previous:
+            entry.rename(aside / entry.name)
+            moved.append(entry)
+    except OSError as exc:
+        for entry in moved:
+            (aside / entry.name).rename(entry)
         if aside is not None:
-            shutil.rmtree(aside, ignore_errors=True)
+            aside.rmdir()
+        raise OutputError(f"cannot set the previous session aside ({exc.strerror or exc}); nothing was changed",
+                          Location(str(out))) from None
+    return aside
+
+
+def _put_back(out: Path, aside: Path | None, was_there: bool) -> None:
+    """Undo a failed run: remove what it made in ``out``, return the previous session from ``aside``."""
+    import shutil
+
+    for entry in out.iterdir() if out.is_dir() else []:
+        shutil.rmtree(entry) if entry.is_dir() and not entry.is_symlink() else entry.unlink()
+    if aside is not None:
+        for entry in aside.iterdir():
+            entry.rename(out / entry.name)
+        aside.rmdir()
+    elif not was_there and out.is_dir():
+        out.rmdir()
 
 
 def _make_folder(folder: Path) -> Path:

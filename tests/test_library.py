@@ -269,6 +269,12 @@ def test_a_simulated_human_refuses_a_frame_rate_it_cannot_render(kwargs, message
     (lambda d, p: ExcuseOptions(all_minimal="no"), "all_minimal 'no': expected True or False"),
     (lambda d, p: ExcuseOptions(started=float("nan")), "started nan: expected a time.monotonic() value"),
     (lambda d, p: ExcuseOptions(started="x"), "started 'x': expected a time.monotonic() value"),
+    (lambda d, p: read_task(None, None), "read_task: expected a domain and a problem (paths or PDDL text)"),
+    (lambda d, p: read_task(kitchen(1)[0], 3), "read_task: expected the problem as a path or PDDL text, got int"),
+    (lambda d, p: validate(d, p, None), "validate: expected the plan as a path, plan text or a list of steps"),
+    (lambda d, p: validate(None, p, []), "validate: expected the domain as a Domain (guided_lfd.read_task)"),
+    (lambda d, p: validate(d, d, []), "validate: expected the problem as a Problem (guided_lfd.read_task), got"),
+    (lambda d, p: plan(p, d), "plan: expected the domain as a Domain (guided_lfd.read_task), got Problem"),
 ])
 def test_arguments_of_the_wrong_kind_are_option_errors(call, message):
     """#25 second round: these escaped as TypeError/AttributeError, or (nan, 'no') were taken silently."""

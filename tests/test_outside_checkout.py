@@ -50,6 +50,21 @@ def test_quality_and_demos_find_the_shipped_data_from_elsewhere(runner, app, els
     (["bench", "report", "--results", "empty"], EXIT_INPUT_FILE, "empty/results.csv: input error: not found"),
     (["quality", "--traces", "taken"], EXIT_INPUT_FILE, "taken: input error: expected a folder of trace sources"),
     (["study", "--out", "taken/results"], EXIT_OUTPUT, "--out: taken is a file, expected a folder"),
+    # An empty name was the working folder: teach -o '' wrote its session over the files there.
+    (["study", "--out", ""], EXIT_BAD_OPTION, "'--out': expected a file or folder name, got an empty one"),
+    (["demos", ""], EXIT_BAD_OPTION, "'OUT': expected a file or folder name, got an empty one"),
+    (["quality", "--demos", " "], EXIT_BAD_OPTION, "'--demos': expected a file or folder name, got an empty one"),
+    (["bench", "run", "--results", ""], EXIT_BAD_OPTION, "'--results': expected a file or folder name"),
+    (["teach", "robot.pddl", "problem.pddl", "-o", ""], EXIT_BAD_OPTION, "expected a file or folder name, got an"),
+    (["bench", "run", "--suite", "fly.csv", "--only", "blocks-task01-pick-up"], EXIT_INPUT_FILE,
+     "fly.csv: input error: task blocks-task01-pick-up: removed_action 'fly' is no action of"),
+    (["bench", "report", "--results", "nan"], EXIT_INPUT_FILE, "results.csv:2: input error: wall_s 'nan': expected a "
+                                                                "number (at least 0)"),
+    (["bench", "report", "--results", "words"], EXIT_INPUT_FILE, "results.csv:2: input error: size 'big': expected a "
+                                                                  "whole number"),
+    (["bench", "report", "--results", "status"], EXIT_INPUT_FILE, "results.csv:2: input error: status 'fine': expected"),
+    (["bench", "report", "--results", "columns"], EXIT_INPUT_FILE, "results.csv:1: input error: missing column(s) "
+                                                                    "strategy, semantics, status"),
 ])
 def test_bad_data_and_outputs_are_one_line_errors_and_nothing_is_replaced(runner, app, elsewhere, args, code,
                                                                         message):
@@ -59,11 +74,23 @@ def test_bad_data_and_outputs_are_one_line_errors_and_nothing_is_replaced(runner
     (elsewhere / "res" / "results.csv").write_text((ROOT / "benchmarks" / "suite.csv").read_text())
     (elsewhere / "bad.csv").write_text("id,domain\nx,y\n")
     (elsewhere / "short.csv").write_text("id,domain,task,removed_action,domain_file,problem_file,fixed_from\na,b\n")
+    header, first = (ROOT / "benchmarks" / "suite.csv").read_text().splitlines()[:2]
+    (elsewhere / "fly.csv").write_text(f"{header}\n{first.replace(',pick-up,', ',fly,')}\n")
+    head = "id,domain,task,removed_action,semantics,strategy,status,size,cost,wall_s\n"
+    for name, row in (("nan", "a,b,c,d,literal,landmark,excuse-found,1,1,nan"),
+                      ("words", "a,b,c,d,literal,landmark,excuse-found,big,1,1.0"),
+                      ("status", "a,b,c,d,literal,landmark,fine,1,1,1.0")):
+        (elsewhere / name).mkdir()
+        (elsewhere / name / "results.csv").write_text(head + row + "\n")
+    (elsewhere / "columns").mkdir()
+    (elsewhere / "columns" / "results.csv").write_text("id,domain\na,b\n")
+    before = sorted(p.name for p in elsewhere.iterdir())
     result = runner.invoke(app, args)
     assert result.exit_code == code, result.output
     assert message in result.stderr and len(result.stderr.strip().splitlines()) == 1, result.stderr
     assert (elsewhere / "taken").read_text() == "mine"
     assert (elsewhere / "res" / "results.csv").read_text() == (ROOT / "benchmarks" / "suite.csv").read_text()
+    assert sorted(p.name for p in elsewhere.iterdir()) == before
 
 
 def test_quality_takes_the_domains_beside_the_demos_it_is_given(runner, app, elsewhere):

@@ -156,3 +156,54 @@ def test_an_interrupted_first_session_leaves_no_folder(tmp_path):
     with pytest.raises(KeyboardInterrupt):
         teach(robot, problem, human, tmp_path / "session", on_request=interrupt)
     assert list(tmp_path.iterdir()) == []
+
+
+def test_a_previous_session_that_cannot_be_set_aside_is_the_output_error_with_nothing_moved(runner, app, tmp_path,
+                                                                                          monkeypatch):
+    """The OS refuses to move the second entry of the previous session (a read-only folder, a busy file): exit 40
+    in one line, and the entry already moved is back (it was an internal error with the session half moved)."""
+    from pathlib import Path
+
+    session = tmp_path / "session"
+    assert _teach(runner, app, session).exit_code == 0
+    before = {p.relative_to(session): p.read_bytes() for p in session.rglob("*") if p.is_file()}
+    real_rename, calls = Path.rename, []
+
+    def refuse_second(self, target):
+        calls.append(self)
+        if len(calls) == 2:
+            raise PermissionError(13, "Permission denied")
+        return real_rename(self, target)
+
+    monkeypatch.setattr(Path, "rename", refuse_second)
+    result = _teach(runner, app, session)
+    monkeypatch.undo()
+    assert result.exit_code == EXIT_OUTPUT, result.stderr
+    assert result.stderr.strip().endswith("cannot set the previous session aside (Permission denied); nothing was "
+                                          "changed")
+    after = {p.relative_to(session): p.read_bytes() for p in session.rglob("*") if p.is_file()}
+    assert after == before
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["session"]
+
+
+def test_a_session_that_fails_puts_the_previous_one_back(tmp_path):
+    """Not only an interruption: a round that ends in an error the caller sees keeps the previous session too."""
+    import pytest
+
+    from guided_lfd.pddl.reader import parse_domain, parse_task
+    from guided_lfd.teach import SimulatedHuman, teach
+
+    robot, problem = parse_task(ROBOT, PROBLEM)
+    human = SimulatedHuman(parse_domain(HUMAN), robot=robot)
+    session = tmp_path / "session"
+    teach(robot, problem, human, session)
+    before = {p.relative_to(session): p.read_bytes() for p in session.rglob("*") if p.is_file()}
+
+    def fail(rnd) -> None:
+        raise OSError(28, "No space left on device")
+
+    with pytest.raises(OSError):
+        teach(robot, problem, human, session, on_request=fail)
+    after = {p.relative_to(session): p.read_bytes() for p in session.rglob("*") if p.is_file()}
+    assert after == before
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["session"]

@@ -15,7 +15,7 @@ import pytest
 
 from conftest import ROOT
 from guided_lfd.benchmark import cli_command
-from guided_lfd.errors import EXIT_INPUT_FILE, EXIT_OK, EXIT_OUTPUT, EXIT_TERMINATED, Terminated
+from guided_lfd.errors import EXIT_INPUT_FILE, EXIT_BAD_OPTION, EXIT_OK, EXIT_OUTPUT, EXIT_TERMINATED, Terminated
 
 KITCHEN = ROOT / "data" / "domains" / "kitchen-1"
 EXCUSE = [*cli_command(), "excuse", str(KITCHEN / "robot.pddl"), str(KITCHEN / "problem.pddl")]
@@ -165,3 +165,17 @@ def test_a_reader_that_leaves_part_way_is_an_output_error_not_a_cut_success(tmp_
                           capture_output=True, text=True, timeout=120)
     assert proc.returncode == EXIT_OUTPUT, proc.stderr
     assert proc.stderr == "-: output error: standard output closed by the reader (broken pipe)\n"
+
+
+@pytest.mark.parametrize("command", ["plan", "excuse"])
+def test_an_output_naming_the_file_on_standard_input_is_refused_and_kept(tmp_path, command):
+    """``plan - p.pddl -o robot.pddl < robot.pddl``: the output is the input, reached through fd 0 (#25)."""
+    robot = tmp_path / "robot.pddl"
+    robot.write_text((KITCHEN / "robot.pddl").read_text())
+    before = robot.read_bytes()
+    with open(robot, "rb") as stdin:
+        proc = subprocess.run([*cli_command(), command, "-", str(KITCHEN / "problem.pddl"), "-o", str(robot)],
+                              stdin=stdin, capture_output=True, text=True, timeout=120)
+    assert proc.returncode == EXIT_BAD_OPTION, proc.stderr
+    assert proc.stderr.endswith("is the file on standard input ('-'); expected another file\n")
+    assert robot.read_bytes() == before

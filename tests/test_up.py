@@ -294,11 +294,11 @@ def test_read_task_takes_a_up_problem_alone():
     assert domain.actions == want_domain.actions and domain.predicates == want_domain.predicates
     assert (problem.objects, problem.init, problem.goal) == (want_problem.objects, want_problem.init, want_problem.goal)
     assert to_task(read_up(*files)).problem.init == want_problem.init
-    with pytest.raises(TypeError, match="alone"):
+    with pytest.raises(OptionError, match="alone"):
         read_task(read_up(*files), files[1])
-    with pytest.raises(TypeError, match="bytes"):
+    with pytest.raises(OptionError, match="bytes"):
         read_task(b"(define (domain d))", files[1])  # type: ignore[arg-type]
-    with pytest.raises(TypeError, match="needs its problem"):
+    with pytest.raises(OptionError, match="needs its problem"):
         read_task(files[0])
 
 

@@ -28,13 +28,15 @@ from guided_lfd.benchmark.runner import (
     KILL_GRACE_S, STOP_AFTER_UNFINISHED, Run, chains, cli_command, command_line, crashed, not_run, run_chain,
     run_one, run_suite,
 )
-from guided_lfd.benchmark.suite import SUITE_FIELDS, BenchTask, generate_suite, read_suite, robot_domain_file, write_suite
+from guided_lfd.benchmark.suite import (
+    SUITE_FIELDS, BenchTask, check_removed_actions, generate_suite, read_suite, robot_domain_file, write_suite,
+)
 
 __all__ = [
     "FIRST_TASKS", "NONTRIVIAL_S", "SEARCH_TIME_FLOOR", "SIZE_BUCKETS", "Comparison", "compare", "search_speedup",
     "size_bucket", "speedups_by_size", "suite_part", "whole_run_s", "limit_section", "plot", "summary_markdown",
     "GAVE_UP", "RESULT_FIELDS", "SOLVED", "RowLog", "merge_rows", "read_results", "write_results", "KILL_GRACE_S",
     "STOP_AFTER_UNFINISHED", "Run", "chains", "cli_command", "command_line", "crashed", "not_run", "run_chain",
-    "run_one", "run_suite", "SUITE_FIELDS", "BenchTask", "generate_suite", "read_suite", "robot_domain_file",
-    "write_suite", "ResultRow",
+    "run_one", "run_suite", "SUITE_FIELDS", "BenchTask", "generate_suite", "read_suite", "check_removed_actions",
+    "robot_domain_file", "write_suite", "ResultRow",
 ]

@@ -118,6 +118,63 @@ def write_results(rows: list[ResultRow], path: Path) -> None:
 
 
 def read_results(path: Path) -> list[ResultRow]:
-    """Read a results CSV back."""
-    with open(path, newline="", encoding="utf-8") as fh:
-        return [ResultRow.from_csv(record) for record in csv.DictReader(fh)]
+    """Read a results CSV back.  A file without the runs' key columns, a row with another number of cells, an
+    unknown status or a cell that is no number where one is expected (``nan``, ``-1`` seconds) is
+    :class:`~guided_lfd.errors.InputFileError` at its line: a report drawn from it would mean nothing."""
+    from guided_lfd.errors import InputFileError, Location
+
+    rows = []
+    try:
+        with open(path, newline="", encoding="utf-8-sig") as fh:
+            reader = csv.DictReader(fh)
+            missing = [c for c in _REQUIRED if c not in (reader.fieldnames or [])]
+            if missing:
+                raise InputFileError(f"missing column(s) {', '.join(missing)} (expected the results of "
+                                     f"'guided-lfd bench run')", Location(str(path), 1))
+            for record in reader:
+                where = Location(str(path), reader.line_num)
+                if None in record or None in record.values():
+                    raise InputFileError(f"expected {len(reader.fieldnames or [])} cells in the row", where)
+                rows.append(_checked_row(record, where))
+    except (OSError, UnicodeDecodeError, csv.Error) as exc:
+        raise InputFileError(f"cannot read the results ({getattr(exc, 'strerror', None) or exc})",
+                             Location(str(path))) from None
+    return rows
+
+
+#: Columns a results CSV must have (the others may be missing: an empty cell).
+_REQUIRED = ("id", "strategy", "semantics", "status")
+#: Statuses a run can end with: the excuse document's, and the runner's own.
+STATUSES = ("excuse-found", "already-solvable", "no-excuse", "no-excuse-within-size", "timeout", "memout",
+            "not-run", "crashed")
+
+
+def _checked_row(record: dict[str, str], where: Any) -> ResultRow:
+    """``record`` as a row, each number a finite one (seconds and counts at least 0), the status a known one."""
+    import math
+
+    from guided_lfd.errors import InputFileError
+
+    if record["status"] not in STATUSES:
+        raise InputFileError(f"status {record['status']!r}: expected one of {', '.join(STATUSES)}", where)
+    try:
+        row = ResultRow.from_csv(record)
+    except ValueError:
+        bad = next(f for f, kind in _KINDS.items() if not _parses(record.get(f) or "", kind))
+        raise InputFileError(f"{bad} {record[bad]!r}: expected {_EXPECTED[_KINDS[bad]]}", where) from None
+    for name, kind in _KINDS.items():
+        value = getattr(row, name)
+        if value is not None and name != "exit_code" and (not math.isfinite(value) or value < 0):
+            raise InputFileError(f"{name} {record[name]!r}: expected {_EXPECTED[kind]} (at least 0)", where)
+    return row
+
+
+_EXPECTED = {int: "a whole number", float: "a number"}
+
+
+def _parses(text: str, kind: type) -> bool:
+    try:
+        text == "" or kind(text)
+    except ValueError:
+        return False
+    return True

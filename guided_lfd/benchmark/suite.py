@@ -125,6 +125,24 @@ def read_suite(path: Path, root: Path) -> list[BenchTask]:
     return out
 
 
+def check_removed_actions(suite: list[BenchTask], suite_file: Path) -> None:
+    """Refuse a suite row whose ``removed_action`` is no action of its domain (its robot would be the whole
+    domain, and every run of it a meaningless "already solvable"): :class:`~guided_lfd.errors.InputFileError`
+    naming the row's task and the domain file.  Each domain is read once."""
+    from guided_lfd.errors import InputFileError, Location
+    from guided_lfd.pddl.reader import parse_domain
+
+    actions: dict[str, set[str]] = {}
+    for task in suite:
+        if not task.removed_action:
+            continue
+        if task.domain_file not in actions:
+            actions[task.domain_file] = {a.name.lower() for a in parse_domain(task.domain_file).actions}
+        if task.removed_action.lower() not in actions[task.domain_file]:
+            raise InputFileError(f"task {task.id}: removed_action {task.removed_action!r} is no action of "
+                                 f"{task.domain_file}", Location(str(suite_file)))
+
+
 def robot_domain_file(task: BenchTask, folder: Path) -> Path:
     """The robot's domain file for ``task`` (the domain without ``removed_action``), written once."""
     if not task.removed_action:
