@@ -98,6 +98,12 @@ def excuse(
                                 "(adjacency, floors) that no action changes, held fixed by default unless --fixed-from "
                                 "or --human says what can change.")
     ] = False,
+    one_place: Annotated[
+        bool, typer.Option("--one-place/--many-places",
+                           help="Under --semantics consistent, keep each thing a static relation puts in one place "
+                                "((at bot hall), no robot action moving it) in at most one place (default), or let "
+                                "the excuse put it in several.")
+    ] = True,
     verify: Annotated[
         bool, typer.Option("--verify", help="Re-verify the minimum: enumerate every cheaper change set and refuse "
                                             "each with the checker's own invariants and another planner (up to "
@@ -140,7 +146,7 @@ def excuse(
             all_minimal=all_minimal or prefer is not None, max_size=max_size, time_limit=time_limit, slack=slack or 0,
             invariants_from=parse_domain(invariants_from) if invariants_from else None,
             fixed_from=parse_domain(fixed_from) if fixed_from else None, started=started,
-            verify=verify, change_structure=change_structure,
+            verify=verify, change_structure=change_structure, one_place=one_place,
         )
         human_domain = parse_domain(human) if human else None
         if human_domain is not None:

@@ -95,3 +95,70 @@ def test_the_checker_refuses_a_change_to_the_structure():
     held = ExcuseOptions().fixed_predicates(domain, problem)
     change = [Change(Atom("airport", ("depot1",)), True)]
     assert check_excuse(domain, problem, change, [], None, held)[0] == "+(airport depot1) changes airport, which is fixed"
+
+
+FETCH = (str(STRUCTURE / "fetch.pddl"), str(STRUCTURE / "fetch-problem.pddl"))
+
+
+def _places(report) -> list[int]:
+    """How many rooms the robot is in, in each excuse state."""
+    return [sum(1 for a in e.state if a.predicate == "at") for e in report.excuses]
+
+
+def test_a_thing_no_skill_moves_stays_in_one_place():
+    """Without its drive skill the robot is placed by a static relation: no invariant synthesis keeps it in one
+    room, and the cheapest excuse put it in two (+(at bot kitchen) +(at bot study)).  The consistent default keeps
+    it in at most one: it is moved, or the things are brought to it."""
+    domain, problem = parse_task(*FETCH)
+    report = find_excuses(domain, problem, ExcuseOptions(all_minimal=True, verify=True))
+    assert report.excuses[0].cost == 4 and len(report.excuses) == 7
+    assert set(_places(report)) == {1}
+    assert report.statistics.kept_in_one_place == ["at"] and report.statistics.minimality == "verified"
+    moved = sorted(["-(at bot hall)", "+(at bot kitchen)", "+(lies book kitchen)", "-(lies book study)"])
+    assert moved in [sorted(c) for c in _changes(report)]
+
+
+@pytest.mark.parametrize("options", [ExcuseOptions(one_place=False), ExcuseOptions(semantics="literal")])
+def test_many_places_and_the_literal_semantics_let_the_thing_be_in_two(options):
+    domain, problem = parse_task(*FETCH)
+    report = find_excuses(domain, problem, options)
+    assert _changes(report) == [["+(at bot kitchen)", "+(at bot study)"]]
+    assert report.statistics.kept_in_one_place is None
+
+
+def test_the_checker_refuses_a_thing_in_two_places_by_its_own_law():
+    from guided_lfd.excuse.change import Change
+    from guided_lfd.excuse.check import check_excuse
+    from guided_lfd.excuse.laws import derive_laws
+    from guided_lfd.pddl.model import Atom
+
+    domain, problem = parse_task(*FETCH)
+    two = [Change(Atom("at", ("bot", room)), True) for room in ("kitchen", "study")]
+    from guided_lfd.planning.validation import PlanStep
+
+    steps = [PlanStep("pick", ("bot", "cup", "kitchen")), PlanStep("pick", ("bot", "book", "study"))]
+    assert check_excuse(domain, problem, two, steps, derive_laws(domain, problem, one_place=False)) == []
+    assert check_excuse(domain, problem, two, steps, derive_laws(domain, problem)) == [
+        "the excuse state breaks the invariant {(at ?v0 *)} over bot (3 true)"]
+
+
+def test_a_graph_and_a_goal_wanting_two_places_are_no_placement(tmp_path):
+    """A relation over objects that are also its places is a graph (rooms connected in a ring with one neighbour
+    each is no robot in one place); a goal that wants the robot in two rooms refutes the rule."""
+    from guided_lfd.excuse.structure import placing_predicates
+
+    assert placing_predicates(*parse_task(*ROOMS)) == {}
+    assert list(placing_predicates(*parse_task(*FETCH))) == ["at"]
+    problem = tmp_path / "both.pddl"
+    problem.write_text(open(FETCH[1]).read().replace("(:goal (and", "(:goal (and (at bot kitchen) (at bot study)"))
+    domain, task = parse_task(FETCH[0], str(problem))
+    report = find_excuses(domain, task)
+    assert report.statistics.kept_in_one_place is None
+    assert "{(at ?v0 *)} (one place)" in report.statistics.invariants_refuted_by_goal
+
+
+def test_many_places_on_the_command_line(runner, app):
+    one = json.loads(runner.invoke(app, ["excuse", *FETCH, "--json"]).stdout)
+    many = json.loads(runner.invoke(app, ["excuse", *FETCH, "--json", "--many-places"]).stdout)
+    assert (one["excuse"]["size"], many["excuse"]["size"]) == (4, 2)
+    assert one["statistics"]["kept_in_one_place"] == ["at"] and "kept_in_one_place" not in many["statistics"]

@@ -74,6 +74,9 @@ class ExcuseOptions:
     #: Let the excuse change the world's structure (kinds of things, fixed graphs: see
     #: :mod:`guided_lfd.excuse.structure`), held fixed by default when no ``fixed_from`` model says what can change.
     change_structure: bool = False
+    #: Under the consistent semantics, keep an object that a static predicate puts in one place (``(at bot hall)``,
+    #: no robot action moving it) in at most one (:func:`guided_lfd.excuse.structure.placing_predicates`).
+    one_place: bool = True
 
     def __post_init__(self) -> None:
         from guided_lfd.errors import OptionError
@@ -90,7 +93,7 @@ class ExcuseOptions:
             raise OptionError(f"max_size {self.max_size!r}: expected a number of changes >= 0 (or None)")
         if isinstance(self.slack, bool) or not isinstance(self.slack, int) or self.slack < 0:
             raise OptionError(f"slack {self.slack!r}: expected a whole cost >= 0")
-        for name in ("all_minimal", "optimal_plans", "verify", "change_structure"):
+        for name in ("all_minimal", "optimal_plans", "verify", "change_structure", "one_place"):
             if not isinstance(getattr(self, name), bool):
                 raise OptionError(f"{name} {getattr(self, name)!r}: expected True or False")
         started = self.started
@@ -462,7 +465,8 @@ class _Run:
             return None
         if self._laws is None:
             remaining = 300.0 if self.deadline is None else max(1.0, self.deadline - time.monotonic())
-            self._laws = derive_laws(self.options.invariants_from or self.domain, self.problem, remaining)
+            self._laws = derive_laws(self.options.invariants_from or self.domain, self.problem, remaining,
+                                     self.options.one_place)
         return self._laws
 
     def verify_minimality(self, report: ExcuseReport) -> None:
@@ -492,7 +496,7 @@ class _Run:
         self._enter("grounding")
         self.fixed = fixed = options.fixed_predicates(self.domain, self.problem)
         prepared = prepare(self.domain, self.problem, options.semantics, fixed, options.costs,
-                           options.invariants_from, self.deadline, self._enter)
+                           options.invariants_from, self.deadline, self._enter, options.one_place)
         task, space, oracle = prepared.task, prepared.space, prepared.oracle
         self.space = space
         stats = self.stats
@@ -502,6 +506,7 @@ class _Run:
         stats.fixed_predicates = fixed
         stats.structure_held = options.held_structure(self.domain, self.problem) or None
         stats.invariants_refuted_by_goal = prepared.refuted or None
+        stats.kept_in_one_place = prepared.kept_in_one_place or None
         self.unachievable = unachievable_goals(task)
         if adl:
             from guided_lfd.excuse.adl import search_adl

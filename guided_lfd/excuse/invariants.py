@@ -155,6 +155,32 @@ def mutex_groups(source: Domain, task: GroundTask, deadline: float | None = None
     return [unique[m] for m in sorted(unique)]
 
 
+def placement_groups(task: GroundTask, placing: dict[str, str], groups: list[MutexGroup],
+                     refuted: list[str] | None = None) -> tuple[list[MutexGroup], list[str]]:
+    """``groups`` with "at most one" added for each object a ``placing`` predicate puts in one place
+    (:func:`guided_lfd.excuse.structure.placing_predicates`), and the predicates that added some; a predicate
+    the goal wants true of one object twice is no such law (it goes to ``refuted``)."""
+    masks: dict[str, dict[str, int]] = {}
+    for i, atom in enumerate(task.atoms):
+        if atom.predicate in placing and len(atom.args) == 2:
+            by_object = masks.setdefault(atom.predicate, {})
+            by_object[atom.args[0]] = by_object.get(atom.args[0], 0) | (1 << i)
+    have = {g.mask for g in groups}
+    added: list[MutexGroup] = []
+    kept: list[str] = []
+    for name, by_object in sorted(masks.items()):
+        law = f"{{({name} ?v0 *)}} (one place)"
+        if any(_goal_breaks(task, mask, False) for mask in by_object.values()):
+            if refuted is not None:
+                refuted.append(law)
+            continue
+        new = [MutexGroup(mask, False, law) for _, mask in sorted(by_object.items())
+               if mask.bit_count() > 1 and mask not in have and (task.init & mask).bit_count() <= 1]
+        added += new
+        kept += [name] if new else []
+    return sorted([*groups, *added], key=lambda g: g.mask), kept
+
+
 def _goal_breaks(task: GroundTask, mask: int, exactly_one: bool) -> bool:
     """Whether no state satisfying ``task``'s goal keeps the group ``mask`` (at most one, or exactly one, true)."""
     return (task.goal_pos & mask).bit_count() > 1 or (exactly_one and not mask & ~task.goal_neg)

@@ -108,13 +108,16 @@ class WorldLaws:
         return problems
 
 
-def derive_laws(source: Domain, problem: Problem, max_time: float = 300.0) -> WorldLaws:
-    """The laws from ``source`` (the robot's domain, or ``--invariants-from``) for ``problem``."""
+def derive_laws(source: Domain, problem: Problem, max_time: float = 300.0, one_place: bool = True) -> WorldLaws:
+    """The laws from ``source`` (the robot's domain, or ``--invariants-from``) for ``problem``; with ``one_place``,
+    also "in at most one place" for each static two-argument relation of ``source`` that holds of each object it
+    names exactly once in the initial state (nothing in ``source`` moves those objects)."""
     kept: list[WorldLaw] = []
     counts: list[dict[tuple[str, ...], int]] = []
     dropped: list[str] = []
     objects = objects_by_type(source, problem)
-    for parts in _synthesised(source, max_time):
+    placing = [((name, (0, _COUNTED)),) for name in _placing(source, problem)] if one_place else []
+    for parts in [*_synthesised(source, max_time), *placing]:
         law = WorldLaw(parts, False)
         law = replace(law, exactly_one=all(_keeps_count(action, law) for action in source.actions))
         before = law.groups(problem.init)
@@ -124,6 +127,22 @@ def derive_laws(source: Domain, problem: Problem, max_time: float = 300.0) -> Wo
         kept.append(law)
         counts.append(before)
     return WorldLaws(tuple(kept), tuple(counts), tuple(dropped))
+
+
+def _placing(source: Domain, problem: Problem) -> list[str]:
+    """The static relations of two arguments true of each object they name first exactly once initially, none of
+    those objects also named second (that would be a graph over them)."""
+    changed = {a.predicate for action in source.actions for a in (*action.add, *action.delete)}
+    changed |= {e.literal.atom.predicate for action in source.actions for e in action.effects}
+    changed |= set(source.derived_predicates())
+    first: dict[str, list[str]] = {}
+    second: dict[str, set[str]] = {}
+    for atom in problem.init:
+        if atom.predicate not in changed and len(atom.args) == 2 and atom.predicate != EQUALITY:
+            first.setdefault(atom.predicate, []).append(atom.args[0])
+            second.setdefault(atom.predicate, set()).add(atom.args[1])
+    return sorted(name for name, things in first.items()
+                  if name in source.predicates and len(things) == len(set(things)) and not second[name] & set(things))
 
 
 def _goal_breaks(law: WorldLaw, before: dict, problem: Problem, objects: dict[str, list[str]], domain: Domain) -> bool:

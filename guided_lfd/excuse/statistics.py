@@ -28,6 +28,8 @@ class ExcuseStatistics:
     structure_held: dict[str, str] | None = None
     #: Invariants left out of the consistent semantics because the task's goal breaks them (no law of the world).
     invariants_refuted_by_goal: list[str] | None = None
+    #: Placing predicates no robot action changes whose objects the consistent semantics keeps in one place.
+    kept_in_one_place: list[str] | None = None
     #: No excuse keeps the invariants, but the literal semantics has one (``literal_excuse``): those it breaks.
     invariants_in_the_way: list[str] | None = None
     literal_excuse: list[str] | None = None

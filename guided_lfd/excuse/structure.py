@@ -28,7 +28,7 @@ from collections.abc import Sequence
 
 from guided_lfd.pddl.model import EQUALITY, Domain, Problem
 
-__all__ = ["structural_predicates"]
+__all__ = ["placing_predicates", "structural_predicates"]
 
 
 def structural_predicates(domain: Domain, problem: Problem, models: Sequence[Domain] = ()) -> dict[str, str]:
@@ -55,6 +55,26 @@ def structural_predicates(domain: Domain, problem: Problem, models: Sequence[Dom
             why = _graph([t for _, t in params], typed, moved)
         if why:
             out[name] = why
+    return out
+
+
+def placing_predicates(source: Domain, problem: Problem) -> dict[str, str]:
+    """The static two-argument predicates of ``source`` that place things, each with why: every object they say
+    anything of is in exactly one place in ``problem``'s initial state (``(at bot hall)``), and no place is itself
+    placed (a relation whose objects are also its places, ``(connected hall office)``, is a graph).  No action of
+    ``source`` moves those objects (its skill to is missing), so no invariant synthesis keeps them in one place;
+    under the consistent semantics the excuse keeps each in at most one all the same."""
+    static = set(source.predicates) - source.fluent_predicates() - source.derived_predicates() - {EQUALITY}
+    pairs: dict[str, list[tuple[str, ...]]] = {}
+    for atom in problem.init:
+        if atom.predicate in static and len(atom.args) == 2:
+            pairs.setdefault(atom.predicate, []).append(atom.args)
+    out = {}
+    for name, found in sorted(pairs.items()):
+        things = [args[0] for args in found]
+        if (len(source.predicates[name].params) == 2 and len(set(things)) == len(things)
+                and not set(things) & {args[1] for args in found}):
+            out[name] = f"places things: each of {len(things)} object(s) in one place, and no action moves them"
     return out
 
 
