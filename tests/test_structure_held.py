@@ -14,6 +14,7 @@ import pytest
 from conftest import DATA, kitchen
 from guided_lfd.excuse.engine import ExcuseOptions, find_excuses
 from guided_lfd.excuse.structure import structural_predicates
+from guided_lfd.pddl.model import Atom
 from guided_lfd.pddl.reader import parse_domain, parse_task
 
 STRUCTURE = DATA / "structure"
@@ -162,3 +163,41 @@ def test_many_places_on_the_command_line(runner, app):
     many = json.loads(runner.invoke(app, ["excuse", *FETCH, "--json", "--many-places"]).stdout)
     assert (one["excuse"]["size"], many["excuse"]["size"]) == (4, 2)
     assert one["statistics"]["kept_in_one_place"] == ["at"] and "kept_in_one_place" not in many["statistics"]
+
+
+def _without(family: str, task: str, action: str):
+    """An IPC task of the shipped collection with the robot lacking ``action``."""
+    from dataclasses import replace
+
+    from conftest import ROOT
+
+    folder = ROOT / "data" / "benchmarks" / "ipc" / family
+    domain, problem = parse_task(str(folder / "domain.pddl"), str(folder / f"{task}.pddl"))
+    return replace(domain, actions=[a for a in domain.actions if a.name != action]), problem
+
+
+@pytest.mark.parametrize("family, task, action, predicate, why", [
+    # Goal squares beside non-goal squares: the two classify the board's cells (it was a state: +(is-goal p)).
+    ("sokoban", "task01", "move", "is-goal", "a kind: classifies location objects with is-nongoal"),
+    # Each lift reaches several floors: a capability, not where the lift is (it was +(reachable-floor fast0 n3)).
+    ("elevators", "task01", "move-up-slow", "reachable-floor",
+     "a fixed relation: some elevator related to several count objects (a map or a capability)"),
+    # Each camera is on one rover, and a rover is no place things move to.
+    ("rovers", "task03", "navigate", "on_board",
+     "a fixed attribute: each camera has one rover, which is no place things move to"),
+])
+def test_capabilities_and_classes_the_complete_domain_never_changes_are_held(family, task, action, predicate, why):
+    assert structural_predicates(*_without(family, task, action))[predicate] == why
+
+
+def test_where_the_robot_is_stays_changeable():
+    """Untyped gripper without move: (at-robby rooma) singles out one room among the rooms, a place a person can
+    carry the robot to (it was held as a kind, and the answer was 'no excuse'); rovers without navigate: the
+    rovers' waypoints are places (a graph of them), so (at rover waypoint) stays changeable, one place each."""
+    robot, problem = _without("gripper", "task01", "move")
+    assert "at-robby" not in structural_predicates(robot, problem)
+    report = find_excuses(robot, problem)
+    assert report.statistics.kept_in_one_place == ["at-robby"]  # a marker of one room: the robot is in one
+    assert [a for a in report.excuses[0].state if a.predicate == "at-robby"] == [Atom("at-robby", ("roomb",))]
+    robot, problem = _without("rovers", "task03", "navigate")
+    assert "at" not in structural_predicates(robot, problem)

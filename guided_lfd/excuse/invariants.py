@@ -160,16 +160,17 @@ def placement_groups(task: GroundTask, placing: dict[str, str], groups: list[Mut
     """``groups`` with "at most one" added for each object a ``placing`` predicate puts in one place
     (:func:`guided_lfd.excuse.structure.placing_predicates`), and the predicates that added some; a predicate
     the goal wants true of one object twice is no such law (it goes to ``refuted``)."""
-    masks: dict[str, dict[str, int]] = {}
+    masks: dict[str, dict[tuple[str, ...], int]] = {}
     for i, atom in enumerate(task.atoms):
-        if atom.predicate in placing and len(atom.args) == 2:
+        if atom.predicate in placing and atom.args:
             by_object = masks.setdefault(atom.predicate, {})
-            by_object[atom.args[0]] = by_object.get(atom.args[0], 0) | (1 << i)
+            key = atom.args[:-1]  # the thing placed (none for a one-argument marker: where the robot is)
+            by_object[key] = by_object.get(key, 0) | (1 << i)
     have = {g.mask for g in groups}
     added: list[MutexGroup] = []
     kept: list[str] = []
     for name, by_object in sorted(masks.items()):
-        law = f"{{({name} ?v0 *)}} (one place)"
+        law = f"{{({name} ?v0 *)}} (one place)" if len(next(iter(by_object))) else f"{{({name} *)}} (one place)"
         if any(_goal_breaks(task, mask, False) for mask in by_object.values()):
             if refuted is not None:
                 refuted.append(law)

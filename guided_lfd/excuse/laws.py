@@ -116,7 +116,7 @@ def derive_laws(source: Domain, problem: Problem, max_time: float = 300.0, one_p
     counts: list[dict[tuple[str, ...], int]] = []
     dropped: list[str] = []
     objects = objects_by_type(source, problem)
-    placing = [((name, (0, _COUNTED)),) for name in _placing(source, problem)] if one_place else []
+    placing = [(part,) for part in _placing(source, problem)] if one_place else []
     for parts in [*_synthesised(source, max_time), *placing]:
         law = WorldLaw(parts, False)
         law = replace(law, exactly_one=all(_keeps_count(action, law) for action in source.actions))
@@ -129,20 +129,30 @@ def derive_laws(source: Domain, problem: Problem, max_time: float = 300.0, one_p
     return WorldLaws(tuple(kept), tuple(counts), tuple(dropped))
 
 
-def _placing(source: Domain, problem: Problem) -> list[str]:
-    """The static relations of two arguments true of each object they name first exactly once initially, none of
-    those objects also named second (that would be a graph over them)."""
+def _placing(source: Domain, problem: Problem) -> list[tuple[str, tuple[int, ...]]]:
+    """The static predicates that place things, as (predicate, argument roles) of an "at most one" law: relations
+    of two arguments true of each object they name first exactly once initially, none of those objects also
+    named second (that would be a graph over them); and, where all objects are untyped, a one-argument
+    predicate true of exactly one object that a changing relation names second (where the robot is)."""
     changed = {a.predicate for action in source.actions for a in (*action.add, *action.delete)}
     changed |= {e.literal.atom.predicate for action in source.actions for e in action.effects}
     changed |= set(source.derived_predicates())
-    first: dict[str, list[str]] = {}
-    second: dict[str, set[str]] = {}
+    args_of: dict[str, list[tuple[str, ...]]] = {}
     for atom in problem.init:
-        if atom.predicate not in changed and len(atom.args) == 2 and atom.predicate != EQUALITY:
-            first.setdefault(atom.predicate, []).append(atom.args[0])
-            second.setdefault(atom.predicate, set()).add(atom.args[1])
-    return sorted(name for name, things in first.items()
-                  if name in source.predicates and len(things) == len(set(things)) and not second[name] & set(things))
+        args_of.setdefault(atom.predicate, []).append(atom.args)
+    untyped = all(t == "object" for t in (*problem.objects.values(), *source.constants.values()))
+    places = {args[1] for name in changed for args in args_of.get(name, []) if len(args) == 2}
+    out: list[tuple[str, tuple[int, ...]]] = []
+    for name, rows in sorted(args_of.items()):
+        if name in changed or name == EQUALITY or name not in source.predicates:
+            continue
+        width = len(source.predicates[name].params)
+        firsts = [row[0] for row in rows if row]
+        if width == 2 and len(firsts) == len(set(firsts)) and not {row[1] for row in rows} & set(firsts):
+            out.append((name, (0, _COUNTED)))
+        elif width == 1 and untyped and len(rows) == 1 and rows[0][0] in places:
+            out.append((name, (_COUNTED,)))
+    return out
 
 
 def _goal_breaks(law: WorldLaw, before: dict, problem: Problem, objects: dict[str, list[str]], domain: Domain) -> bool:

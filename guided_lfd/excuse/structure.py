@@ -7,13 +7,16 @@ demonstrate.  Without a model of what the human can change (``--human``,
 things are or how places connect:
 
 * **kinds**: a one-argument predicate no action changes, true of some objects,
-  and true of every object of a type it is true of (``(graspable ?x)`` true of
-  each plate; in a domain without types, any such predicate: the domain's types
-  are written as predicates there);
-* **a fixed graph**: a predicate no action changes, with true atoms, relating
-  two or more objects of one type (rooms, floors, grid positions), or objects
-  no action moves (no action's effect places an object of their types
-  somewhere: ``(in-city ?l - location ?c - city)``).
+  and true of every object of a type it is true of, or of exactly the objects of a
+  type another such predicate is false of (``is-goal`` beside ``is-nongoal``); in a
+  domain without types, any such predicate (the domain's types are written as
+  predicates there) but a marker of one place (``(at-robby rooma)``);
+* **a fixed graph or map**: a predicate no action changes, with true atoms,
+  relating two or more objects of one type (rooms, floors, grid positions),
+  objects no action moves (no action's effect places an object of their types
+  somewhere: ``(in-city ?l - location ?c - city)``), one object to several (a map
+  or a capability: ``(reachable-floor ?lift ?floor)``), or each object to one
+  that is no place (``(on_board ?camera ?rover)``).
 
 A static predicate true of nothing (``open`` in a kitchen where the robot cannot
 open, no drawer open yet) or true of some objects of a type and not others
@@ -37,68 +40,128 @@ def structural_predicates(domain: Domain, problem: Problem, models: Sequence[Dom
     static = set(domain.predicates) - domain.fluent_predicates() - domain.derived_predicates() - {EQUALITY}
     for model in models:
         static -= model.fluent_predicates()
-    objects = {**domain.constants, **problem.objects}
-    typed = any(t != "object" for t in objects.values())
-    true_args: dict[str, list[tuple[str, ...]]] = {}
-    for atom in problem.init:
-        true_args.setdefault(atom.predicate, []).append(atom.args)
-    moved = set().union(*(_moved_types(d) for d in (domain, *models)))
+    world = _World(domain, problem, static, models)
     out: dict[str, str] = {}
     for name in sorted(static):
         params = domain.predicates[name].params
-        found = true_args.get(name, [])
-        if not found or not params:
+        found = world.true_args.get(name, [])
+        if params and name in domain.types:
+            why: str | None = f"a kind: the type {name}"
+        elif not found or not params:
             continue
-        if len(params) == 1:
-            why = _kind(domain, objects, params[0][1], {args[0] for args in found}, typed)
+        elif len(params) == 1:
+            why = world.kind(name, params[0][1])
         else:
-            why = _graph([t for _, t in params], typed, moved)
+            why = world.relation(name, [t for _, t in params])
         if why:
             out[name] = why
     return out
 
 
+class _World:
+    """What the structure rules look at: the objects, the true atoms of each predicate, which types move."""
+
+    def __init__(self, domain: Domain, problem: Problem, static: set[str], models: Sequence[Domain]) -> None:
+        self.domain, self.static = domain, static
+        self.objects = {**domain.constants, **problem.objects}
+        self.typed = any(t != "object" for t in self.objects.values())
+        self.true_args: dict[str, list[tuple[str, ...]]] = {}
+        for atom in problem.init:
+            self.true_args.setdefault(atom.predicate, []).append(atom.args)
+        self.moved = set().union(*(_moved_types(d) for d in (domain, *models)))
+        self.places = _place_types(domain, static, models, self.true_args)
+
+    def holders(self, name: str) -> set[str]:
+        return {args[0] for args in self.true_args.get(name, [])}
+
+    def kind(self, name: str, param_type: str) -> str | None:
+        """Why a one-argument static predicate names a kind of thing (None: it names a state)."""
+        holders = self.holders(name)
+        unary = [p for p in self.static if p != name and len(self.domain.predicates[p].params) == 1]
+        if not self.typed:
+            # The types are predicates here; one object singled out within a kind ((at-robby rooma) among the
+            # rooms) marks where something is, which a person can change.
+            if len(holders) == 1 and any(holders < self.holders(p) for p in unary):
+                return None
+            return f"a kind: true of {len(holders)} object(s) in a domain whose types are predicates"
+        below = self.domain.subtypes().get(param_type, {param_type})
+        eligible = {o: t for o, t in self.objects.items() if t in below}
+        kinds = {eligible[o] for o in holders if o in eligible}
+        if not any((o in holders) != (t in kinds) for o, t in eligible.items()):
+            return f"a kind: true of every {', '.join(sorted(kinds))}"
+        # True of some objects of a type: a state ((clear d1), one drawer blocked), unless another static
+        # predicate is true of exactly the others ((is-goal p) beside (is-nongoal p)): the two classify them.
+        rest = set(eligible) - holders
+        partner = next((p for p in sorted(unary) if self.holders(p) & set(eligible) == rest), None)
+        return None if partner is None else f"a kind: classifies {param_type} objects with {partner}"
+
+    def relation(self, name: str, types: list[str]) -> str | None:
+        """Why a static relation over arguments of ``types`` is the world's structure (None: it may place things
+        a person can move)."""
+        repeated = sorted({t for t in types if types.count(t) > 1})
+        if repeated:
+            over = "objects" if not self.typed and repeated == ["object"] else f"{repeated[0]} objects"
+            return f"a fixed graph over {over}"
+        if self.typed and not self.moved & set(types):
+            return f"a fixed relation of {', '.join(types)} objects, which no action moves"
+        firsts = [args[0] for args in self.true_args[name]]
+        if len(firsts) != len(set(firsts)):
+            return f"a fixed relation: some {types[0]} related to several {types[1]} objects (a map or a capability)"
+        if self.typed and not self.places & set(types[1:]):
+            return f"a fixed attribute: each {types[0]} has one {types[1]}, which is no place things move to"
+        return None
+
+
 def placing_predicates(source: Domain, problem: Problem) -> dict[str, str]:
-    """The static two-argument predicates of ``source`` that place things, each with why: every object they say
-    anything of is in exactly one place in ``problem``'s initial state (``(at bot hall)``), and no place is itself
-    placed (a relation whose objects are also its places, ``(connected hall office)``, is a graph).  No action of
-    ``source`` moves those objects (its skill to is missing), so no invariant synthesis keeps them in one place;
-    under the consistent semantics the excuse keeps each in at most one all the same."""
+    """The static predicates of ``source`` that place things, each with why.
+
+    * Two arguments: every object they say anything of is in exactly one place in ``problem``'s initial state
+      (``(at bot hall)``), and no place is itself placed (a relation whose objects are also its places,
+      ``(connected hall office)``, is a graph).
+    * One argument, in a domain whose types are predicates: true of exactly one object, a place (where a changing
+      relation puts things: ``(at-robby rooma)`` beside ``(at ball1 rooma)``): it says where the robot is.
+
+    No action of ``source`` moves those objects (its skill to is missing), so no invariant synthesis keeps them in
+    one place; under the consistent semantics the excuse keeps each in at most one all the same."""
     static = set(source.predicates) - source.fluent_predicates() - source.derived_predicates() - {EQUALITY}
-    pairs: dict[str, list[tuple[str, ...]]] = {}
+    found: dict[str, list[tuple[str, ...]]] = {}
     for atom in problem.init:
-        if atom.predicate in static and len(atom.args) == 2:
-            pairs.setdefault(atom.predicate, []).append(atom.args)
+        found.setdefault(atom.predicate, []).append(atom.args)
+    objects = {**source.constants, **problem.objects}
+    untyped = all(t == "object" for t in objects.values())
+    places = {args[1] for name in source.fluent_predicates() for args in found.get(name, []) if len(args) == 2}
     out = {}
-    for name, found in sorted(pairs.items()):
-        things = [args[0] for args in found]
-        if (len(source.predicates[name].params) == 2 and len(set(things)) == len(things)
-                and not set(things) & {args[1] for args in found}):
+    for name in sorted(static & set(found)):
+        arity, args = len(source.predicates[name].params), found[name]
+        if arity not in (1, 2):
+            continue
+        things = [a[0] for a in args]
+        if arity == 2 and len(set(things)) == len(things) and not set(things) & {a[1] for a in args}:
             out[name] = f"places things: each of {len(things)} object(s) in one place, and no action moves them"
+        elif arity == 1 and untyped and len(things) == 1 and things[0] in places:
+            out[name] = f"marks where something is: true of one place ({things[0]}), and no action moves it"
     return out
 
 
-def _kind(domain: Domain, objects: dict[str, str], param_type: str, holders: set[str], typed: bool) -> str | None:
-    """Why a one-argument static predicate true of ``holders`` names a kind of thing (None: it names a state)."""
-    if not typed:
-        return f"a kind: true of {len(holders)} object(s) in a domain whose types are predicates"
-    below = domain.subtypes().get(param_type, {param_type})
-    eligible = {o: t for o, t in objects.items() if t in below}
-    kinds = {eligible[o] for o in holders if o in eligible}
-    if any((o in holders) != (t in kinds) for o, t in eligible.items()):
-        return None  # true of some objects of a type and not of others: a state
-    return f"a kind: true of every {', '.join(sorted(kinds))}"
-
-
-def _graph(types: list[str], typed: bool, moved: set[str]) -> str | None:
-    """Why a static relation over arguments of ``types`` is a fixed graph (None: it may relate things that move)."""
-    repeated = sorted({t for t in types if types.count(t) > 1})
-    if repeated:
-        over = "objects" if not typed and repeated == ["object"] else f"{repeated[0]} objects"
-        return f"a fixed graph over {over}"
-    if typed and not moved & set(types):
-        return f"a fixed relation of {', '.join(types)} objects, which no action moves"
-    return None
+def _place_types(domain: Domain, static: set[str], models: Sequence[Domain],
+                 true_args: dict[str, list[tuple[str, ...]]]) -> set[str]:
+    """The types of places, with their subtypes: nodes of a static graph (a type repeated in a static relation:
+    rooms, waypoints), and where a changing relation of two arguments puts each thing it names once initially
+    (the rooms of ``(lies ?i ?room)``; not the rovers of ``(calibrated ?c ?r)``, true of nothing yet)."""
+    subtypes = domain.subtypes()
+    places: set[str] = set()
+    for name, predicate in domain.predicates.items():
+        types = [t for _, t in predicate.params]
+        if name in static and len(types) >= 2:
+            places |= {t for t in types if types.count(t) > 1}
+    for model in (domain, *models):
+        for name in model.fluent_predicates():
+            if name not in model.predicates or len(model.predicates[name].params) != 2:
+                continue
+            firsts = [args[0] for args in true_args.get(name, []) if len(args) == 2]
+            if firsts and len(firsts) == len(set(firsts)):
+                places.add(model.predicates[name].params[1][1])
+    return set().union(*(subtypes.get(t, {t}) for t in places)) if places else set()
 
 
 def _moved_types(domain: Domain) -> set[str]:
