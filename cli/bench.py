@@ -66,7 +66,9 @@ def bench(
         raise OptionError(f"--executor {executor}: expected local or dask")
     root, ipc, suite, results = _paths(step, root, ipc, suite, results)
     _check_options(time_limit, jobs, strategies, semantics)
+    _check_strategy_names(stop_after_unfinished, "--stop-after-unfinished")
     if step == "generate":
+        _check_task_names(tasks, ipc)
         tasks_found = benchmark.generate_suite(ipc, root / "data" / "domains", tasks.split(","), log=ui.info_plain)
         benchmark.write_suite(tasks_found, suite, root)
         ui.info(f"{len(tasks_found)} tasks over {len({t.domain for t in tasks_found})} domains -> {suite}")
@@ -96,7 +98,7 @@ def bench(
 def _paths(step: str, root: Path | None, ipc: Path | None, suite: Path | None,
            results: Path | None) -> tuple[Path, Path, Path, Path]:
     """The root (see :mod:`guided_lfd.paths`) and the folders and files a step uses, checked before any work."""
-    from cli.common import check_output_folder
+    from cli.common import check_apart, check_output_folder
     from guided_lfd.paths import data_root, require
 
     root = data_root(root, "benchmarks/suite.csv" if step != "generate" else "data/benchmarks/ipc")
@@ -110,6 +112,8 @@ def _paths(step: str, root: Path | None, ipc: Path | None, suite: Path | None,
         require(suite, hint="give an existing --suite CSV, or --root DIR")
     if step != "generate":
         check_output_folder(results, "--results")
+        if step != "report":  # report reads results.csv where it writes: that folder is its own
+            check_apart(results, "--results", [root / "data", ipc], root)
         _not_inside(suite, [results], "--suite")
     if step == "report":
         require(results / "results.csv", hint="run the benchmark first (bench run), or give --results DIR")
@@ -127,6 +131,27 @@ def _not_inside(path: Path, folders: list[Path], option: str) -> None:
 
 #: More runs at a time than this is no setting for one machine (each run is a process of its own).
 MAX_JOBS = 256
+
+
+def _check_strategy_names(names: str, option: str) -> None:
+    """Refuse (exit 37) a list naming a strategy that does not exist ('' names none)."""
+    from guided_lfd.excuse.strategies import STRATEGIES
+
+    for name in (n for n in names.split(",") if n):
+        if name not in STRATEGIES:
+            raise OptionError(f"{option} {names}: unknown strategy '{name}' (expected some of: "
+                              f"{', '.join(STRATEGIES)})")
+
+
+def _check_task_names(tasks: str, ipc: Path) -> None:
+    """Refuse (exit 37) a --tasks list that is empty or names a task no family of the collection has."""
+    names = [t.strip() for t in tasks.split(",") if t.strip()]
+    if not names:
+        raise OptionError(f"--tasks {tasks!r}: expected comma-separated task names (task01,task02)")
+    families = [d for d in ipc.iterdir() if d.is_dir()]
+    for name in names:
+        if not any((d / f"{name}.pddl").is_file() for d in families):
+            raise OptionError(f"--tasks {tasks}: no family of {ipc} has a task '{name}'")
 
 
 def _check_options(time_limit: float, jobs: int, strategies: str, semantics: str) -> None:

@@ -15,7 +15,7 @@ import typer
 from cli.startup import resume_gc
 from guided_lfd.errors import (
     EXIT_BAD_OPTION, EXIT_CODES, EXIT_INTERNAL, EXIT_INTERRUPTED, EXIT_MEMORY, EXIT_OK, EXIT_TERMINATED, EXIT_USAGE,
-    GuidedLfdError, OptionError, Terminated,
+    GuidedLfdError, InputFileError, Location, OptionError, Terminated,
 )
 from guided_lfd.deadline import checked_time_limit
 from guided_lfd.io import check_writable, write_text
@@ -241,6 +241,21 @@ def check_output_folder(folder: "Path", option: str) -> None:
         raise OutputError(f"{option}: cannot write into {existing} (permission denied)", Location(str(folder)))
 
 
+def check_apart(out: "Path", option: str, inputs: "list[Path]", root: "Path | None" = None) -> None:
+    """Refuse (exit 37), before any work, an output folder that is one of the folders a run reads or lies in one,
+    or is the data's ``root`` itself: the run would mix its files into its own inputs."""
+    try:
+        where = out.resolve()
+        if root is not None and where == root.resolve():
+            raise OptionError(f"{option} {out}: is the data's root ({root}); expected a folder of its own")
+        for folder in inputs:
+            if folder.exists() and where.is_relative_to(folder.resolve()):
+                raise OptionError(f"{option} {out}: lies in {folder}, which this run reads; expected a folder "
+                                  "elsewhere")
+    except (OSError, RuntimeError):  # a name the OS refuses: the output check says so
+        return
+
+
 def check_inputs(*paths: str) -> None:
     """Standard input can be read once: refuse ``-`` for two inputs."""
     if sum(1 for p in paths if p == "-") > 1:
@@ -294,6 +309,9 @@ def check_files(inputs: list[str | None], outputs: dict[str, str | None]) -> Non
     named = [p for p in inputs if p is not None]
     check_inputs(*named)
     files = [p for p in named if p != "-"]
+    for path in files:  # a missing input is the first thing to say (30), before an output's folder (40)
+        if not os.path.lexists(path):
+            raise InputFileError("file not found", Location(path))
     to_stdout = [option for option, path in outputs.items() if path == "-"]
     if len(to_stdout) > 1:
         raise OptionError(f"{' and '.join(to_stdout)} both name '-' (standard output); expected one of them a file")

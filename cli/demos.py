@@ -7,7 +7,7 @@ from typing import Annotated
 
 import typer
 
-from cli.common import QuietOption, check_output_folder, command, help_footer, ui, path_name
+from cli.common import QuietOption, check_apart, check_output_folder, command, help_footer, ui, path_name
 from guided_lfd import errors
 
 
@@ -41,6 +41,7 @@ def demos(
     out = out or root / "data" / "demos"
     require(domains, hint="run from the checkout, or give --domains")
     check_output_folder(out, "OUT")
+    check_apart(out, "OUT", [domains])
     with staged_folder(out) as stage:  # an interrupted run leaves OUT as it was
         rendered = render_study(domains, stage)
     ui.info(f"rendered {len(rendered)} demonstrations into {out}")

@@ -77,7 +77,7 @@ def evaluate(
     human_domain = parse_domain(human)
     ui.reading_warnings(robot_domain, human_domain)
     check_model_fits(robot_domain, human_domain, "--human")  # as excuse and teach: exit 34 naming the predicate
-    parse_problem_for(human_domain, problem)  # the human's domain must fit the task too
+    _fits_task(human_domain, problem, "--human")  # the human's domain must fit the task too
     if excuse is not None:
         changes = read_excuse(excuse, robot_domain, task)
         source = excuse
@@ -103,7 +103,8 @@ def evaluate(
     merged_domain = parse_domain(merged) if merged else None
     ui.reading_warnings(merged_domain)
     if merged_domain is not None:
-        parse_problem_for(merged_domain, problem)
+        check_model_fits(robot_domain, merged_domain, "--merged")
+        _fits_task(merged_domain, problem, "--merged")
     ui.info("[dim]evaluating: planning on the human domain, exploring its states ...[/]")
     result = run_evaluation(robot_domain, task, human_domain, changes, documents, merged_domain, other, bound)
     rows = result.rows()
@@ -117,3 +118,15 @@ def evaluate(
         vwidth = max(len(v) for _, v, _ in rows)
         text = "".join(f"{m:<{width}}  {v:>{vwidth}}  {d}\n" for m, v, d in rows)
     write_text(output, text)
+
+
+def _fits_task(domain, problem: str, option: str) -> None:
+    """The task's problem must read against ``domain`` (given with ``option``): one it cannot is a mismatch of the
+    inputs (34, naming the option and what the problem uses), not an error in the problem file."""
+    from guided_lfd.errors import MismatchError, PddlSemanticError
+
+    try:
+        parse_problem_for(domain, problem)
+    except PddlSemanticError as exc:
+        raise MismatchError(f"{option}: the task's problem does not fit this domain ({exc.message})",
+                            exc.location) from None

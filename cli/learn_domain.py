@@ -13,6 +13,7 @@ from guided_lfd.demonstration.learn import learn_domain as learn
 from guided_lfd.demonstration.action_model import MODELS
 from guided_lfd.demonstration.segments_document import load_segments
 from guided_lfd.demonstration.trajectory import is_trajectory, learn_from_trajectories, read_trajectory
+from guided_lfd.pddl.fit import check_model_fits
 from guided_lfd.errors import Location, MismatchError, OptionError
 from guided_lfd.io import write_text
 from guided_lfd.pddl.model import pddl_name_defect
@@ -90,6 +91,8 @@ def learn_domain(
     prior_domain = parse_domain(prior) if prior else None
     ui.reading_warnings(prior_domain)
     human_domain = parse_domain(human) if human else None
+    if prior_domain is not None and human_domain is not None:
+        check_model_fits(prior_domain, human_domain, "--human")  # as excuse, teach, evaluate: exit 34
     domain = learn(documents, prior_domain, name=(name or "learned").lower(), human=human_domain, skip_known=prior is not None)
     if prior_domain is not None:
         from guided_lfd.demonstration.learn import check_usable, document_vocabulary

@@ -7,7 +7,7 @@ from typing import Annotated
 
 import typer
 
-from cli.common import QuietOption, check_output_folder, command, help_footer, ui, path_name
+from cli.common import QuietOption, check_apart, check_output_folder, command, help_footer, ui, path_name
 from guided_lfd import errors
 
 
@@ -43,6 +43,7 @@ def study(
                                                        "table2-demonstration-size")),
             root / "data" / "demos", root / "data" / "domains")
     check_output_folder(out, "--out")
+    check_apart(out, "--out", [root / "data"], root)
     # What guided_lfd.study.reproduce does, keeping write_report's answer: were the plots drawn?
     paper, kitchens = run_study(root, lambda message: ui.info(f"  {message}"))
     with staged_folder(out) as stage:  # an interrupted run leaves --out as it was

@@ -11,6 +11,7 @@ import typer
 from cli.common import (JsonOption, path_name, QuietOption, TimeLimitOption, check_inputs, check_time_limit, command, help_footer,
                         one_line, started_at, ui)
 from guided_lfd.deadline import deadline_after, watchdog
+from guided_lfd.pddl.fit import check_model_fits
 from guided_lfd import errors
 
 
@@ -173,8 +174,10 @@ def teach(
         raise errors.OptionError(f"--slack {slack}: needs --prefer demonstration")
     if prefer and model is None:
         raise errors.OptionError("--prefer demonstration: needs a human model (--human DOMAIN or --simulate HUMAN)")
-    for human_domain in (model, human.human if human else None):
+    for human_domain, option in ((model, "--human" if human_model else "--simulate"),
+                                 (human.human if human else None, "--simulate")):
         if human_domain is not None:  # a model of another world: exit 34 before any round
+            check_model_fits(robot_domain, human_domain, option)  # a clash with the robot says more than a gap
             check_human_model(human_domain, task)
     prompt = sys.stdin is not None and sys.stdin.isatty() and not json_out and human is None
     demonstrator = _Chain(human, list(demo or []), prompt=prompt)

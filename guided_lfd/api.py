@@ -118,8 +118,8 @@ def plan(domain: Domain, problem: Problem, search: str | None = None,
 
     _check_task("plan", domain, problem)
     search = search or DEFAULT_SEARCH
-    if search not in SEARCHES:
-        raise OptionError(f"unknown search '{search}' (expected one of: {', '.join(SEARCHES)})")
+    if not isinstance(search, str) or search not in SEARCHES:
+        raise OptionError(f"unknown search {search!r} (expected one of: {', '.join(SEARCHES)})")
     _, result = plan_task(domain, problem, search, checked_time_limit(time_limit, "time_limit"))
     if result.plan is None:
         return PlanReport(domain.path, problem.path, None, None, None, search, result.time_s)

@@ -107,6 +107,7 @@ class TeachSession:
     robot_domain: str  # the taught domain's file
     error: Any = field(default=None, repr=False, compare=False)  # the GuidedLfdError that ended it, if any
     reason: str | None = None  # why it ended unsolved, in one line (None when solved)
+    task: str | None = None  # the problem's PDDL name: a later session in the folder must be of the same task
 
     @property
     def solved(self) -> bool:
@@ -119,7 +120,7 @@ class TeachSession:
                 "rounds": [r.to_dict() for r in self.rounds],
                 "plan": None if self.plan is None else [str(s) for s in self.plan],
                 "plans_original_task": self.plans_original_task, "robot_domain": self.robot_domain,
-                "reason": self.reason}
+                "reason": self.reason, "task": self.task}
 
     def to_json(self) -> str:
         """The ``session.json`` document."""
@@ -331,6 +332,8 @@ class SimulatedHuman:
                               f"{MAX_RATE_HZ:g} Hz")
         if isinstance(self.seed, bool) or not isinstance(self.seed, int):
             raise OptionError(f"SimulatedHuman: seed {self.seed!r}: expected a whole number")
+        if self.robot is not None and not isinstance(self.robot, Domain):
+            raise OptionError(f"SimulatedHuman: robot: expected a Domain or None, got {type(self.robot).__name__}")
 
     def demonstrate(self, folder: Path, state: frozenset[Atom], request: list[Change],
                     problem: Problem) -> tuple[Path, Path] | None:
@@ -398,6 +401,13 @@ class GivenTraces:
 
     traces: list[Path]
 
+    def __post_init__(self) -> None:
+        from guided_lfd.errors import OptionError
+
+        if not isinstance(self.traces, list) or not all(isinstance(t, (str, Path)) for t in self.traces):
+            raise OptionError(f"GivenTraces: traces {self.traces!r}: expected a list of trace paths")
+        self.traces[:] = [Path(t) for t in self.traces]  # in place: a caller may hold the list and see it used
+
     def demonstrate(self, folder: Path, state: frozenset[Atom], request: list[Change],
                     problem: Problem) -> tuple[Path, Path] | None:
         """The next trace and its state file (``TRACE.state.csv`` beside it), or None when none is left."""
@@ -435,7 +445,7 @@ def teach(robot: Domain, problem: Problem, demonstrator: Demonstrator, out: Path
     ``session.json`` and ``session.md`` are written by the caller.
     """
     out = _session_path(out)
-    _check_teach_arguments(robot, problem, demonstrator, max_rounds, options, human, prefer, deadline)
+    _check_teach_arguments(robot, problem, demonstrator, max_rounds, options, human, prefer, deadline, on_request)
     was_there = out.exists()
     options = options or ExcuseOptions()
     _prepare_session(robot, problem, demonstrator, out, options, human)
@@ -445,7 +455,8 @@ def teach(robot: Domain, problem: Problem, demonstrator: Demonstrator, out: Path
 
 
 def _check_teach_arguments(robot: object, problem: object, demonstrator: object, max_rounds: object,
-                           options: object, human: object, prefer: object, deadline: object) -> None:
+                           options: object, human: object, prefer: object, deadline: object,
+                           on_request: object = None) -> None:
     """:func:`teach`'s arguments of the wrong kind, as the documented :class:`OptionError`."""
     import math
 
@@ -467,11 +478,13 @@ def _check_teach_arguments(robot: object, problem: object, demonstrator: object,
         raise OptionError(f"deadline {deadline!r}: expected a time.monotonic() value (or None)")
     if prefer and human is None:
         raise OptionError("prefer: needs the human model it predicts demonstrations with (human=...)")
+    if on_request is not None and not callable(on_request):
+        raise OptionError(f"on_request: expected a function of one Round (or None), got {type(on_request).__name__}")
 
 
 def _session_path(out: object) -> Path:
     """``out`` as a path (a library caller may pass a string), refused as OptionError if it is neither."""
-    if isinstance(out, (str, Path)) and str(out):
+    if isinstance(out, (str, Path)) and str(out).strip() and "\x00" not in str(out):
         return Path(out)
     from guided_lfd.errors import OptionError
 
@@ -533,7 +546,7 @@ def _rounds(robot: Domain, problem: Problem, demonstrator: Demonstrator, out: Pa
     write_text(out / "robot.pddl", domain_to_pddl(current, header=f"The robot's domain after teaching {problem.path}"))
     original, status, reason = _judge_original(current, problem, rounds, status, reason, options, deadline)
     session = TeachSession(robot.path, problem.path, status, rounds, final_plan, original, str(out / "robot.pddl"),
-                           reason=reason)
+                           reason=reason, task=problem.name)
     session.error = error
     return session
 
@@ -565,8 +578,8 @@ def _prepare_session(robot: Domain, problem: Problem, demonstrator, out: Path, o
     refuse_adl("teach", problem, robot, human, simulated)
     for model, option in ((human, "--human"), (simulated if simulated is not human else None, "--simulate")):
         if model is not None:
+            check_model_fits(robot, model, option)  # a clash with the robot first: it says more than a gap
             check_human_model(model, problem)
-            check_model_fits(robot, model, option)
     check_option_names(robot, options)
     check_session_folder(out, problem)
     _make_folder(out)
@@ -608,20 +621,35 @@ def check_session_folder(out: Path, problem: Problem) -> None:
 
 
 def _check_same_task(out: Path, problem: Problem, refuse) -> None:
-    """A previous session in ``out`` must be of ``problem`` (its session.json names the problem file; a session
-    without one was interrupted before its end)."""
+    """A previous session in ``out`` must be of ``problem``: the same PDDL problem name (its session.json's
+    ``task``), and the same problem file (by content while the earlier one is still there, else by name).  A
+    session without a session.json was interrupted before its end."""
     import json
 
     record = out / "session.json"
     if not record.exists():
         return  # a session that ended before writing it (interrupted): its rounds are replaced
     try:
-        earlier = Path(json.loads(record.read_text(encoding="utf-8"))["problem"])
+        doc = json.loads(record.read_text(encoding="utf-8"))
+        earlier, task = Path(doc["problem"]), doc.get("task")
     except (OSError, ValueError, KeyError, TypeError):
         refuse("holds a session.json that is not a teaching session's")
         return
-    if problem.path and earlier.name != Path(problem.path).name:
+    if task is not None and problem.name and task != problem.name:
+        refuse(f"holds a session of another task ({task})")
+    if problem.path and not _same_problem_file(earlier, Path(problem.path)):
         refuse(f"holds a session of another task ({earlier})")
+
+
+def _same_problem_file(earlier: Path, now: Path) -> bool:
+    """Whether the problem file a session recorded is ``now``'s: the same content while it exists, else the same
+    file name (the folder may have moved)."""
+    try:
+        if earlier.is_file() and now.is_file():
+            return earlier.read_bytes() == now.read_bytes()
+    except OSError:
+        pass
+    return earlier.name == now.name
 
 
 @contextmanager

@@ -211,9 +211,12 @@ def test_empty_goal_is_already_solvable(runner, app, tmp_path):
     assert '"already-solvable"' in result.stdout
 
 
-def test_invariants_from_an_unrelated_domain_does_not_crash(runner, app):
+def test_invariants_from_an_unrelated_domain_is_a_mismatch_in_one_line(runner, app):
+    """Blocks' (clear ?x - block) beside the kitchen's (clear ?f - furniture): no kitchen object is a block, so
+    the invariants would mean nothing (it ran, exit 0, before types neither domain relates were a clash)."""
     result = runner.invoke(app, ["excuse", DOMAIN, PROBLEM, "--invariants-from", str(BLOCKS / "domain.pddl")])
-    assert result.exit_code == 0, result.stderr
+    assert result.exit_code == 34, result.stderr
+    assert "argument 1 of predicate clear is of type block here and of type furniture" in one_line(result)
 
 
 def test_action_names_differing_in_case_are_duplicates(runner, app, tmp_path):

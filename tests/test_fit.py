@@ -65,3 +65,29 @@ def test_evaluate_refuses_a_human_model_that_does_not_fit(runner, app, model, sa
     result = runner.invoke(app, ["evaluate", ROBOT, PROBLEM, "--human", model])
     assert result.exit_code == EXIT_MISMATCH, result.output
     assert said in result.stderr and result.stdout == ""
+
+
+WIDGET = str(DATA / "fit" / "human-widget.pddl")
+
+
+@pytest.mark.parametrize("command", [
+    ["excuse", ROBOT, PROBLEM, "--human", WIDGET],
+    ["excuse", ROBOT, PROBLEM, "--invariants-from", WIDGET],
+    ["excuse", ROBOT, PROBLEM, "--fixed-from", WIDGET],
+    ["teach", ROBOT, PROBLEM, "--simulate", WIDGET, "-o", "SESSION"],
+    ["evaluate", ROBOT, PROBLEM, "--human", str(KITCHEN / "human.pddl"), "--merged", WIDGET],
+    ["learn-domain", "SEGMENTS", "--prior", ROBOT, "--human", WIDGET],
+])
+def test_a_type_neither_domain_relates_is_a_clash_in_every_command(runner, app, tmp_path, command):
+    """Third round: an argument type the robot does not declare (widget beside drawer) was taken as related, so
+    the model was accepted (exit 0), and teach named a missing predicate instead, evaluate --merged a problem
+    error (32), learn-domain nothing."""
+    segments = tmp_path / "p1.segments.json"
+    trace = ROOT / "data" / "demos" / "kitchen-1" / "P1-excuse.csv"
+    assert runner.invoke(app, ["segment", str(trace), "-o", str(segments)]).exit_code == 0
+    args = [{"SESSION": str(tmp_path / "session"), "SEGMENTS": str(segments)}.get(a, a) for a in command]
+    result = runner.invoke(app, args)
+    assert result.exit_code == EXIT_MISMATCH, result.output
+    assert "argument 1 of predicate open is of type widget here and of type drawer" in result.stderr
+    assert len(result.stderr.strip().splitlines()) == 1
+    assert not (tmp_path / "session").exists()

@@ -176,6 +176,37 @@ def test_a_plan_time_limit_holds_in_a_thread_where_no_watchdog_runs(tmp_path):
     assert outcome["took"] < 0.5 + 3.5  # it ran 13 s; the margin is for a loaded machine
 
 
+@pytest.mark.parametrize("search", ["bfs", "astar-hmax", "astar-lmcut"])
+def test_every_search_keeps_its_time_limit_in_a_thread(search):
+    """Past grounding: pyperplan's searches could not be interrupted outside the main thread (bfs and astar-hmax
+    ran on for minutes on depot task10 with time_limit=1), and the A* with LM-cut checked every 64 expansions
+    (6.3 s).  Each search now checks at every expansion (third adversarial round)."""
+    import threading
+    import time
+
+    from conftest import ROOT
+    from guided_lfd.errors import SearchTimeout
+
+    folder = ROOT / "data" / "benchmarks" / "ipc" / "depot"
+    domain, problem = read_task(str(folder / "domain.pddl"), str(folder / "task10.pddl"))
+    outcome: dict = {}
+
+    def worker() -> None:
+        start = time.monotonic()
+        try:
+            plan(domain, problem, search=search, time_limit=1)
+            outcome["result"] = "plan"
+        except SearchTimeout:
+            outcome["result"] = "timeout"
+        outcome["took"] = time.monotonic() - start
+
+    thread = threading.Thread(target=worker, daemon=True)
+    thread.start()
+    thread.join(60)
+    assert outcome.get("result") == "timeout", outcome
+    assert outcome["took"] < 1 + 4.0  # the margin is for a loaded machine
+
+
 def test_find_excuses_in_a_loop_and_in_threads_leaves_the_process_as_it_was():
     """A robot program calls the engine 200 times, and from threads: the same excuse every time, the garbage
     collector and SIGALRM's handler as they were, nothing kept between calls (memory flat)."""
@@ -260,6 +291,18 @@ def test_a_simulated_human_refuses_a_frame_rate_it_cannot_render(kwargs, message
         SimulatedHuman(human, **kwargs)
 
 
+def _given(traces):
+    from guided_lfd.teach import GivenTraces
+
+    return GivenTraces(traces)
+
+
+def _simulated(domain, **kwargs):
+    from guided_lfd.teach import SimulatedHuman
+
+    return SimulatedHuman(domain, **kwargs)
+
+
 @pytest.mark.parametrize("call, message", [
     (lambda d, p: find_excuses(d, None), "problem: expected a Problem (guided_lfd.read_task), got NoneType"),
     (lambda d, p: find_excuses(p, d), "domain: expected a Domain (guided_lfd.read_task), got Problem"),
@@ -275,6 +318,10 @@ def test_a_simulated_human_refuses_a_frame_rate_it_cannot_render(kwargs, message
     (lambda d, p: validate(None, p, []), "validate: expected the domain as a Domain (guided_lfd.read_task)"),
     (lambda d, p: validate(d, d, []), "validate: expected the problem as a Problem (guided_lfd.read_task), got"),
     (lambda d, p: plan(p, d), "plan: expected the domain as a Domain (guided_lfd.read_task), got Problem"),
+    # Third round: these escaped as TypeError, ValueError or AttributeError.
+    (lambda d, p: plan(d, p, search=["bfs"]), "unknown search ['bfs']"),
+    (lambda d, p: _given("abc"), "GivenTraces: traces 'abc': expected a list of trace paths"),
+    (lambda d, p: _simulated(d, robot="x"), "SimulatedHuman: robot: expected a Domain or None, got str"),
 ])
 def test_arguments_of_the_wrong_kind_are_option_errors(call, message):
     """#25 second round: these escaped as TypeError/AttributeError, or (nan, 'no') were taken silently."""
@@ -294,6 +341,8 @@ def test_arguments_of_the_wrong_kind_are_option_errors(call, message):
     ({"human": "human.pddl"}, "human: expected a Domain or None, got str"),
     ({"robot": "robot.pddl"}, "robot: expected Domain, got str"),
     ({"prefer": True}, "prefer: needs the human model"),
+    ({"on_request": 5}, "on_request: expected a function of one Round (or None), got int"),
+    ({"out": "a\x00b"}, "out 'a\\x00b': expected the session folder's path"),
 ])
 def test_teach_arguments_of_the_wrong_kind_are_option_errors(tmp_path, kwargs, message):
     from guided_lfd.errors import OptionError

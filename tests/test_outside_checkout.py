@@ -65,6 +65,19 @@ def test_quality_and_demos_find_the_shipped_data_from_elsewhere(runner, app, els
     (["bench", "report", "--results", "status"], EXIT_INPUT_FILE, "results.csv:2: input error: status 'fine': expected"),
     (["bench", "report", "--results", "columns"], EXIT_INPUT_FILE, "results.csv:1: input error: missing column(s) "
                                                                     "strategy, semantics, status"),
+    # Third round: outputs mixed into the run's own inputs (new files beside the data), unknown names accepted.
+    (["study", "--root", str(ROOT), "--out", str(ROOT)], EXIT_BAD_OPTION, "is the data's root"),
+    (["study", "--root", str(ROOT), "--out", str(ROOT / "data" / "new")], EXIT_BAD_OPTION,
+     "which this run reads; expected a folder elsewhere"),
+    (["demos", str(ROOT / "data" / "domains" / "new"), "--domains", str(ROOT / "data" / "domains")], EXIT_BAD_OPTION,
+     "which this run reads; expected a folder elsewhere"),
+    (["bench", "run", "--root", str(ROOT), "--results", str(ROOT / "data" / "new")], EXIT_BAD_OPTION,
+     "which this run reads; expected a folder elsewhere"),
+    (["bench", "generate", "--suite", "s.csv", "--tasks", "nope"], EXIT_BAD_OPTION, "has a task 'nope'"),
+    (["bench", "generate", "--suite", "s.csv", "--tasks", ","], EXIT_BAD_OPTION, "expected comma-separated task"),
+    (["bench", "run", "--stop-after-unfinished", "nope"], EXIT_BAD_OPTION, "unknown strategy 'nope'"),
+    (["quality", "--demos", "empty", "--domains", str(ROOT / "data" / "domains")], EXIT_INPUT_FILE,
+     "empty: input error: holds no labelled demonstrations"),
 ])
 def test_bad_data_and_outputs_are_one_line_errors_and_nothing_is_replaced(runner, app, elsewhere, args, code,
                                                                         message):

@@ -207,3 +207,18 @@ def test_a_session_that_fails_puts_the_previous_one_back(tmp_path):
     after = {p.relative_to(session): p.read_bytes() for p in session.rglob("*") if p.is_file()}
     assert after == before
     assert sorted(p.name for p in tmp_path.iterdir()) == ["session"]
+
+
+def test_a_session_of_another_task_with_the_same_file_name_is_refused_untouched(runner, app, tmp_path):
+    """Both kitchens' problems are problem.pddl: the second session replaced the first (third adversarial round).
+    The session now records the task's PDDL name, and the problem file is compared by content."""
+    session = tmp_path / "session"
+    assert _teach(runner, app, session).exit_code == 0
+    before = {p.relative_to(session): p.read_bytes() for p in session.rglob("*") if p.is_file()}
+    other = ROOT / "data" / "domains" / "kitchen-1"
+    result = runner.invoke(app, ["teach", str(other / "robot.pddl"), str(other / "problem.pddl"), "--simulate",
+                                 str(other / "human.pddl"), "-o", str(session), "--quiet"])
+    assert result.exit_code == EXIT_OUTPUT
+    assert "holds a session of another task (kitchen-2-store-plate)" in result.stderr
+    after = {p.relative_to(session): p.read_bytes() for p in session.rglob("*") if p.is_file()}
+    assert after == before

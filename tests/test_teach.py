@@ -18,7 +18,7 @@ HUMAN = {k: str(DOMAINS / f"kitchen-{k}" / "human.pddl") for k in (1, 2)}
 #: session.json's documented keys and their types (README: JSON formats, guided-lfd/teach).
 SESSION_KEYS = {"format": str, "format_version": int, "robot": str, "problem": str, "solved": bool, "status": str,
                 "rounds": list, "plan": (list, type(None)), "plans_original_task": (bool, type(None)), "robot_domain": str,
-                "reason": (str, type(None))}
+                "reason": (str, type(None)), "task": (str, type(None))}
 ROUND_KEYS = {"round": int, "excuse": list, "request": list, "request_text": list, "why": list, "keep": list,
               "keep_text": list, "demonstration_length": (int, type(None)), "new_actions": (int, type(None)), "learned_actions": list,
               "request_met": (bool, type(None)), "unmet": list, "solvable_after": (bool, type(None)), "files": dict,

@@ -180,6 +180,11 @@ def quality_report(demos: Path = Path("data/demos"), domains: Path = Path("data/
     tool could not process their two hands at once, per-hand segmentation can.
     """
     kitchens = sorted(p for p in demos.iterdir() if p.is_dir() and _traces(p))
+    if not kitchens:
+        from guided_lfd.errors import InputFileError, Location
+
+        raise InputFileError("holds no labelled demonstrations (expected KITCHEN/TRACE.csv with TRACE.labels.csv "
+                             "beside it, as data/demos has)", Location(str(demos)))
     segmentation = [segmentation_quality(trace) for kitchen in kitchens for trace in _traces(kitchen)]
     learning = {}
     for kitchen in kitchens:

@@ -17,12 +17,15 @@ __all__ = ["check_model_fits"]
 
 
 def _related(a: str, b: str, *domains: Domain) -> bool:
-    """Whether types ``a`` and ``b`` are one within the other in some of ``domains``' hierarchies (a type one of
-    them does not declare is taken as related: the model may name its types its own way)."""
+    """Whether types ``a`` and ``b`` are one within the other in some of ``domains``' hierarchies.  Types no
+    domain declares together are unrelated (``widget`` of the model beside ``furniture`` of the robot: the
+    task's objects are of the robot's types, so the model's predicate would be true of none), unless one of
+    them is ``object``, which every type is within."""
+    if "object" in (a, b) or a == b:
+        return True
     for domain in domains:
-        if a not in domain.types or b not in domain.types:
-            return True
-        if a in type_ancestors(domain.types, b) or b in type_ancestors(domain.types, a):
+        if a in domain.types and b in domain.types and (
+                a in type_ancestors(domain.types, b) or b in type_ancestors(domain.types, a)):
             return True
     return False
 

@@ -112,6 +112,7 @@ def find_plan(
     from pyperplan.search import astar_search, breadth_first_search, greedy_best_first_search
 
     ptask = to_pyperplan(task, init, actions)
+    _check_each_expansion(ptask, time_limit_s)
     heuristics: dict[str, Callable] = {"lmcut": LmCutHeuristic, "hmax": hMaxHeuristic, "hff": hFFHeuristic}
     with time_limit(time_limit_s, "planner"):
         if kind == "bfs":
@@ -127,6 +128,24 @@ def find_plan(
         return PlanResult(None, search, optimal, elapsed)
     by_name = {a.name: a for a in pool}
     return PlanResult([by_name[op.name] for op in ops], search, optimal, elapsed)
+
+
+def _check_each_expansion(ptask, time_limit_s: float | None) -> None:
+    """Make ``ptask`` raise :class:`SearchTimeout` when a search past ``time_limit_s`` expands a state: the
+    watchdog cannot interrupt pyperplan outside the main thread (a library call in a worker thread)."""
+    if time_limit_s is None or not math.isfinite(time_limit_s):
+        return
+    from guided_lfd.errors import SearchTimeout
+
+    deadline = time.monotonic() + time_limit_s
+    successors = ptask.get_successor_states
+
+    def checked(state):
+        if time.monotonic() > deadline:
+            raise SearchTimeout("time limit reached in the planner")
+        return successors(state)
+
+    ptask.get_successor_states = checked
 
 
 def _guided_astar(task: GroundTask, init: int | None, actions: list[GroundAction] | None,
