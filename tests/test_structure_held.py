@@ -201,3 +201,12 @@ def test_where_the_robot_is_stays_changeable():
     assert [a for a in report.excuses[0].state if a.predicate == "at-robby"] == [Atom("at-robby", ("roomb",))]
     robot, problem = _without("rovers", "task03", "navigate")
     assert "at" not in structural_predicates(robot, problem)
+
+
+def test_what_the_goal_names_is_never_structure():
+    """Satellite task03 without turn_to wants satellites pointing somewhere: (pointing ?s ?d) looked like a fixed
+    attribute (no place, no mover), so the default answered 'no excuse' where the complete domain's has one."""
+    robot, problem = _without("satellite", "task03", "turn_to")
+    assert "pointing" not in structural_predicates(robot, problem)
+    robot, problem = _without("satellite", "task01", "turn_to")  # no pointing goal: held, as the complete domain's
+    assert "pointing" in structural_predicates(robot, problem)   # excuse does not need it either

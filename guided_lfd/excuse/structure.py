@@ -40,6 +40,7 @@ def structural_predicates(domain: Domain, problem: Problem, models: Sequence[Dom
     static = set(domain.predicates) - domain.fluent_predicates() - domain.derived_predicates() - {EQUALITY}
     for model in models:
         static -= model.fluent_predicates()
+    static -= _goal_predicates(problem)  # the task asks for it to change: the world can change it
     world = _World(domain, problem, static, models)
     out: dict[str, str] = {}
     for name in sorted(static):
@@ -56,6 +57,16 @@ def structural_predicates(domain: Domain, problem: Problem, models: Sequence[Dom
         if why:
             out[name] = why
     return out
+
+
+def _goal_predicates(problem: Problem) -> set[str]:
+    """The predicates the task's goal names (an ADL goal's literals anywhere in its formula)."""
+    names = {lit.atom.predicate for lit in problem.goal}
+    if problem.goal_condition is not None:
+        from guided_lfd.pddl.formula import literals_of
+
+        names |= {lit.atom.predicate for lit in literals_of(problem.goal_condition)}
+    return names
 
 
 class _World:
