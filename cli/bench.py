@@ -14,6 +14,10 @@ from guided_lfd.errors import OptionError
 STEPS = ("generate", "run", "report", "all")
 
 
+#: The IPC tasks of each family 'bench generate' takes by default.
+DEFAULT_TASKS = ",".join(f"task{i:02d}" for i in range(1, 11))
+
+
 @help_footer(
     example="guided-lfd bench all --jobs 2",
     exit_codes=(errors.EXIT_INPUT_FILE, errors.EXIT_PDDL_SYNTAX, errors.EXIT_PDDL_SEMANTIC, errors.EXIT_UNSUPPORTED,
@@ -29,7 +33,7 @@ def bench(
     = None,
     ipc: Annotated[Path | None, typer.Option("--ipc", parser=path_name, metavar="DIR", help="IPC collection (default ROOT/data/benchmarks/ipc).")] = None,
     tasks: Annotated[str, typer.Option("--tasks", metavar="NAMES", help="Comma-separated IPC task names per domain.")]
-    = ",".join(f"task{i:02d}" for i in range(1, 11)),
+    = DEFAULT_TASKS,
     suite: Annotated[Path | None, typer.Option("--suite", parser=path_name, metavar="CSV", help="Suite file (default ROOT/benchmarks/suite.csv).")] = None,
     results: Annotated[Path | None, typer.Option("--results", parser=path_name, metavar="DIR", help="Results folder (default ROOT/benchmarks/results).")] = None,
     time_limit: Annotated[float, typer.Option("--time-limit", metavar="SECONDS", help="Per run.")] = 60.0,
@@ -67,6 +71,8 @@ def bench(
     root, ipc, suite, results = _paths(step, root, ipc, suite, results)
     _check_options(time_limit, jobs, strategies, semantics)
     _check_strategy_names(stop_after_unfinished, "--stop-after-unfinished")
+    if step != "generate" and tasks != DEFAULT_TASKS:
+        raise OptionError(f"--tasks {tasks!r}: only 'bench generate' reads it (run and report take --only)")
     if step == "generate":
         _check_task_names(tasks, ipc)
         tasks_found = benchmark.generate_suite(ipc, root / "data" / "domains", tasks.split(","), log=ui.info_plain)

@@ -76,6 +76,7 @@ def test_quality_and_demos_find_the_shipped_data_from_elsewhere(runner, app, els
     (["bench", "generate", "--suite", "s.csv", "--tasks", "nope"], EXIT_BAD_OPTION, "has a task 'nope'"),
     (["bench", "generate", "--suite", "s.csv", "--tasks", ","], EXIT_BAD_OPTION, "expected comma-separated task"),
     (["bench", "run", "--stop-after-unfinished", "nope"], EXIT_BAD_OPTION, "unknown strategy 'nope'"),
+    (["bench", "run", "--tasks", ""], EXIT_BAD_OPTION, "only 'bench generate' reads it"),
     (["quality", "--demos", "empty", "--domains", str(ROOT / "data" / "domains")], EXIT_INPUT_FILE,
      "empty: input error: holds no labelled demonstrations"),
 ])
