@@ -121,7 +121,7 @@ def watchdog(deadline: float | None, what: str = "run", grace: float = GRACE_S) 
     previous_left, _ = signal.getitimer(signal.ITIMER_REAL)
     now = time.monotonic()
     outer_at = now + previous_left if previous_left > 0 else math.inf
-    if outer_at <= fire_at:  # the enclosing limit comes first: leave it armed
+    if outer_at <= fire_at or fire_at - now > MAX_TIME_LIMIT:  # the enclosing limit comes first, or none in reach
         yield
         return
 

@@ -3,10 +3,12 @@
 Mutations of the shipped files (deleted or duplicated tokens, swapped or
 dropped parentheses, random bytes, truncation, case changes) go to the
 subcommand that reads them, and to ``teach`` (a damaged demonstration, any
-answer at its prompt) and the library's ``validate``.  The invariant: an exit
+answer at its prompt, a damaged previous session in its folder) and the
+library (``validate`` with damaged plan text; ``ExcuseOptions``,
+``find_excuses`` and ``plan`` with arguments of any kind and value).  The invariant: an exit
 code from the table, at most one line on stderr for an error, never a
-traceback, and no input file changed.  520 examples run in CI (60 per target,
-20 per ``teach`` target); ``make test-slow`` runs about 8,700.  The first run found an error message that quoted a record separator
+traceback, and no input file changed.  600 examples run in CI (60 per target,
+20 per ``teach`` target); ``make test-slow`` runs about 10,000.  The first run found an error message that quoted a record separator
 from a damaged state file and so took two lines (now escaped).
 """
 
@@ -182,3 +184,52 @@ def test_fuzzed_plans_through_the_library_are_documented_errors(data):
         validate(domain, problem, text)
     except errors.GuidedLfdError as exc:
         assert len(str(exc).splitlines()) == 1 and str(exc).isprintable(), str(exc)
+
+
+@settings(max_examples=max(1, EXAMPLES // 3), deadline=None, derandomize=True,
+          suppress_health_check=[HealthCheck.too_slow, HealthCheck.function_scoped_fixture,
+                                 HealthCheck.data_too_large])
+@given(data=st.data())
+def test_fuzzed_previous_sessions_are_replaced_or_refused_untouched(runner, app, tmp_path_factory, data):
+    """``teach`` into a folder whose previous session.json is damaged (hand-edited, cut short): the session is
+    replaced (exit 0) or the folder refused (40) with every file as it was, never an internal error."""
+    robot, problem = kitchen(1)
+    human = str(Path(robot).parent / "human.pddl")
+    folder = tmp_path_factory.mktemp("session")
+    session = folder / "session"
+    first = runner.invoke(app, ["teach", robot, problem, "--simulate", human, "-o", str(session), "-q"])
+    assert first.exit_code == 0, first.stderr
+    record = session / "session.json"
+    record.write_text(data.draw(mutated(record.read_text())), encoding="utf-8", errors="surrogatepass")
+    before = {p: p.read_bytes() for p in session.rglob("*") if p.is_file()}
+    result = runner.invoke(app, ["teach", robot, problem, "--simulate", human, "-o", str(session), "-q"])
+    assert result.exit_code in (0, errors.EXIT_OUTPUT), (result.exit_code, result.stderr)
+    if result.exit_code == errors.EXIT_OUTPUT:
+        assert len(result.stderr.strip().splitlines()) == 1, result.stderr
+        assert {p: p.read_bytes() for p in session.rglob("*") if p.is_file()} == before
+
+
+#: Values a robot program might pass by mistake, for any argument.
+ODD_VALUES = st.one_of(st.none(), st.booleans(), st.integers(-10**6, 10**6), st.floats(allow_nan=True),
+                       st.text(max_size=20), st.lists(st.text(max_size=5), max_size=3),
+                       st.dictionaries(st.text(max_size=5), st.integers(), max_size=2))
+
+
+@_fuzz_settings()
+@given(name=st.sampled_from(["semantics", "strategy", "fixed", "costs", "all_minimal", "max_size", "time_limit",
+                             "invariants_from", "fixed_from", "optimal_plans", "slack", "started", "verify",
+                             "change_structure", "one_place"]),
+       value=ODD_VALUES, search=ODD_VALUES, limit=ODD_VALUES)
+def test_fuzzed_library_arguments_are_documented_errors(name, value, search, limit):
+    """``ExcuseOptions``, ``find_excuses`` and ``plan`` with an argument of any kind or value: a result, or a
+    one-line :class:`~guided_lfd.errors.GuidedLfdError` (they escaped as TypeError, ValueError, OverflowError)."""
+    from guided_lfd import ExcuseOptions, find_excuses, plan, read_task
+
+    domain, problem = read_task(*kitchen(1))
+    for call in (lambda: find_excuses(domain, problem, ExcuseOptions(**{name: value, "time_limit": 20})
+                                      if name != "time_limit" else ExcuseOptions(time_limit=value)),
+                 lambda: plan(domain, problem, search=search, time_limit=limit)):
+        try:
+            call()
+        except errors.GuidedLfdError as exc:
+            assert len(str(exc).splitlines()) == 1, str(exc)

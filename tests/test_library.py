@@ -320,6 +320,9 @@ def _simulated(domain, **kwargs):
     (lambda d, p: plan(p, d), "plan: expected the domain as a Domain (guided_lfd.read_task), got Problem"),
     # Third round: these escaped as TypeError, ValueError or AttributeError.
     (lambda d, p: plan(d, p, search=["bfs"]), "unknown search ['bfs']"),
+    # Found by the library fuzz target: TypeError, and OverflowError from the watchdog's timer.
+    (lambda d, p: ExcuseOptions(strategy=[]), "strategy []: expected a strategy's name (a string)"),
+    (lambda d, p: ExcuseOptions(started=9223439891.0), "started 9223439891.0: is in the future"),
     (lambda d, p: _given("abc"), "GivenTraces: traces 'abc': expected a list of trace paths"),
     (lambda d, p: _simulated(d, robot="x"), "SimulatedHuman: robot: expected a Domain or None, got str"),
 ])

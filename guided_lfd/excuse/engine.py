@@ -91,6 +91,8 @@ class ExcuseOptions:
         if self.max_size is not None and (isinstance(self.max_size, bool) or not isinstance(self.max_size, int)
                                           or self.max_size < 0):
             raise OptionError(f"max_size {self.max_size!r}: expected a number of changes >= 0 (or None)")
+        if not isinstance(self.strategy, str):
+            raise OptionError(f"strategy {self.strategy!r}: expected a strategy's name (a string)")
         if isinstance(self.slack, bool) or not isinstance(self.slack, int) or self.slack < 0:
             raise OptionError(f"slack {self.slack!r}: expected a whole cost >= 0")
         for name in ("all_minimal", "optimal_plans", "verify", "change_structure", "one_place"):
@@ -100,6 +102,9 @@ class ExcuseOptions:
         if started is not None and (isinstance(started, bool) or not isinstance(started, (int, float))
                                     or not math.isfinite(started)):
             raise OptionError(f"started {started!r}: expected a time.monotonic() value (or None)")
+        if started is not None and started > time.monotonic():
+            raise OptionError(f"started {started!r}: is in the future; expected when the run started "
+                              "(a time.monotonic() value)")
         for name in ("fixed", "costs"):
             value = getattr(self, name)
             if not isinstance(value, (list, tuple)) or not all(isinstance(v, str) for v in value):
