@@ -43,9 +43,11 @@ def _exe(name: str) -> str:
     return str(path) if path.exists() else name
 
 
-def guided_run(domain: Path, problem: Path, limit: float) -> tuple[str, dict | None, float]:
-    """(status, the --json document when it solved, wall s) of one `guided-lfd plan` process."""
-    cmd = [_exe("guided-lfd"), "plan", str(domain), str(problem), "--json", "--quiet", "--time-limit", f"{limit:g}"]
+def guided_run(domain: Path, problem: Path, limit: float, command: str = "plan",
+               extra: tuple[str, ...] = ()) -> tuple[str, dict | None, float]:
+    """(status, the --json document when it answered, wall s) of one `guided-lfd plan` (or ``command``) process."""
+    cmd = [_exe("guided-lfd"), command, str(domain), str(problem), "--json", "--quiet", "--time-limit", f"{limit:g}",
+           *extra]
     start = time.perf_counter()
     try:
         proc = subprocess.run(cmd, capture_output=True, text=True, timeout=limit + 30)

@@ -28,42 +28,20 @@ from __future__ import annotations
 
 import argparse
 import csv
-import json
 import statistics
-import subprocess
 import sys
 import tempfile
-import time
 from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from plan_bench import guided_run  # noqa: E402  (one guided-lfd process, timed from outside, as everywhere)
 
 ROOT = Path(__file__).resolve().parent.parent
 OUT = ROOT / "benchmarks" / "plausibility_results"
 FIELDS = ["id", "domain", "task", "removed_action", "status", "size", "wall_s", "plausible", "implausible_because",
           "excuse", "reference_status", "reference_size", "reference_wall_s", "reference_excuse"]
 ANSWERED = ("excuse-found", "no-excuse", "already-solvable")
-
-
-def _exe() -> str:
-    """The `guided-lfd` beside this interpreter (the installed one), else on PATH."""
-    here = Path(sys.executable).parent / "guided-lfd"
-    return str(here) if here.exists() else "guided-lfd"
-
-
-def run_excuse(robot: Path, problem: Path, limit: float, extra: list[str]) -> tuple[str, dict | None, float]:
-    """(status, the --json document, wall s) of one `guided-lfd excuse` process."""
-    cmd = [_exe(), "excuse", str(robot), str(problem), "--json", "--quiet", "--time-limit", f"{limit:g}", *extra]
-    start = time.perf_counter()
-    try:
-        proc = subprocess.run(cmd, capture_output=True, text=True, timeout=limit + 30)
-    except subprocess.TimeoutExpired:
-        return "killed", None, time.perf_counter() - start
-    wall = time.perf_counter() - start
-    try:
-        doc = json.loads(proc.stdout)
-    except json.JSONDecodeError:
-        return f"exit {proc.returncode}", None, wall
-    return doc["status"], doc, wall
 
 
 def _changes(doc: dict | None) -> list[str]:
@@ -95,9 +73,9 @@ def run_task(task, robots: Path, limit: float) -> dict:
     from guided_lfd.pddl.reader import parse_task
 
     robot = robot_domain_file(task, robots)
-    status, doc, wall = run_excuse(robot, Path(task.problem_file), limit, [])
-    ref_status, ref, ref_wall = run_excuse(robot, Path(task.problem_file), limit,
-                                           ["--fixed-from", task.domain_file, "--invariants-from", task.domain_file])
+    status, doc, wall = guided_run(robot, Path(task.problem_file), limit, "excuse")
+    ref_status, ref, ref_wall = guided_run(robot, Path(task.problem_file), limit, "excuse",
+                                           ("--fixed-from", task.domain_file, "--invariants-from", task.domain_file))
     changes = _changes(doc)
     why = ""
     if changes:

@@ -5,7 +5,7 @@ from __future__ import annotations
 import csv
 from pathlib import Path
 from dataclasses import dataclass, fields
-from typing import Any
+from typing import Any, Sequence
 
 
 
@@ -121,25 +121,34 @@ def read_results(path: Path) -> list[ResultRow]:
     """Read a results CSV back.  A file without the runs' key columns, a row with another number of cells, an
     unknown status or a cell that is no number where one is expected (``nan``, ``-1`` seconds) is
     :class:`~guided_lfd.errors.InputFileError` at its line: a report drawn from it would mean nothing."""
+    records = checked_records(path, _REQUIRED, "the results of 'guided-lfd bench run'", "results")
+    return [_checked_row(record, where) for record, where in records]
+
+
+def checked_records(path: Path, required: Sequence[str], expected: str, what: str) -> list[tuple[dict, Any]]:
+    """The records of a CSV file (a spreadsheet's byte-order mark skipped), each with its Location.  A file
+    missing or unreadable, without a ``required`` column, or with a row of another number of cells is
+    :class:`~guided_lfd.errors.InputFileError` at its line (``expected`` says what the file should be, ``what``
+    names it)."""
     from guided_lfd.errors import InputFileError, Location
 
-    rows = []
+    out = []
     try:
         with open(path, newline="", encoding="utf-8-sig") as fh:
             reader = csv.DictReader(fh)
-            missing = [c for c in _REQUIRED if c not in (reader.fieldnames or [])]
+            missing = [c for c in required if c not in (reader.fieldnames or [])]
             if missing:
-                raise InputFileError(f"missing column(s) {', '.join(missing)} (expected the results of "
-                                     f"'guided-lfd bench run')", Location(str(path), 1))
+                raise InputFileError(f"missing column(s) {', '.join(missing)} (expected {expected})",
+                                     Location(str(path), 1))
             for record in reader:
                 where = Location(str(path), reader.line_num)
                 if None in record or None in record.values():
                     raise InputFileError(f"expected {len(reader.fieldnames or [])} cells in the row", where)
-                rows.append(_checked_row(record, where))
+                out.append((record, where))
     except (OSError, UnicodeDecodeError, csv.Error) as exc:
-        raise InputFileError(f"cannot read the results ({getattr(exc, 'strerror', None) or exc})",
+        raise InputFileError(f"cannot read the {what} ({getattr(exc, 'strerror', None) or exc})",
                              Location(str(path))) from None
-    return rows
+    return out
 
 
 #: Columns a results CSV must have (the others may be missing: an empty cell).

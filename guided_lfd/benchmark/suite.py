@@ -100,28 +100,16 @@ SUITE_COLUMNS = tuple(f.name for f in fields(BenchTask))
 def read_suite(path: Path, root: Path) -> list[BenchTask]:
     """Read a suite CSV; relative paths are taken from ``root``.  A file missing or without the suite's columns,
     or a row with another number of cells, is :class:`~guided_lfd.errors.InputFileError` at its line."""
-    from guided_lfd.errors import InputFileError, Location
+    from guided_lfd.benchmark.results import checked_records
 
     out = []
-    try:
-        with open(path, newline="", encoding="utf-8-sig") as fh:  # -sig: a spreadsheet's byte-order mark
-            reader = csv.DictReader(fh)
-            missing = [c for c in SUITE_COLUMNS if c not in (reader.fieldnames or [])]
-            if missing:
-                raise InputFileError(f"missing column(s) {', '.join(missing)} (expected a suite CSV with "
-                                     f"{', '.join(SUITE_COLUMNS)})", Location(str(path), 1))
-            for row in reader:
-                if None in row or None in row.values():
-                    raise InputFileError(f"expected {len(reader.fieldnames or [])} cells in the row",
-                                         Location(str(path), reader.line_num))
-                row = {k: row[k] for k in SUITE_COLUMNS}
-                for key in ("domain_file", "problem_file", "fixed_from"):
-                    if row[key] and not Path(row[key]).is_absolute():
-                        row[key] = str(root / row[key])
-                out.append(BenchTask(**row))
-    except (OSError, UnicodeDecodeError, csv.Error) as exc:
-        raise InputFileError(f"cannot read the suite ({getattr(exc, 'strerror', None) or exc})",
-                             Location(str(path))) from None
+    expected = f"a suite CSV with {', '.join(SUITE_COLUMNS)}"
+    for record, _ in checked_records(path, SUITE_COLUMNS, expected, "suite"):
+        row = {k: record[k] for k in SUITE_COLUMNS}
+        for key in ("domain_file", "problem_file", "fixed_from"):
+            if row[key] and not Path(row[key]).is_absolute():
+                row[key] = str(root / row[key])
+        out.append(BenchTask(**row))
     return out
 
 
