@@ -74,8 +74,8 @@ def bench(
     if step != "generate" and tasks != DEFAULT_TASKS:
         raise OptionError(f"--tasks {tasks!r}: only 'bench generate' reads it (run and report take --only)")
     if step == "generate":
-        _check_task_names(tasks, ipc)
-        tasks_found = benchmark.generate_suite(ipc, root / "data" / "domains", tasks.split(","), log=ui.info_plain)
+        names = _check_task_names(tasks, ipc)
+        tasks_found = benchmark.generate_suite(ipc, root / "data" / "domains", names, log=ui.info_plain)
         benchmark.write_suite(tasks_found, suite, root)
         ui.info(f"{len(tasks_found)} tasks over {len({t.domain for t in tasks_found})} domains -> {suite}")
         return
@@ -149,15 +149,21 @@ def _check_strategy_names(names: str, option: str) -> None:
                               f"{', '.join(STRATEGIES)})")
 
 
-def _check_task_names(tasks: str, ipc: Path) -> None:
-    """Refuse (exit 37) a --tasks list that is empty or names a task no family of the collection has."""
+def _check_task_names(tasks: str, ipc: Path) -> list[str]:
+    """The --tasks names (spaces around them dropped); refuse (exit 37) a list that is empty or names a task no
+    family of the collection has, and (exit 30) an IPC collection that is no folder."""
+    from guided_lfd.errors import InputFileError, Location
+
     names = [t.strip() for t in tasks.split(",") if t.strip()]
     if not names:
         raise OptionError(f"--tasks {tasks!r}: expected comma-separated task names (task01,task02)")
+    if not ipc.is_dir():
+        raise InputFileError("is a file, expected a folder of IPC domains (one folder per family)", Location(str(ipc)))
     families = [d for d in ipc.iterdir() if d.is_dir()]
     for name in names:
         if not any((d / f"{name}.pddl").is_file() for d in families):
             raise OptionError(f"--tasks {tasks}: no family of {ipc} has a task '{name}'")
+    return names
 
 
 def _check_options(time_limit: float, jobs: int, strategies: str, semantics: str) -> None:

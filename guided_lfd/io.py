@@ -64,31 +64,36 @@ def write_text(path: str | Path, text: str) -> None:
 
 @contextmanager
 def staged_folder(out: Path) -> Iterator[Path]:
-    """A hidden folder beside ``out`` to write a run's many outputs into; they move into ``out`` when the run ends.
+    """A hidden folder inside ``out`` to write a run's many outputs into; they move into place when the run ends.
 
-    A run that fails or is interrupted (Ctrl-C, SIGTERM) before then leaves ``out`` as it was and removes the
-    staged files, so a folder of results is never half replaced; the move itself is one rename per file.
-    ``out`` is made if need be (its parents too); files already in ``out`` that the run does not write are kept.
+    A run that fails or is interrupted (Ctrl-C, SIGTERM) before then leaves ``out`` as it was (a folder it made
+    is removed again) and removes the staged files, so a folder of results is never half replaced; the move
+    itself is one rename per file, inside ``out`` (so on its file system, whatever links or mounts lead there).
+    Files already in ``out`` that the run does not write are kept.
     """
     import shutil
     import tempfile
 
+    made = not out.exists()
     try:
-        out.parent.mkdir(parents=True, exist_ok=True)
-        stage = Path(tempfile.mkdtemp(prefix=f".{out.name[:50]}.staged-", dir=out.parent))
+        out.mkdir(parents=True, exist_ok=True)
+        stage = Path(tempfile.mkdtemp(prefix=".staged-", dir=out))
     except OSError as exc:
         raise OutputError(f"cannot write there ({exc.strerror or exc})", Location(str(out))) from None
+    done = False
     try:
         yield stage
         _move_into(stage, out)
+        done = True
     finally:
         shutil.rmtree(stage, ignore_errors=True)
+        if made and not done:
+            shutil.rmtree(out, ignore_errors=True)
 
 
 def _move_into(stage: Path, out: Path) -> None:
     """Move every file under ``stage`` to the same place under ``out`` (each an atomic replace)."""
     try:
-        out.mkdir(exist_ok=True)
         for folder, subfolders, files in os.walk(stage):
             target = out / Path(folder).relative_to(stage)
             for name in subfolders:

@@ -622,8 +622,8 @@ def check_session_folder(out: Path, problem: Problem) -> None:
 
 def _check_same_task(out: Path, problem: Problem, refuse) -> None:
     """A previous session in ``out`` must be of ``problem``: the same PDDL problem name (its session.json's
-    ``task``), and the same problem file (by content while the earlier one is still there, else by name).  A
-    session without a session.json was interrupted before its end."""
+    ``task``) and problem file name (the recorded path may be relative to another working folder).  A session
+    without a session.json was interrupted before its end."""
     import json
 
     record = out / "session.json"
@@ -637,19 +637,8 @@ def _check_same_task(out: Path, problem: Problem, refuse) -> None:
         return
     if task is not None and problem.name and task != problem.name:
         refuse(f"holds a session of another task ({task})")
-    if problem.path and not _same_problem_file(earlier, Path(problem.path)):
+    if problem.path and earlier.name != Path(problem.path).name:
         refuse(f"holds a session of another task ({earlier})")
-
-
-def _same_problem_file(earlier: Path, now: Path) -> bool:
-    """Whether the problem file a session recorded is ``now``'s: the same content while it exists, else the same
-    file name (the folder may have moved)."""
-    try:
-        if earlier.is_file() and now.is_file():
-            return earlier.read_bytes() == now.read_bytes()
-    except OSError:
-        pass
-    return earlier.name == now.name
 
 
 @contextmanager
@@ -687,11 +676,13 @@ def _set_aside(out: Path) -> Path | None:
         for entry in previous:
             entry.rename(aside / entry.name)
             moved.append(entry)
-    except OSError as exc:
+    except BaseException as exc:  # an OS refusal, or Ctrl-C/SIGTERM part-way: move back what was moved
         for entry in moved:
             (aside / entry.name).rename(entry)
         if aside is not None:
             aside.rmdir()
+        if not isinstance(exc, OSError):
+            raise
         raise OutputError(f"cannot set the previous session aside ({exc.strerror or exc}); nothing was changed",
                           Location(str(out))) from None
     return aside

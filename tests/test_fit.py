@@ -4,6 +4,8 @@ of an unrelated type are exit 34 naming the predicate, before any work (it was e
 
 from __future__ import annotations
 
+import json
+
 import pytest
 
 from conftest import DATA, ROOT
@@ -91,3 +93,13 @@ def test_a_type_neither_domain_relates_is_a_clash_in_every_command(runner, app, 
     assert "argument 1 of predicate open is of type widget here and of type drawer" in result.stderr
     assert len(result.stderr.strip().splitlines()) == 1
     assert not (tmp_path / "session").exists()
+
+
+def test_an_either_type_is_related_through_its_members(runner, app):
+    """Review of this change: (at ?v - (either truck plane) ...) beside the robot's (at ?v - truck ...) was refused
+    (34) once undeclared types stopped counting as related."""
+    folder = DATA / "fit"
+    result = runner.invoke(app, ["excuse", str(folder / "either-robot.pddl"), str(folder / "either-problem.pddl"),
+                                 "--human", str(folder / "either-human.pddl"), "--json"])
+    assert result.exit_code == 0, result.stderr
+    assert [c["change"] for c in json.loads(result.stdout)["excuse"]["changes"]] == ["-(at t a)", "+(at t b)"]

@@ -77,6 +77,8 @@ def test_quality_and_demos_find_the_shipped_data_from_elsewhere(runner, app, els
     (["bench", "generate", "--suite", "s.csv", "--tasks", ","], EXIT_BAD_OPTION, "expected comma-separated task"),
     (["bench", "run", "--stop-after-unfinished", "nope"], EXIT_BAD_OPTION, "unknown strategy 'nope'"),
     (["bench", "run", "--tasks", ""], EXIT_BAD_OPTION, "only 'bench generate' reads it"),
+    (["bench", "generate", "--ipc", "taken", "--suite", "s.csv"], EXIT_INPUT_FILE,
+     "taken: input error: is a file, expected a folder of IPC domains"),
     (["quality", "--demos", "empty", "--domains", str(ROOT / "data" / "domains")], EXIT_INPUT_FILE,
      "empty: input error: holds no labelled demonstrations"),
 ])
@@ -143,3 +145,12 @@ def test_a_trace_source_without_good_labels_is_named(runner, app, elsewhere, lab
     result = runner.invoke(app, ["quality", "--traces", "tr"])
     assert result.exit_code == EXIT_INPUT_FILE, result.output
     assert message in result.stderr and "P1-complete.labels.csv" in result.stderr
+
+
+def test_generate_takes_task_names_with_spaces_around_them(runner, app, elsewhere):
+    """Review of this change: '--tasks "task01, task02"' checked ' task02' stripped but generated without it."""
+    result = runner.invoke(app, ["bench", "generate", "--root", str(ROOT), "--tasks", "task01, task02",
+                                 "--suite", "s.csv", "--quiet"])
+    assert result.exit_code == 0, result.stderr
+    text = (elsewhere / "s.csv").read_text()
+    assert "-task02-" in text and "-task01-" in text

@@ -210,3 +210,17 @@ def test_what_the_goal_names_is_never_structure():
     assert "pointing" not in structural_predicates(robot, problem)
     robot, problem = _without("satellite", "task01", "turn_to")  # no pointing goal: held, as the complete domain's
     assert "pointing" in structural_predicates(robot, problem)   # excuse does not need it either
+
+
+def test_taking_a_placed_thing_away_is_allowed_by_engine_and_checker_alike(runner, app):
+    """Review of this change: the checker's one-place law came out "exactly one" (no action touches the static
+    relation, so every action keeps its count) while the engine asks at most one; the excuse -(placed b1 hall)
+    then failed the engine's own check (internal error)."""
+    boxes = [str(STRUCTURE / "boxes.pddl"), str(STRUCTURE / "boxes-problem.pddl")]
+    result = runner.invoke(app, ["excuse", *boxes, "--change-structure", "--verify", "--json"])
+    assert result.exit_code == 0, result.stderr
+    doc = json.loads(result.stdout)
+    assert [c["change"] for c in doc["excuse"]["changes"]] == ["-(placed b1 hall)"]
+    assert doc["statistics"]["minimality"] == "verified"
+    default = runner.invoke(app, ["excuse", *boxes])
+    assert default.exit_code == 11 and "only one that changes it exists: -(placed b1 hall)" in default.stderr

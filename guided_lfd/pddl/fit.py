@@ -23,11 +23,18 @@ def _related(a: str, b: str, *domains: Domain) -> bool:
     them is ``object``, which every type is within."""
     if "object" in (a, b) or a == b:
         return True
+    if a.startswith("(either") or b.startswith("(either"):  # related if some member of either is
+        return any(_related(x, y, *domains) for x in _members(a) for y in _members(b))
     for domain in domains:
         if a in domain.types and b in domain.types and (
                 a in type_ancestors(domain.types, b) or b in type_ancestors(domain.types, a)):
             return True
     return False
+
+
+def _members(t: str) -> list[str]:
+    """The types an ``(either t1 t2 ...)`` type stands for (a plain type: itself)."""
+    return t[len("(either"):].rstrip(")").split() if t.startswith("(either") else [t]
 
 
 def check_model_fits(robot: Domain, model: Domain, option: str) -> None:

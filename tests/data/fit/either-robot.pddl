@@ -1,0 +1,5 @@
+(define (domain e)
+  (:requirements :strips :typing)
+  (:types truck plane place)
+  (:predicates (at ?v - truck ?p - place) (goal-at ?p - place))
+  (:action noop :parameters (?v - truck ?p - place) :precondition (at ?v ?p) :effect (goal-at ?p)))
