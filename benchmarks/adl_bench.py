@@ -64,12 +64,20 @@ def fast_downward_script() -> Path | None:
     return script if script.exists() else None
 
 
-def run_fd(script: Path, domain: Path, problem: Path, limit: float) -> tuple[str, str, int | None, float]:
-    """(search, status, cost, wall s): ``astar(lmcut())``, or ``astar(blind())`` where LM-cut refuses the task."""
-    for search in ("astar(lmcut())", "astar(blind())"):
+#: Fast Downward configurations (options before the files, options after them), tried in turn where the task
+#: uses what one refuses: A* with LM-cut, else blind A*.
+OPTIMAL = [((), ("--search", "astar(lmcut())")), ((), ("--search", "astar(blind())"))]
+
+
+def run_fd(script: Path, domain: Path, problem: Path, limit: float,
+           configs=OPTIMAL) -> tuple[str, str, int | None, float]:
+    """(configuration, status, cost, wall s) of Fast Downward with the first of ``configs`` the task allows;
+    status ``unsolvable`` only where Fast Downward proves it (its exit codes 10 and 11)."""
+    for before, after in configs:
+        search = " ".join((*before, *after))
         with tempfile.TemporaryDirectory() as scratch:
-            cmd = [sys.executable, str(script), "--overall-time-limit", f"{int(limit)}s", str(domain), str(problem),
-                   "--search", search]
+            cmd = [sys.executable, str(script), *before, "--overall-time-limit", f"{int(limit)}s", str(domain),
+                   str(problem), *after]
             start = time.perf_counter()
             try:
                 proc = subprocess.run(cmd, capture_output=True, text=True, timeout=limit + 30, cwd=scratch)
@@ -82,10 +90,14 @@ def run_fd(script: Path, domain: Path, problem: Path, limit: float) -> tuple[str
         cost = re.search(r"Plan cost: (\d+)", out)
         if cost:
             return search, "solved", int(cost.group(1)), wall
-        if "Search stopped without finding a solution" in out or "unsolvable" in out.lower():
+        if proc.returncode in (10, 11):  # the translator or a complete search proved it
             return search, "unsolvable", None, wall
-        if proc.returncode in (23, 24) or "Time limit" in out:
+        if proc.returncode == 12:  # an incomplete search ended without a plan: no proof
+            return search, "unsolved-incomplete", None, wall
+        if proc.returncode in (21, 23, 24) or "Time limit" in out:  # translator or search out of time
             return search, "timeout", None, wall
+        if proc.returncode in (20, 22):  # translator or search out of memory
+            return search, "memout", None, wall
         return search, f"exit {proc.returncode}", None, wall
     return "-", "unsupported", None, 0.0
 
