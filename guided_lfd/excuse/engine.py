@@ -499,7 +499,9 @@ class _Run:
 
             self.options = options = adl_options(options)
         self._enter("grounding")
-        self.fixed = fixed = options.fixed_predicates(self.domain, self.problem)
+        held = options.held_structure(self.domain, self.problem)  # once: fixed_predicates(domain, problem) adds it
+        base = options.fixed_predicates(self.domain)
+        self.fixed = fixed = base + [p for p in held if p not in base]
         prepared = prepare(self.domain, self.problem, options.semantics, fixed, options.costs,
                            options.invariants_from, self.deadline, self._enter, options.one_place)
         task, space, oracle = prepared.task, prepared.space, prepared.oracle
@@ -509,7 +511,7 @@ class _Run:
         stats.changeable_atoms, stats.relevant_atoms = space.changeable.bit_count(), space.relevant_atoms.bit_count()
         stats.relevant_actions, stats.invariant_groups = len(space.relevant_actions), len(space.groups)
         stats.fixed_predicates = fixed
-        stats.structure_held = options.held_structure(self.domain, self.problem) or None
+        stats.structure_held = held or None
         stats.invariants_refuted_by_goal = prepared.refuted or None
         stats.kept_in_one_place = prepared.kept_in_one_place or None
         self.unachievable = unachievable_goals(task)

@@ -37,7 +37,7 @@ __all__ = ["placing_predicates", "structural_predicates"]
 def structural_predicates(domain: Domain, problem: Problem, models: Sequence[Domain] = ()) -> dict[str, str]:
     """The static predicates of ``domain`` that describe the world's structure in ``problem``, each with why;
     what an action of another model given (``--invariants-from``, the human's) changes is no structure."""
-    static = set(domain.predicates) - domain.fluent_predicates() - domain.derived_predicates() - {EQUALITY}
+    static = _static(domain)
     for model in models:
         static -= model.fluent_predicates()
     static -= _goal_predicates(problem)  # the task asks for it to change: the world can change it
@@ -59,6 +59,19 @@ def structural_predicates(domain: Domain, problem: Problem, models: Sequence[Dom
     return out
 
 
+def _static(domain: Domain) -> set[str]:
+    """The predicates no action of ``domain`` changes (nor an axiom derives)."""
+    return set(domain.predicates) - domain.fluent_predicates() - domain.derived_predicates() - {EQUALITY}
+
+
+def _true_args(problem: Problem) -> dict[str, list[tuple[str, ...]]]:
+    """The arguments of the initial state's true atoms, by predicate."""
+    out: dict[str, list[tuple[str, ...]]] = {}
+    for atom in problem.init:
+        out.setdefault(atom.predicate, []).append(atom.args)
+    return out
+
+
 def _goal_predicates(problem: Problem) -> set[str]:
     """The predicates the task's goal names (an ADL goal's literals anywhere in its formula)."""
     names = {lit.atom.predicate for lit in problem.goal}
@@ -76,9 +89,7 @@ class _World:
         self.domain, self.static = domain, static
         self.objects = {**domain.constants, **problem.objects}
         self.typed = any(t != "object" for t in self.objects.values())
-        self.true_args: dict[str, list[tuple[str, ...]]] = {}
-        for atom in problem.init:
-            self.true_args.setdefault(atom.predicate, []).append(atom.args)
+        self.true_args = _true_args(problem)
         self.moved = set().union(*(_moved_types(d) for d in (domain, *models)))
         self.places = _place_types(domain, static, models, self.true_args)
 
@@ -134,10 +145,8 @@ def placing_predicates(source: Domain, problem: Problem) -> dict[str, str]:
 
     No action of ``source`` moves those objects (its skill to is missing), so no invariant synthesis keeps them in
     one place; under the consistent semantics the excuse keeps each in at most one all the same."""
-    static = set(source.predicates) - source.fluent_predicates() - source.derived_predicates() - {EQUALITY}
-    found: dict[str, list[tuple[str, ...]]] = {}
-    for atom in problem.init:
-        found.setdefault(atom.predicate, []).append(atom.args)
+    static = _static(source)
+    found = _true_args(problem)
     objects = {**source.constants, **problem.objects}
     untyped = all(t == "object" for t in objects.values())
     places = {args[1] for name in source.fluent_predicates() for args in found.get(name, []) if len(args) == 2}
