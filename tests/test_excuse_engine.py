@@ -108,9 +108,10 @@ def test_no_excuse_names_the_goal_no_skill_achieves(tmp_path):
     assert report.unachievable_goals == [Literal(Atom("inside", ("redplate", "pinkdrawer")))]
 
 
-def test_costs_prefer_cheap_changes_and_fixed_excludes_predicates():
+@pytest.mark.parametrize("strategy", ALL_STRATEGIES)
+def test_costs_prefer_cheap_changes_and_fixed_excludes_predicates(strategy):
     domain, problem = parse_task(BLOCKS / "domain-no-unstack.pddl", BLOCKS / "task03.pddl")
-    literal = dict(semantics=Semantics.LITERAL, all_minimal=True, verify=True)
+    literal = dict(semantics=Semantics.LITERAL, all_minimal=True, verify=True, strategy=strategy)
     cheap = find_excuses(domain, problem, ExcuseOptions(costs=["clear=5", "holding=0"], **literal))
     # holding is free, clear is dear: holding b and holding c (cost 0) win.
     assert changes_of(cheap) == [["+(holding b)", "+(holding c)"]]
@@ -120,9 +121,10 @@ def test_costs_prefer_cheap_changes_and_fixed_excludes_predicates():
         assert not {c.atom.predicate for c in e.changes} & {"holding", "clear"}
 
 
-def test_max_size_too_small_reports_limit():
+@pytest.mark.parametrize("strategy", ALL_STRATEGIES)
+def test_max_size_too_small_reports_limit(strategy):
     domain, problem = parse_task(BLOCKS / "domain-no-unstack.pddl", BLOCKS / "task03.pddl")
-    report = find_excuses(domain, problem, ExcuseOptions(max_size=2))
+    report = find_excuses(domain, problem, ExcuseOptions(max_size=2, strategy=strategy))
     assert report.status == "no-excuse-within-size"
 
 
@@ -278,18 +280,19 @@ def test_strategy_matches_brute_force(tmp_path_factory, strategy, semantics, pdd
 @settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow, HealthCheck.function_scoped_fixture])
 @given(pddl=small_tasks(), costs=st.lists(st.tuples(st.sampled_from(["p0", "p1", "u0", "u1"]), st.integers(0, 4)),
                                           max_size=3))
-def test_landmark_matches_baseline_with_costs(tmp_path_factory, semantics, pddl, costs):
+def test_every_strategy_matches_baseline_with_costs(tmp_path_factory, semantics, pddl, costs):
     domain, problem = _parse_random(tmp_path_factory, "rndc", pddl)
     specs = [f"{p}={c}" for p, c in dict(costs).items() if p in domain.predicates]
     found = {}
-    for strategy in ("landmark", "baseline"):
+    for strategy in ALL_STRATEGIES:
         report = find_excuses(domain, problem, ExcuseOptions(semantics=semantics, strategy=strategy, costs=specs,
                                                              all_minimal=True, verify=True, max_size=3))
         found[strategy] = (report.status, sorted((e.cost, e.size, tuple(str(c) for c in e.changes))
                                                 for e in report.excuses))
     # The baseline enumerates by weight up to the size bound: the reference.
     if found["baseline"][0] != "no-excuse-within-size":
-        assert found["landmark"] == found["baseline"]
+        for strategy in ALL_STRATEGIES:
+            assert found[strategy] == found["baseline"], strategy
 
 
 @pytest.mark.parametrize("small", [True, False])
@@ -371,13 +374,15 @@ def test_statistics_are_typed_and_written_in_the_documented_order():
     assert report.excuse.plan and all(isinstance(step, PlanStep) for step in report.excuse.plan)
 
 
+@pytest.mark.parametrize("strategy", [n for n, s in STRATEGIES.items() if getattr(s, "lists_slack", False)])
 @pytest.mark.parametrize("semantics", list(Semantics))
 @settings(max_examples=30, deadline=None, suppress_health_check=[HealthCheck.too_slow, HealthCheck.function_scoped_fixture])
 @given(pddl=small_tasks())
-def test_slack_lists_every_excuse_up_to_one_more_change_that_extends_none(tmp_path_factory, semantics, pddl):
+def test_slack_lists_every_excuse_up_to_one_more_change_that_extends_none(tmp_path_factory, strategy, semantics, pddl):
     """--slack 1 (unit costs): the minimal excuses and every excuse one change larger that contains none of them."""
     domain, problem = _parse_random(tmp_path_factory, "rnds", pddl)
-    report = find_excuses(domain, problem, ExcuseOptions(semantics=semantics, all_minimal=True, verify=True, slack=1, max_size=3))
+    report = find_excuses(domain, problem, ExcuseOptions(semantics=semantics, strategy=strategy, all_minimal=True,
+                                                         verify=True, slack=1, max_size=3))
     if report.status != "excuse-found":
         return  # already solvable or no excuse: the plain brute-force test covers those
     groups = checker_laws(domain, problem, report)

@@ -64,7 +64,7 @@ class ExcuseOptions:
     invariants_from: Domain | None = None
     fixed_from: Domain | None = None
     optimal_plans: bool = True
-    #: With ``all_minimal``, also the excuses up to this much costlier than the minimum (landmark strategy).
+    #: With ``all_minimal``, also the excuses up to this much costlier than the minimum (landmark and symbolic strategies).
     slack: int = 0
     #: ``time.monotonic()`` when the run started (the time limit counts from
     #: it: a command line starts it before reading its files); None = now.
@@ -247,11 +247,12 @@ def check_option_names(domain: Domain, options: ExcuseOptions) -> None:
     for model, option in ((options.invariants_from, "--invariants-from"), (options.fixed_from, "--fixed-from")):
         if model is not None:
             check_model_fits(domain, model, option)
-    if options.slack < 0 or (options.slack and options.strategy != "landmark"):
+    listing = [name for name, s in STRATEGIES.items() if getattr(s, "lists_slack", False)]
+    if options.slack < 0 or (options.slack and options.strategy not in listing):
         from guided_lfd.errors import OptionError
 
-        raise OptionError(f"--slack {options.slack}: expected a cost >= 0, with the landmark strategy "
-                          "(the baseline enumerates minimal excuses only)")
+        raise OptionError(f"--slack {options.slack}: expected a cost >= 0, with the {' or '.join(listing)} "
+                          "strategy (the baseline enumerates minimal excuses only)")
 
 
 def unachievable_goals(task: GroundTask) -> list[Literal]:

@@ -118,19 +118,7 @@ def mutex_groups(source: Domain, task: GroundTask, deadline: float | None = None
     for i, atom in enumerate(task.atoms):
         atoms_of.setdefault(atom.predicate, []).append(i)
     for inv in invariants:
-        by_key: dict[tuple, int] = {}
-        for part in inv.parts:
-            for i in atoms_of.get(part.predicate, ()):
-                atom = task.atoms[i]
-                if len(atom.args) != len(part.args):
-                    continue
-                key = tuple(
-                    atom.args[pos]
-                    for arg_index in range(part.arity())
-                    for pos, arg in enumerate(part.args)
-                    if arg == arg_index
-                )
-                by_key[key] = by_key.get(key, 0) | (1 << i)
+        by_key = invariant_instances(inv, task, atoms_of)
         conserved = _conserved(check_task, task, [m for m in by_key.values()])
         # Only where the initial state keeps the group (where it does not, the group is not used anyway).
         if any(_goal_breaks(task, mask, conserved and (task.init & mask).bit_count() == 1)
@@ -153,6 +141,25 @@ def mutex_groups(source: Domain, task: GroundTask, deadline: float | None = None
         if g.mask not in unique or (g.exactly_one and not unique[g.mask].exactly_one):
             unique[g.mask] = g
     return [unique[m] for m in sorted(unique)]
+
+
+def invariant_instances(inv, task: GroundTask, atoms_of: dict[str, list[int]]) -> dict[tuple, int]:
+    """A lifted invariant's ground groups in ``task``, by the objects its parameters are bound to, as atom masks
+    (``atoms_of``: the task's atom indices by predicate)."""
+    by_key: dict[tuple, int] = {}
+    for part in inv.parts:
+        for i in atoms_of.get(part.predicate, ()):
+            atom = task.atoms[i]
+            if len(atom.args) != len(part.args):
+                continue
+            key = tuple(
+                atom.args[pos]
+                for arg_index in range(part.arity())
+                for pos, arg in enumerate(part.args)
+                if arg == arg_index
+            )
+            by_key[key] = by_key.get(key, 0) | (1 << i)
+    return by_key
 
 
 def placement_groups(task: GroundTask, placing: dict[str, str], groups: list[MutexGroup],

@@ -21,6 +21,7 @@ from guided_lfd.excuse.progress import ProgressMeter
 from guided_lfd.excuse.reach import ReachabilityOracle
 from guided_lfd.excuse.space import ChangeSpace
 from guided_lfd.excuse.status import ExcuseStatus
+from guided_lfd.excuse.symbolic import SymbolicSearch
 from guided_lfd.planning.grounding import GroundAction, bits
 
 
@@ -134,6 +135,7 @@ class LandmarkSearch:
 
     name = "landmark"
     description = "A* over change sets with LM-cut bounds and landmark branching (default)"
+    lists_slack = True  # --slack: lists the excuses up to that much costlier too
 
     def search(self, space: ChangeSpace, limits: SearchLimits, progress: ProgressMeter | None = None,
                oracle: ReachabilityOracle | None = None, relaxed: RelaxedExcuseTask | None = None) -> SearchOutcome:
@@ -506,5 +508,5 @@ class BaselineSearch:
 
 
 #: Registered strategies by name; the first is the default.
-STRATEGIES: dict[str, Strategy] = {s.name: s for s in (LandmarkSearch(), BaselineSearch())}
+STRATEGIES: dict[str, Strategy] = {s.name: s for s in (LandmarkSearch(), BaselineSearch(), SymbolicSearch())}
 DEFAULT_STRATEGY = "landmark"

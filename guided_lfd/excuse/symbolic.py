@@ -1,0 +1,129 @@
+"""The symbolic excuse search: every state the robot can reach the goal from, as one diagram.
+
+Backward reachability over the robot's relevant actions gives the set R of
+states from which the goal can be reached (its layers give a plan from any of
+them).  The excuse states are R without the goal states, inside the
+invariants (consistent semantics), with every atom that may not change at its
+initial value; the minimal excuses are its members nearest to the initial
+state (:mod:`guided_lfd.symbolic.nearest`), in the order of the searches'
+weight (cost first, size second).  No candidate is checked on its own.
+
+The variables are the relevant atoms and, under the consistent semantics,
+the atoms sharing an invariant group with them (repairing a group can need
+a change to an atom no action reads).  The diagram library is imported here,
+when this strategy runs, and nowhere else on an excuse run.
+"""
+
+from __future__ import annotations
+
+import time
+from typing import Any
+
+from guided_lfd.errors import SearchTimeout, UnsupportedFeatureError
+from guided_lfd.excuse.progress import ProgressMeter
+from guided_lfd.excuse.space import ChangeSpace
+from guided_lfd.excuse.status import ExcuseStatus
+from guided_lfd.planning.grounding import GroundAction, bits
+
+
+def excuse_atoms(space: ChangeSpace) -> set[int]:
+    """The atoms the symbolic search keeps as variables: relevant ones, closed under shared invariant groups."""
+    atoms = set(bits(space.relevant_atoms))
+    frontier = list(atoms)
+    while frontier:
+        i = frontier.pop()
+        for gi in space.groups_of.get(i, ()):
+            for j in bits(space.groups[gi].mask):
+                if j not in atoms:
+                    atoms.add(j)
+                    frontier.append(j)
+    return atoms
+
+
+class SymbolicRun:
+    """One symbolic excuse search: the diagrams of the task, the reached set R and its excuse states."""
+
+    def __init__(self, space: ChangeSpace, deadline: float | None) -> None:
+        from guided_lfd.symbolic.encoding import SymbolicTask, supports, variable_order
+
+        task = space.task
+        if not supports(task):
+            raise UnsupportedFeatureError("the symbolic strategy handles STRIPS tasks (no conditional effects, "
+                                          "no derived predicates)")
+        self.space, self.deadline = space, deadline
+        goal = list(bits(task.goal_pos | task.goal_neg))
+        atoms = excuse_atoms(space)
+        order = variable_order(atoms, space.relevant_actions, first=goal, groups=[g.mask for g in space.groups])
+        self.sym = SymbolicTask(task, order, space.relevant_actions)
+
+    def excuse_states(self) -> Any:
+        """R minus the goal, inside the invariants, with every unchangeable variable at its initial value."""
+        from guided_lfd.symbolic.reach import backward_layers
+
+        sym, space, task = self.sym, self.space, self.space.task
+        self.layers = backward_layers(sym, deadline=self.deadline)
+        states = self.layers.reached & ~sym.goal()
+        if space.groups:
+            states = states & sym.invariants((g.mask, g.exactly_one) for g in space.groups)
+        fixed = {v: bool(task.init >> atom & 1) for v, atom in enumerate(sym.atoms)
+                 if not space.changeable >> atom & 1}
+        return states & sym.dd.cube(fixed)
+
+    def plan(self, changes: int) -> list[GroundAction]:
+        """A plan from the excuse state of ``changes``, read off the backward layers."""
+        from guided_lfd.symbolic.reach import plan_from
+
+        plan = plan_from(self.sym, self.layers, self.space.task.init ^ changes)
+        if plan is None:
+            raise RuntimeError("internal check failed: an excuse state outside the reached set")
+        return plan
+
+
+class SymbolicSearch:
+    """Backward symbolic reachability, then the reached states nearest to the initial state."""
+
+    name = "symbolic"
+    description = "one backward search over sets of states (decision diagrams); excuses are its nearest members"
+    lists_slack = True
+
+    def search(self, space: ChangeSpace, limits: Any, progress: ProgressMeter | None = None,
+               oracle: Any = None, relaxed: Any = None) -> Any:
+        """Minimal change sets for ``space``; ``oracle`` and ``relaxed`` are unused (no candidate is checked)."""
+        from guided_lfd.excuse.strategies import SearchOutcome
+
+        try:
+            return self._search(space, limits, progress)
+        except SearchTimeout:
+            return SearchOutcome([], {}, ExcuseStatus.TIMEOUT)
+
+    def _search(self, space: ChangeSpace, limits: Any, progress: ProgressMeter | None) -> Any:
+        from guided_lfd.excuse.strategies import SearchOutcome
+        from guided_lfd.symbolic.nearest import nearest
+
+        run = SymbolicRun(space, limits.deadline)
+        states = run.excuse_states()
+        solutions: list[int] = []
+        limit: float | None = None
+        size_pruned = False
+        for weight, changes in nearest(run.sym.dd, states, run.sym.atoms, space.weights, space.task.init,
+                                       limits.max_size):
+            if limit is not None and weight > limit:
+                break
+            if limits.deadline is not None and time.monotonic() > limits.deadline:
+                raise SearchTimeout("symbolic excuse search exceeded its time limit")
+            if any(changes & s == s for s in solutions):
+                continue  # an excuse with changes added: no other choice
+            if limit is None:
+                slack = limits.slack
+                limit = weight if not slack else (space.cost(changes) + slack + 1) * space.size_factor - 1
+            solutions.append(changes)
+            if not limits.all_minimal or len(solutions) >= limits.max_solutions:
+                break
+        if not solutions and limits.max_size is not None:
+            size_pruned = bool(states != run.sym.dd.false)
+        plans = {c: run.plan(c) for c in solutions}
+        status = (ExcuseStatus.FOUND if solutions
+                  else ExcuseStatus.NONE_WITHIN_SIZE if size_pruned else ExcuseStatus.NONE)
+        extra = {"symbolic_layers": len(run.layers.layers), "symbolic_nodes": run.sym.dd.size(run.layers.reached),
+                 "symbolic_variables": len(run.sym.atoms)}
+        return SearchOutcome(sorted(solutions), plans, status, 0, 0, 0, extra)

@@ -1,0 +1,56 @@
+"""Symbolic proofs that a planning task has no plan (``plan``'s unsolvability check).
+
+The searches run over the actions an optimal plan may use (reachable, then
+relevant) and the atoms they touch.  States outside Fast Downward's
+invariants (synthesised from the robot's actions as they are; each ground
+group at most one true atom where the initial state has at most one) are
+never reached from the initial state, so both directions leave them out:
+backward search from a partial goal would otherwise wade through states no
+plan can pass (a block in two places).
+"""
+
+from __future__ import annotations
+
+import time
+from typing import Iterable
+
+from guided_lfd.planning.grounding import GroundAction, GroundTask, bits
+from guided_lfd.symbolic.encoding import SymbolicTask, variable_order
+from guided_lfd.symbolic.reach import Proof, prove_unsolvable
+
+
+def reachable_invariants(task: GroundTask, deadline: float | None = None) -> list[int]:
+    """Masks of ground groups of which at most one atom holds in every state reachable from ``task.init``."""
+    from guided_lfd.excuse.invariants import invariant_instances, lifted_invariants
+
+    remaining = None if deadline is None else max(1.0, deadline - time.monotonic())
+    atoms_of: dict[str, list[int]] = {}
+    for i, atom in enumerate(task.atoms):
+        atoms_of.setdefault(atom.predicate, []).append(i)
+    masks = set()
+    for inv in lifted_invariants(task.domain, task.problem, remaining, reverse=False):
+        for mask in invariant_instances(inv, task, atoms_of).values():
+            if mask.bit_count() > 1 and (task.init & mask).bit_count() <= 1:
+                masks.add(mask)
+    return sorted(masks)
+
+
+def symbolic_task(task: GroundTask, actions: Iterable[GroundAction], groups: list[int],
+                  library: str | None = None) -> SymbolicTask:
+    """``task`` over ``actions`` and the atoms they touch, ordered from the causal graph."""
+    actions = list(actions)
+    goal = list(bits(task.goal_pos | task.goal_neg))
+    atoms = set(goal)
+    for a in actions:
+        atoms.update(a.pre_pos_ids, a.pre_neg_ids, a.add_ids, a.delete_ids)
+    order = variable_order(atoms, actions, first=goal, groups=groups)
+    return SymbolicTask(task, order, actions) if library is None else SymbolicTask(task, order, actions, library)
+
+
+def decide(task: GroundTask, actions: list[GroundAction], deadline: float | None = None,
+           library: str | None = None) -> Proof:
+    """Whether ``task`` is solvable from its initial state, decided by bidirectional symbolic search."""
+    groups = reachable_invariants(task, deadline)
+    sym = symbolic_task(task, actions, groups, library)
+    constraint = sym.invariants((m, False) for m in groups)
+    return prove_unsolvable(sym, task.init, deadline, constraint)

@@ -1,0 +1,158 @@
+"""The symbolic engine: diagram libraries, encoding, reachability, nearest members, unsolvability proofs.
+
+The excuse strategy itself is covered with every other registered strategy
+against brute force (tests/test_excuse_engine.py)."""
+
+from __future__ import annotations
+
+import importlib.util
+import itertools
+import random
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+from hypothesis import HealthCheck, given, settings
+
+from conftest import BLOCKS, kitchen
+from test_excuse_engine import _parse_random, small_tasks
+from guided_lfd.planning.grounding import bits, ground
+from guided_lfd.planning.search import astar, planning_actions
+from guided_lfd.pddl.reader import parse_task
+from guided_lfd.symbolic.diagrams import open_diagrams
+from guided_lfd.symbolic.encoding import SymbolicTask, variable_order
+from guided_lfd.symbolic.nearest import nearest
+from guided_lfd.symbolic.reach import backward_layers, plan_from, prove_unsolvable
+from guided_lfd.symbolic.unsolvable import decide, symbolic_task
+
+LIBRARIES = ["cudd"] + (["oxidd"] if importlib.util.find_spec("oxidd") else [])
+ROOT = Path(__file__).resolve().parent.parent
+
+
+def _random_function(dd, rng: random.Random, n: int):
+    f = dd.false
+    for _ in range(4):
+        cube = dd.cube({v: rng.random() < 0.5 for v in rng.sample(range(n), 3)})
+        f = f | cube if rng.random() < 0.7 else f & ~cube
+    return f
+
+
+def _member(dd, f, state: int) -> bool:
+    return (f & dd.cube({v: bool(state >> v & 1) for v in range(6)})) != dd.false
+
+
+@pytest.mark.parametrize("library", LIBRARIES)
+def test_walking_a_diagram_from_its_root_agrees_with_the_library(library):
+    """top() gives the cofactors of complemented roots too (dd.cudd hands out the regular node's children)."""
+    dd = open_diagrams(6, library)
+    rng = random.Random(1)
+    for _ in range(100):
+        f = _random_function(dd, rng, 6)
+        for state in range(64):
+            g, node = f, dd.top(f)
+            while node is not None:
+                level, high, low = node
+                g = high if state >> level & 1 else low
+                node = dd.top(g)
+            assert (g == dd.true) == _member(dd, f, state)
+
+
+@pytest.mark.parametrize("library", LIBRARIES)
+def test_nearest_members_come_by_weighted_distance_and_skip_supersets(library):
+    dd = open_diagrams(6, library)
+    rng = random.Random(2)
+    atoms = list(range(6))
+    for _ in range(60):
+        f = _random_function(dd, rng, 6)
+        origin = rng.randrange(64)
+        weights = {i: rng.randint(1, 4) for i in atoms}
+        got = list(nearest(dd, f, atoms, weights, origin))
+        members = [s for s in range(64) if _member(dd, f, s)]
+        distance = {s ^ origin: sum(weights[i] for i in bits(s ^ origin)) for s in members}
+        if not members:
+            assert got == []
+            continue
+        assert [w for w, _ in got] == sorted(w for w, _ in got)
+        assert got[0][0] == min(distance.values())
+        assert all(distance[c] == w for w, c in got)
+        # Every member is one yielded or one with changes added to one yielded.
+        yielded = {c for _, c in got}
+        assert all(any(c & y == y for y in yielded) for c in distance)
+
+
+def test_at_most_one_and_exactly_one():
+    domain, problem = parse_task(*kitchen(1))
+    task = ground(domain, problem)
+    sym = SymbolicTask(task, range(4), [])
+    mask = 0b1111
+    for exactly in (False, True):
+        f = sym.at_most_one(mask, exactly)
+        for state in range(16):
+            ones = state.bit_count()
+            assert sym.contains(f, state) == (ones == 1 if exactly else ones <= 1)
+
+
+def test_variable_order_keeps_groups_together_and_starts_at_the_goal():
+    domain, problem = parse_task(BLOCKS / "domain.pddl", BLOCKS / "task03.pddl")
+    task = ground(domain, problem)
+    goal = list(bits(task.goal_pos))
+    group = sum(1 << i for i in range(len(task.atoms)) if task.atoms[i].predicate == "holding")
+    order = variable_order(range(len(task.atoms)), task.actions, first=goal, groups=[group])
+    assert sorted(order) == list(range(len(task.atoms)))
+    assert order[0] == goal[0]
+    places = sorted(order.index(i) for i in bits(group))
+    assert places == list(range(places[0], places[0] + len(places)))
+
+
+def _decide_and_search(domain, problem):
+    task = ground(domain, problem, fixed=domain.predicates)
+    actions = planning_actions(task, task.init)
+    proof = decide(task, actions)
+    plan = astar(actions, task.init, task.goal_pos, task.goal_neg)
+    return task, actions, proof, plan
+
+
+@settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow,
+                                                                  HealthCheck.function_scoped_fixture])
+@given(pddl=small_tasks())
+def test_symbolic_decision_agrees_with_astar(tmp_path_factory, pddl):
+    domain, problem = _parse_random(tmp_path_factory, "sym", pddl)
+    task, actions, proof, plan = _decide_and_search(domain, problem)
+    assert proof.solvable == (plan is not None)
+    sym = symbolic_task(task, actions, [])
+    layers = backward_layers(sym)
+    steps = plan_from(sym, layers, task.init)
+    assert (steps is None) == (plan is None)
+    if steps is not None:  # a shortest plan in steps, and a plan
+        state = task.init
+        for act in steps:
+            assert act.applicable(state)
+            state = act.apply(state)
+        assert task.satisfies_goal(state)
+        assert len(steps) == len(plan) or any(a.cost != 1 for a in actions)
+
+
+@pytest.mark.parametrize("name", ["bottleneck/prob01.pddl", "chessboard-pebbling/prob03.pddl", "pegsol/prob05.pddl"])
+def test_ipc_unsolvability_tasks_are_proven_unsolvable(name):
+    track = ROOT / "data" / "benchmarks" / "unsolvability-ipc2016"
+    problem = track / name
+    domain = problem.parent / "domain.pddl"
+    task = ground(*parse_task(domain, problem), fixed=parse_task(domain, problem)[0].predicates)
+    proof = decide(task, planning_actions(task, task.init))
+    assert not proof.solvable
+
+
+def test_blocks_are_solvable_both_ways():
+    domain, problem = parse_task(BLOCKS / "domain.pddl", BLOCKS / "task03.pddl")
+    _, _, proof, plan = _decide_and_search(domain, problem)
+    assert proof.solvable and plan is not None
+
+
+def test_an_excuse_run_of_kitchen_1_never_loads_the_diagram_library():
+    code = ("import sys; from guided_lfd import read_task, find_excuses; "
+            f"d, p = read_task({str(kitchen(1)[0])!r}, {str(kitchen(1)[1])!r}); "
+            "r = find_excuses(d, p); assert r.excuse is not None; "
+            "print(sorted(m for m in sys.modules if m == 'dd' or m.startswith(('dd.', 'oxidd'))))")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT, check=True)
+    assert out.stdout.strip() == "[]"
