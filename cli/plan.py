@@ -60,7 +60,10 @@ def plan(
         ui.reading_warnings(dom)
         report = plan_and_validate(dom, prob, search, seconds_left(deadline, "plan"))
     if not report.solved:
-        reason = f"unsolvable: exhaustive {search} search found no plan ({report.time_s:.2f} s)"
+        if report.answered_by == "symbolic":
+            reason = f"unsolvable: proved by symbolic search beside {search} ({report.time_s:.2f} s)"
+        else:
+            reason = f"unsolvable: exhaustive {search} search found no plan ({report.time_s:.2f} s)"
         if json_out:
             emit(output, report.to_json(), reason)
         else:

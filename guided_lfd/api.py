@@ -81,6 +81,8 @@ class PlanReport:
     optimal: bool | None
     search: str
     time_s: float
+    #: What found the plan or proved there is none: the search, or ``symbolic`` (the default's prover).
+    answered_by: str = ""
 
     @property
     def solved(self) -> bool:
@@ -93,7 +95,7 @@ class PlanReport:
             "domain": self.domain, "problem": self.problem, "status": "solved" if self.solved else "unsolvable",
             "plan": None if self.plan is None else [str(s) for s in self.plan],
             "cost": self.cost, "optimal": self.optimal, "validated": True if self.solved else None,
-            "search": self.search, "time_s": round(self.time_s, 4),
+            "search": self.search, "answered_by": self.answered_by or self.search, "time_s": round(self.time_s, 4),
         }
 
     def to_json(self) -> str:
@@ -122,12 +124,13 @@ def plan(domain: Domain, problem: Problem, search: str | None = None,
         raise OptionError(f"unknown search {search!r} (expected one of: {', '.join(SEARCHES)})")
     _, result = plan_task(domain, problem, search, checked_time_limit(time_limit, "time_limit"))
     if result.plan is None:
-        return PlanReport(domain.path, problem.path, None, None, None, search, result.time_s)
+        return PlanReport(domain.path, problem.path, None, None, None, search, result.time_s, result.answered_by)
     steps = [PlanStep(a.schema, a.args) for a in result.plan]
     report = validated(domain, problem, steps, "the planner's plan")
     if report.cost != sum(a.cost for a in result.plan):
         raise RuntimeError("planner and validator disagree on the plan's cost")
-    return PlanReport(domain.path, problem.path, steps, report.cost, result.optimal, search, result.time_s)
+    return PlanReport(domain.path, problem.path, steps, report.cost, result.optimal, search, result.time_s,
+                      result.answered_by)
 
 
 def _check_task(call: str, domain: object, problem: object) -> None:

@@ -83,6 +83,11 @@ class PlanResult:
     search: str
     optimal: bool
     time_s: float
+    #: What found the plan or proved there is none: the search, or ``symbolic`` (the portfolio's prover).
+    answered_by: str = ""
+
+    def __post_init__(self) -> None:
+        self.answered_by = self.answered_by or self.search
 
 
 def find_plan(
@@ -175,4 +180,8 @@ def plan_task(domain, problem, search: str = DEFAULT_SEARCH, time_limit_s: float
 
     deadline = deadline_after(time_limit_s)
     task = ground(domain, problem, fixed=domain.predicates, deadline=deadline)
+    if search == DEFAULT_SEARCH and not task.is_adl:
+        from guided_lfd.planning.portfolio import plan_with_prover
+
+        return task, plan_with_prover(task, deadline)
     return task, find_plan(task, search=search, time_limit_s=seconds_left(deadline, "grounding"))

@@ -51,8 +51,12 @@ class PairReachability:
             else:
                 self.del_masks.append(0)  # the artificial goal action
 
-    def steps(self, state: int) -> Generator[None, None, bool]:
-        """Decide h^2 goal reachability from ``state``, yielding now and then; the return value is the answer."""
+    def steps(self, state: int, to_fixpoint: bool = False) -> Generator[None, None, bool]:
+        """Decide h^2 goal reachability from ``state``, yielding now and then; the return value is the answer.
+
+        ``to_fixpoint``: go on past the goal until no pair is added; ``partners`` and ``reached`` then hold
+        every pair and fact h^2 reaches (:meth:`mutex_pairs`).
+        """
         relaxed = self.relaxed
         true = relaxed._true_facts(state)
         true_mask = _mask(true)
@@ -60,6 +64,7 @@ class PairReachability:
         for f in true:
             partners[f] = true_mask
         reached = true_mask
+        self.partners, goal_reached = partners, False
         pre, add = relaxed.pre, relaxed.add
         pre_masks, add_masks, del_masks = self.pre_masks, self.add_masks, self.del_masks
         goal_action = len(pre) - 1
@@ -78,7 +83,10 @@ class PairReachability:
                 if compatible & need != need:
                     continue  # two preconditions never hold together
                 if ai == goal_action:
-                    return True
+                    if not to_fixpoint:
+                        return True
+                    goal_reached = True
+                    continue
                 adds = add_masks[ai]
                 # After the action: its adds, with each other and with every
                 # fact that held beside all its preconditions and survives it.
@@ -95,7 +103,24 @@ class PairReachability:
                         low = others & -others
                         others ^= low
                         partners[low.bit_length() - 1] |= 1 << q
-        return False
+        self.reached = reached
+        return goal_reached
+
+    def mutex_pairs(self, state: int) -> list[tuple[int, int]]:
+        """Pairs of atoms (task atom indices) that each can hold but never together in a state reachable from
+        ``state`` (h^2 to its fixpoint; unreachable under h^2 implies unreachable)."""
+        run = self.steps(state, to_fixpoint=True)
+        for _ in run:
+            pass
+        atom_of = {f: i for i, f in self.relaxed.pos_id.items()}
+        facts = sorted(f for f in atom_of if self.reached >> f & 1)
+        out = []
+        for k, x in enumerate(facts):
+            partners = self.partners[x]
+            for y in facts[k + 1:]:
+                if not partners >> y & 1:
+                    out.append((atom_of[x], atom_of[y]))
+        return out
 
     def reachable(self, state: int) -> bool:
         """True unless h^2 proves the goal unreachable from ``state``."""

@@ -101,6 +101,10 @@ class _Successors:
         return out
 
 
+class SearchStopped(Exception):
+    """:func:`astar` was told to stop: another search of a portfolio has answered."""
+
+
 def astar(
     actions: Sequence[GroundAction],
     init: int,
@@ -109,6 +113,7 @@ def astar(
     relaxed: RelaxedTask | None = None,
     deadline: float | None = None,
     successor: Callable[[GroundAction, int], int] | None = None,
+    stop: Callable[[], bool] | None = None,
 ) -> list[GroundAction] | None:
     """An optimal plan from ``init`` with ``actions`` (None: proved unsolvable).
 
@@ -116,7 +121,8 @@ def astar(
     here if not given; its first actions are ``actions``); action costs are its ``base_costs``.
     ``successor``: the state an applicable action leads to, when it is more than adds and deletes
     (an ADL task's :meth:`~guided_lfd.planning.grounding.GroundTask.successor`).
-    Raises :class:`SearchTimeout` past ``deadline`` (a ``time.monotonic()`` value).
+    Raises :class:`SearchTimeout` past ``deadline`` (a ``time.monotonic()`` value), and
+    :class:`SearchStopped` when ``stop()`` (asked every 16 expansions) says another search has answered.
     """
     actions = list(actions)
     relaxed = relaxed or RelaxedTask(actions, goal_pos, goal_neg)
@@ -146,6 +152,8 @@ def astar(
         expanded += 1
         if deadline is not None and time.monotonic() > deadline:  # every expansion: LM-cut can take 0.1 s each
             raise SearchTimeout("planner exceeded its time limit")
+        if stop is not None and not expanded % 16 and stop():
+            raise SearchStopped()
         for ai in successors.candidates(state):
             pp = pre_pos[ai]
             if state & pp != pp or state & pre_neg[ai]:

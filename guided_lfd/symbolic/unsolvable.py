@@ -12,7 +12,7 @@ plan can pass (a block in two places).
 from __future__ import annotations
 
 import time
-from typing import Iterable
+from typing import Any, Iterable
 
 from guided_lfd.planning.grounding import GroundAction, GroundTask, bits
 from guided_lfd.symbolic.encoding import SymbolicTask, variable_order
@@ -52,5 +52,28 @@ def decide(task: GroundTask, actions: list[GroundAction], deadline: float | None
     """Whether ``task`` is solvable from its initial state, decided by bidirectional symbolic search."""
     groups = reachable_invariants(task, deadline)
     sym = symbolic_task(task, actions, groups, library)
-    constraint = sym.invariants((m, False) for m in groups)
+    constraint = sym.invariants((m, False) for m in groups) & _pairs_apart(sym, task, actions, groups)
     return prove_unsolvable(sym, task.init, deadline, constraint)
+
+
+def _pairs_apart(sym: SymbolicTask, task: GroundTask, actions: list[GroundAction], groups: list[int]) -> Any:
+    """The states holding no h^2 mutex pair of atoms (those no invariant group already keeps apart)."""
+    from guided_lfd.planning.h2 import PairReachability
+    from guided_lfd.planning.relaxation import RelaxedTask
+
+    grouped: dict[int, int] = {}
+    for mask in groups:
+        for i in bits(mask):
+            grouped[i] = grouped.get(i, 0) | mask
+    apart: dict[int, list[int]] = {}
+    for x, y in PairReachability(RelaxedTask(actions, task.goal_pos, task.goal_neg)).mutex_pairs(task.init):
+        if x in sym.var_of and y in sym.var_of and not grouped.get(x, 0) >> y & 1:
+            first, second = sorted((x, y), key=sym.var_of.__getitem__)
+            apart.setdefault(first, []).append(second)
+    dd, out = sym.dd, sym.dd.true
+    for x in sorted(apart, key=sym.var_of.__getitem__, reverse=True):
+        others = dd.false
+        for y in apart[x]:
+            others = others | dd.var(sym.var_of[y])
+        out = out & (~dd.var(sym.var_of[x]) | ~others)
+    return out

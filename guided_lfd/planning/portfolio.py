@@ -1,0 +1,52 @@
+"""``plan``'s default: guided-lfd's A* beside a symbolic proof of unsolvability, the first exact answer wins.
+
+A* with LM-cut finds optimal plans and proves small tasks unsolvable by
+exhausting them; symbolic bidirectional search (:mod:`guided_lfd.symbolic`)
+proves unsolvable tasks whose state spaces are far too large to enumerate one
+state at a time.  The symbolic search runs in a forked worker
+(:mod:`guided_lfd.symbolic.worker`), so it takes the second core, and a
+diagram operation that outlives the run is ended with the worker.  Its
+"solvable" answer is not a plan: A* goes on to find the optimal one.
+"""
+
+from __future__ import annotations
+
+import time
+
+from guided_lfd.errors import SearchTimeout
+from guided_lfd.planning import PlanResult, DEFAULT_SEARCH
+from guided_lfd.planning.grounding import GroundAction, GroundTask
+
+
+def _decide(task: GroundTask, actions: list[GroundAction], deadline: float | None) -> bool:
+    """In the worker: whether the task is solvable (raises SearchTimeout past ``deadline``)."""
+    from guided_lfd.symbolic.unsolvable import decide
+
+    return decide(task, actions, deadline).solvable
+
+
+def plan_with_prover(task: GroundTask, deadline: float | None) -> PlanResult:
+    """An optimal plan for ``task`` from its initial state, or a proof that none exists, by A* or the prover."""
+    from guided_lfd.planning.search import SearchStopped, astar, planning_actions
+    from guided_lfd.symbolic.worker import Forked
+
+    start = time.perf_counter()
+    usable = planning_actions(task, task.init)
+    if not usable and not task.satisfies_goal(task.init):
+        return PlanResult(None, DEFAULT_SEARCH, True, time.perf_counter() - start)
+    worker = Forked(_decide, task, usable, deadline)
+
+    def proved_unsolvable() -> bool:
+        return worker.poll() and worker.value() is False
+
+    try:
+        plan = astar(usable, task.init, task.goal_pos, task.goal_neg, deadline=deadline, stop=proved_unsolvable)
+    except SearchStopped:
+        return PlanResult(None, DEFAULT_SEARCH, True, time.perf_counter() - start, answered_by="symbolic")
+    except SearchTimeout:
+        if proved_unsolvable():  # answered as time ran out
+            return PlanResult(None, DEFAULT_SEARCH, True, time.perf_counter() - start, answered_by="symbolic")
+        raise
+    finally:
+        worker.stop()
+    return PlanResult(plan, DEFAULT_SEARCH, True, time.perf_counter() - start)
