@@ -156,3 +156,36 @@ def test_an_excuse_run_of_kitchen_1_never_loads_the_diagram_library():
             "print(sorted(m for m in sys.modules if m == 'dd' or m.startswith(('dd.', 'oxidd'))))")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT, check=True)
     assert out.stdout.strip() == "[]"
+
+
+def test_a_diagram_library_out_of_memory_is_a_memout():
+    from guided_lfd.symbolic.diagrams import memory_as_memout
+
+    with pytest.raises(MemoryError):
+        with memory_as_memout():
+            raise ValueError("`DdNode *node` is `NULL` pointer.")
+    with pytest.raises(ValueError, match="other"):
+        with memory_as_memout():
+            raise ValueError("other")
+
+
+def test_the_symbolic_strategy_out_of_memory_ends_as_a_memout(monkeypatch):
+    """A cap far below what the search needs: CUDD fails, and the run says memout (exit 22), no traceback."""
+    from guided_lfd.errors import EXIT_MEMORY
+    from typer.testing import CliRunner
+    from cli.main import app
+    from guided_lfd.symbolic import diagrams
+
+    monkeypatch.setattr(diagrams, "_memory_cap", lambda: 1)
+    monkeypatch.setattr(diagrams.CuddDiagrams, "__init__", _tiny_cudd(diagrams.CuddDiagrams.__init__))
+    domain, problem = BLOCKS / "domain-no-unstack.pddl", BLOCKS / "task03.pddl"
+    out = CliRunner().invoke(app, ["excuse", str(domain), str(problem), "--strategy", "symbolic"])
+    assert out.exit_code == EXIT_MEMORY, out.output
+
+
+def _tiny_cudd(init):
+    def tiny(self, variables, memory):
+        init(self, variables, memory)
+        self.bdd.configure(max_memory=1)  # every new node fails
+
+    return tiny

@@ -555,6 +555,7 @@ class _Run:
         self.stats.search_time_s = round(time.monotonic() - search_start, 6)
         self.stats.candidates, self.stats.planner_calls = outcome.candidates, outcome.planner_calls + 1
         self.stats.nodes_expanded, self.stats.counters = outcome.expanded, dict(outcome.extra)
+        self.stats.answered_by = outcome.answered_by or options.strategy
         cap_excuses(outcome, self.stats)
         self.phase = "robot plan"
         plans_until = robot_plan_deadline(self.start)

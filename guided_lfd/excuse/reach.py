@@ -31,7 +31,7 @@ import heapq
 import time
 from collections import deque
 from dataclasses import dataclass
-from typing import Any, Generator, Iterator
+from typing import Any, Callable, Generator, Iterator
 
 from guided_lfd.errors import SearchTimeout
 from guided_lfd.excuse.space import ChangeSpace
@@ -76,6 +76,8 @@ class ReachabilityOracle:
         self.goal_pos = task.goal_pos
         self.goal_neg = task.goal_neg
         self.deadline = deadline
+        #: Asked between the members' turns: True stops the call (:class:`~guided_lfd.planning.search.SearchStopped`).
+        self.interrupt: Callable[[], bool] | None = None
         self.dead: set[int] = set()
         self.alive: dict[int, tuple[GroundAction, int] | None] = {}
         self.stats = ReachStats()
@@ -277,6 +279,10 @@ class ReachabilityOracle:
             spent[index] += now - began
             if deadline is not None and now > deadline:
                 raise SearchTimeout("excuse search exceeded its time limit")
+            if self.interrupt is not None and self.interrupt():
+                from guided_lfd.planning.search import SearchStopped
+
+                raise SearchStopped()
 
     def _successors(self, s: int) -> Iterator[tuple[GroundAction, int]]:
         """(action, next state) for every relevant action applicable in ``s``."""

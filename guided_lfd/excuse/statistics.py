@@ -35,6 +35,8 @@ class ExcuseStatistics:
     literal_excuse: list[str] | None = None
     #: No excuse keeps the world's structure (``structure_held``), but this one, which changes it, exists.
     structural_excuse: list[str] | None = None
+    #: Which search answered (the portfolio: ``landmark`` or ``symbolic``; otherwise the strategy's name).
+    answered_by: str | None = None
     setup_time_s: float | None = None  # from the run's start to the search's
     search_time_s: float | None = None
     candidates: int | None = None  # change sets that reached the reachability check

@@ -21,8 +21,12 @@ from guided_lfd.excuse.progress import ProgressMeter
 from guided_lfd.excuse.reach import ReachabilityOracle
 from guided_lfd.excuse.space import ChangeSpace
 from guided_lfd.excuse.status import ExcuseStatus
+from guided_lfd.excuse.portfolio import PortfolioSearch
 from guided_lfd.excuse.symbolic import SymbolicSearch
 from guided_lfd.planning.grounding import GroundAction, bits
+from guided_lfd.planning.search import SearchStopped
+
+__all__ = ["STRATEGIES", "DEFAULT_STRATEGY", "SearchLimits", "SearchOutcome", "SearchStopped", "Strategy"]
 
 
 def clock() -> float:
@@ -61,6 +65,8 @@ class SearchLimits:
     #: superset of another: adding changes to an excuse is no other choice).
     slack: int = 0
     probe: Probe | None = None
+    #: Asked between steps: True ends the search with :class:`SearchStopped` (a portfolio's other member answered).
+    stop: Callable[[], bool] | None = None
 
 
 @dataclass
@@ -81,6 +87,8 @@ class SearchOutcome:
     #: Proven: every excuse within ``max_size`` weighs at least this (the weight of the lightest change set
     #: the search had not ruled out when it ended).
     lower_bound: int = 0
+    #: Which search answered, where a strategy runs several (the portfolio); empty: the strategy itself.
+    answered_by: str = ""
 
 
 class Strategy(Protocol):
@@ -134,7 +142,7 @@ class LandmarkSearch:
     """
 
     name = "landmark"
-    description = "A* over change sets with LM-cut bounds and landmark branching (default)"
+    description = "A* over change sets with LM-cut bounds and landmark branching"
     lists_slack = True  # --slack: lists the excuses up to that much costlier too
 
     def search(self, space: ChangeSpace, limits: SearchLimits, progress: ProgressMeter | None = None,
@@ -144,10 +152,13 @@ class LandmarkSearch:
         # solvable?" search found: most candidates' searches run into them.
         run = _LandmarkRun(space, limits, relaxed or RelaxedExcuseTask(space),
                            oracle or ReachabilityOracle(space, limits.deadline))
+        run.oracle.interrupt = limits.stop
         try:
             run.loop(progress)
         except SearchTimeout:
             return run.outcome(timed_out=True)
+        finally:
+            run.oracle.interrupt = None
         return run.outcome()
 
 
@@ -200,6 +211,8 @@ class _LandmarkRun:
                 return
             if _timed_out(self.limits):
                 raise SearchTimeout("excuse search exceeded its time limit")
+            if self.limits.stop is not None and self.limits.stop():
+                raise SearchStopped()
             if self.probe is not None and not self.solutions and clock() > self.probe.start:
                 heapq.heappush(heap, (key, neg_g, tie, changes))  # taken up again after the pause
                 self.pause_for_probe(progress)
@@ -508,5 +521,6 @@ class BaselineSearch:
 
 
 #: Registered strategies by name; the first is the default.
-STRATEGIES: dict[str, Strategy] = {s.name: s for s in (LandmarkSearch(), BaselineSearch(), SymbolicSearch())}
-DEFAULT_STRATEGY = "landmark"
+STRATEGIES: dict[str, Strategy] = {s.name: s for s in (PortfolioSearch(), LandmarkSearch(), BaselineSearch(),
+                                                        SymbolicSearch())}
+DEFAULT_STRATEGY = "portfolio"

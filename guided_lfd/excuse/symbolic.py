@@ -91,8 +91,11 @@ class SymbolicSearch:
         """Minimal change sets for ``space``; ``oracle`` and ``relaxed`` are unused (no candidate is checked)."""
         from guided_lfd.excuse.strategies import SearchOutcome
 
+        from guided_lfd.symbolic.diagrams import memory_as_memout
+
         try:
-            return self._search(space, limits, progress)
+            with memory_as_memout():
+                return self._search(space, limits, progress)
         except SearchTimeout:
             return SearchOutcome([], {}, ExcuseStatus.TIMEOUT)
 

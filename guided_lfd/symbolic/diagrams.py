@@ -15,16 +15,22 @@ order in every diagram (level = number): the encoding chooses the order
 levels keep meaning atoms.
 
 Memory: each manager is given a cap derived from the process's address-space
-limit (``--memory-limit``); a diagram operation that would pass it raises
-:class:`MemoryError`, which the command line reports as the documented memout.
+limit (``--memory-limit``, :data:`MEMORY_SHARE` of it); a diagram operation that
+would pass it fails there instead of growing on (in a worker, the run goes on
+with the search beside it).
 """
 
 from __future__ import annotations
 
-from typing import Any, Protocol, Sequence
+import contextlib
+from typing import Any, Iterator, Protocol, Sequence
 
 #: The library the engine uses unless told otherwise.
 DEFAULT_LIBRARY = "cudd"
+
+#: The part of the address-space limit the diagrams may take: a forked worker (:mod:`guided_lfd.symbolic.worker`)
+#: sets a half, leaving the other half to the search beside it, so that together they keep ``--memory-limit``.
+MEMORY_SHARE = 1.0
 
 
 class Diagrams(Protocol):
@@ -63,6 +69,25 @@ class Diagrams(Protocol):
         ...
 
 
+@contextlib.contextmanager
+def memory_as_memout() -> Iterator[None]:
+    """Turn a library's "out of memory" inside the block into :class:`MemoryError` (the documented memout).
+
+    CUDD past its cap returns a null node, which ``dd.cudd`` raises as a ValueError naming the null pointer;
+    OxiDD raises its ``DDMemoryError``.
+    """
+    try:
+        yield
+    except ValueError as exc:
+        if "NULL" not in str(exc):
+            raise
+        raise MemoryError("the decision diagrams outgrew their memory cap") from None
+    except Exception as exc:
+        if type(exc).__name__ != "DDMemoryError":
+            raise
+        raise MemoryError("the decision diagrams outgrew their memory cap") from None
+
+
 def open_diagrams(variables: int, library: str = DEFAULT_LIBRARY) -> Diagrams:
     """A manager over ``variables`` variables from ``library`` (``cudd`` or ``oxidd``), its memory capped."""
     if library == "cudd":
@@ -81,8 +106,8 @@ def _memory_cap() -> int:
 
     soft, _ = resource.getrlimit(resource.RLIMIT_AS)
     if soft == resource.RLIM_INFINITY:
-        return 8 * 1024**3
-    return max(64 * 1024**2, soft * 3 // 4 - 512 * 1024**2)
+        return int(8 * 1024**3 * MEMORY_SHARE)
+    return max(64 * 1024**2, int(soft * MEMORY_SHARE) * 3 // 4 - 512 * 1024**2)
 
 
 class CuddDiagrams:

@@ -50,10 +50,13 @@ def symbolic_task(task: GroundTask, actions: Iterable[GroundAction], groups: lis
 def decide(task: GroundTask, actions: list[GroundAction], deadline: float | None = None,
            library: str | None = None) -> Proof:
     """Whether ``task`` is solvable from its initial state, decided by bidirectional symbolic search."""
+    from guided_lfd.symbolic.diagrams import memory_as_memout
+
     groups = reachable_invariants(task, deadline)
-    sym = symbolic_task(task, actions, groups, library)
-    constraint = sym.invariants((m, False) for m in groups) & _pairs_apart(sym, task, actions, groups)
-    return prove_unsolvable(sym, task.init, deadline, constraint)
+    with memory_as_memout():
+        sym = symbolic_task(task, actions, groups, library)
+        constraint = sym.invariants((m, False) for m in groups) & _pairs_apart(sym, task, actions, groups)
+        return prove_unsolvable(sym, task.init, deadline, constraint)
 
 
 def _pairs_apart(sym: SymbolicTask, task: GroundTask, actions: list[GroundAction], groups: list[int]) -> Any:

@@ -61,6 +61,9 @@ def _run(send: Any, target: Callable[..., Any], args: tuple) -> None:
     for sig in (signal.SIGALRM, signal.SIGTERM, signal.SIGINT):
         signal.signal(sig, signal.SIG_DFL)
     signal.setitimer(signal.ITIMER_REAL, 0)
+    from guided_lfd.symbolic import diagrams
+
+    diagrams.MEMORY_SHARE = 0.5
     try:
         answer: tuple[str, Any] = ("ok", target(*args))
     except BaseException as exc:  # noqa: BLE001 - reported to the parent, which decides

@@ -1,0 +1,110 @@
+"""The default excuse search: the landmark search with the symbolic search beside it, first exact answer wins.
+
+The landmark search answers small and most IPC tasks in well under a second;
+the symbolic search answers at once for every candidate where the landmark
+search would have to check candidates one by one, each a proof that the robot
+cannot (depot under the consistent semantics).  The landmark search starts
+alone; only a run still going after :data:`SYMBOLIC_AFTER_S` starts the
+symbolic search, in a forked worker (:mod:`guided_lfd.symbolic.worker`), so a
+short run never pays for a process or the diagram library.  From then on the
+landmark search asks, between its steps, whether the worker has answered;
+whichever finishes first with an exact answer (an excuse set, or a proof of
+none) ends the other.  ``statistics.answered_by`` says which.
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import replace
+from typing import Any
+
+from guided_lfd.excuse.progress import ProgressMeter
+from guided_lfd.excuse.space import ChangeSpace
+from guided_lfd.excuse.status import ExcuseStatus
+
+#: Seconds the landmark search runs alone before the symbolic search starts beside it.
+SYMBOLIC_AFTER_S = 0.5
+
+#: Outcomes that settle the question (a timed-out search settles nothing).
+_EXACT = (ExcuseStatus.FOUND, ExcuseStatus.NONE, ExcuseStatus.NONE_WITHIN_SIZE)
+
+
+def symbolic_outcome(space: ChangeSpace, limits: Any) -> tuple[str, list[int], dict[int, list[int]], dict[str, int]]:
+    """In the worker: the symbolic search's outcome, its plans as indices into the task's actions (a small,
+    picklable answer)."""
+    from guided_lfd.excuse.symbolic import SymbolicSearch
+
+    outcome = SymbolicSearch().search(space, limits)
+    index = {id(a): k for k, a in enumerate(space.task.actions)}
+    plans = {c: [index[id(a)] for a in plan] for c, plan in outcome.plans.items()}
+    return outcome.status.value, outcome.solutions, plans, outcome.extra
+
+
+class PortfolioSearch:
+    """The landmark search, and after :data:`SYMBOLIC_AFTER_S` the symbolic search beside it."""
+
+    name = "portfolio"
+    description = "the landmark search, with the symbolic search beside it once a run takes longer (default)"
+    lists_slack = True
+
+    def search(self, space: ChangeSpace, limits: Any, progress: ProgressMeter | None = None,
+               oracle: Any = None, relaxed: Any = None) -> Any:
+        """The first exact outcome of the two searches (the landmark search's when the task is no STRIPS task)."""
+        from guided_lfd.excuse.strategies import LandmarkSearch, SearchStopped
+        from guided_lfd.symbolic.encoding import supports
+
+        if not supports(space.task):
+            return _answered(LandmarkSearch().search(space, limits, progress, oracle, relaxed), "landmark")
+        race = _Race(space, limits)
+        try:
+            outcome = LandmarkSearch().search(space, replace(limits, stop=race.settled), progress, oracle, relaxed)
+        except SearchStopped:
+            return race.outcome()
+        finally:
+            race.end()
+        if outcome.status is ExcuseStatus.TIMEOUT and race.settled():
+            return race.outcome()
+        return _answered(outcome, "landmark")
+
+
+class _Race:
+    """The symbolic worker of one portfolio run: started late, polled, ended."""
+
+    def __init__(self, space: ChangeSpace, limits: Any) -> None:
+        self.space = space
+        self.limits = replace(limits, probe=None, stop=None)
+        self.start_at = time.monotonic() + SYMBOLIC_AFTER_S
+        self.worker: Any = None
+
+    def settled(self) -> bool:
+        """Whether the worker has an exact answer (starting it once its time has come)."""
+        if self.worker is None:
+            if time.monotonic() < self.start_at:
+                return False
+            from guided_lfd.symbolic.worker import Forked
+
+            self.worker = Forked(symbolic_outcome, self.space, self.limits)
+            return False
+        if not self.worker.poll():
+            return False
+        value = self.worker.value()
+        return value is not None and ExcuseStatus(value[0]) in _EXACT
+
+    def outcome(self) -> Any:
+        """The worker's answer as the searches' outcome."""
+        from guided_lfd.excuse.strategies import SearchOutcome
+
+        status, solutions, plans, extra = self.worker.value()
+        actions = self.space.task.actions
+        return SearchOutcome(solutions, {c: [actions[k] for k in p] for c, p in plans.items()},
+                             ExcuseStatus(status), 0, 0, 0, dict(extra), answered_by="symbolic")
+
+    def end(self) -> None:
+        """Stop the worker, if it was started."""
+        if self.worker is not None:
+            self.worker.stop()
+
+
+def _answered(outcome: Any, by: str) -> Any:
+    outcome.answered_by = by
+    return outcome
