@@ -9,6 +9,7 @@ import importlib.util
 import itertools
 import random
 import subprocess
+import time
 import sys
 from pathlib import Path
 
@@ -189,3 +190,23 @@ def _tiny_cudd(init):
         self.bdd.configure(max_memory=1)  # every new node fails
 
     return tiny
+
+
+def _held_in_c(space, limits):
+    """A symbolic search stuck in one long C call: it never looks at its deadline."""
+    time.sleep(30)
+
+
+def test_the_symbolic_strategy_ends_at_its_deadline_even_inside_a_long_call(monkeypatch):
+    from guided_lfd.excuse import portfolio
+    from guided_lfd.excuse.prepare import prepare
+    from guided_lfd.excuse.space import Semantics
+    from guided_lfd.excuse.status import ExcuseStatus
+    from guided_lfd.excuse.strategies import STRATEGIES, SearchLimits
+
+    monkeypatch.setattr(portfolio, "symbolic_outcome", _held_in_c)
+    space = prepare(*parse_task(BLOCKS / "domain-no-unstack.pddl", BLOCKS / "task03.pddl"), Semantics.LITERAL).space
+    began = time.monotonic()
+    outcome = STRATEGIES["symbolic"].search(space, SearchLimits(deadline=time.monotonic() + 0.5))
+    assert outcome.status is ExcuseStatus.TIMEOUT
+    assert time.monotonic() - began < 25  # the 30 s call was not waited for

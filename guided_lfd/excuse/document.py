@@ -59,7 +59,7 @@ def _timeout_words(report: ExcuseReport) -> str:
         return ""
     within = f" within --max-size {report.max_size}" if report.max_size is not None else ""
     smaller = f"smaller than {_count(bound, 'change')}" if report.unit_costs else f"cheaper than {bound}"
-    out = f"; no excuse {smaller}{within} (proven)"
+    out = f"; no excuse {smaller}{within} (proven)" if bound else ""  # 0 proves nothing (a symbolic search)
     best = report.best_candidate
     if best is None:
         return out + "; none found so far"

@@ -34,7 +34,7 @@ def symbolic_outcome(space: ChangeSpace, limits: Any) -> tuple[str, list[int], d
     picklable answer)."""
     from guided_lfd.excuse.symbolic import SymbolicSearch
 
-    outcome = SymbolicSearch().search(space, limits)
+    outcome = SymbolicSearch().search_here(space, limits)
     index = {id(a): k for k, a in enumerate(space.task.actions)}
     plans = {c: [index[id(a)] for a in plan] for c, plan in outcome.plans.items()}
     return outcome.status.value, outcome.solutions, plans, outcome.extra
@@ -92,17 +92,22 @@ class _Race:
 
     def outcome(self) -> Any:
         """The worker's answer as the searches' outcome."""
-        from guided_lfd.excuse.strategies import SearchOutcome
-
-        status, solutions, plans, extra = self.worker.value()
-        actions = self.space.task.actions
-        return SearchOutcome(solutions, {c: [actions[k] for k in p] for c, p in plans.items()},
-                             ExcuseStatus(status), 0, 0, 0, dict(extra), answered_by="symbolic")
+        return outcome_of(self.space, self.worker.value(), "symbolic")
 
     def end(self) -> None:
         """Stop the worker, if it was started."""
         if self.worker is not None:
             self.worker.stop()
+
+
+def outcome_of(space: ChangeSpace, value: tuple, answered_by: str) -> Any:
+    """A :func:`symbolic_outcome` value as the searches' outcome (plans back to the task's actions)."""
+    from guided_lfd.excuse.strategies import SearchOutcome
+
+    status, solutions, plans, extra = value
+    actions = space.task.actions
+    return SearchOutcome(solutions, {c: [actions[k] for k in p] for c, p in plans.items()},
+                         ExcuseStatus(status), 0, 0, 0, dict(extra), answered_by=answered_by)
 
 
 def _answered(outcome: Any, by: str) -> Any:

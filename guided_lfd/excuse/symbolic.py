@@ -88,18 +88,44 @@ class SymbolicSearch:
 
     def search(self, space: ChangeSpace, limits: Any, progress: ProgressMeter | None = None,
                oracle: Any = None, relaxed: Any = None) -> Any:
-        """Minimal change sets for ``space``; ``oracle`` and ``relaxed`` are unused (no candidate is checked)."""
-        from guided_lfd.excuse.strategies import SearchOutcome
+        """Minimal change sets for ``space``; ``oracle`` and ``relaxed`` are unused (no candidate is checked).
 
+        With a deadline the search runs in a forked worker, ended at the deadline: one diagram operation is a
+        C call that no deadline check or signal interrupts.
+        """
+        if limits.deadline is None:
+            return self.search_here(space, limits)
+        from guided_lfd.excuse.portfolio import outcome_of, symbolic_outcome
+        from guided_lfd.excuse.strategies import SearchOutcome
+        from guided_lfd.symbolic.worker import Forked
+
+        worker = Forked(symbolic_outcome, space, limits)
+        try:
+            # The worker's own deadline checks end it on time, unless a long C call holds it: then the wait does.
+            if worker.poll(timeout=max(0.0, limits.deadline - time.monotonic()) + 0.2):
+                value = worker.value()
+                if value is None:
+                    message = str(worker.answer[1]) if worker.answer else "no answer"
+                    if message.startswith("MemoryError"):
+                        raise MemoryError(message)
+                    raise RuntimeError(f"symbolic search failed: {message}")
+                return outcome_of(space, value, "")
+            return SearchOutcome([], {}, ExcuseStatus.TIMEOUT)
+        finally:
+            worker.stop()
+
+    def search_here(self, space: ChangeSpace, limits: Any) -> Any:
+        """:meth:`search` in this process."""
+        from guided_lfd.excuse.strategies import SearchOutcome
         from guided_lfd.symbolic.diagrams import memory_as_memout
 
         try:
             with memory_as_memout():
-                return self._search(space, limits, progress)
+                return self._search(space, limits)
         except SearchTimeout:
             return SearchOutcome([], {}, ExcuseStatus.TIMEOUT)
 
-    def _search(self, space: ChangeSpace, limits: Any, progress: ProgressMeter | None) -> Any:
+    def _search(self, space: ChangeSpace, limits: Any) -> Any:
         from guided_lfd.excuse.strategies import SearchOutcome
         from guided_lfd.symbolic.nearest import nearest
 
