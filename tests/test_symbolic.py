@@ -210,3 +210,15 @@ def test_the_symbolic_strategy_ends_at_its_deadline_even_inside_a_long_call(monk
     outcome = STRATEGIES["symbolic"].search(space, SearchLimits(deadline=time.monotonic() + 0.5))
     assert outcome.status is ExcuseStatus.TIMEOUT
     assert time.monotonic() - began < 25  # the 30 s call was not waited for
+
+
+@pytest.mark.parametrize("strategy", ["symbolic", "portfolio", "landmark"])
+def test_a_group_no_variable_touches_keeps_its_initial_atoms(strategy):
+    """o2's place matters to no goal: its exactly-one group has no variable, and must not empty the excuse
+    states (it did: 'no excuse exists' under the consistent semantics)."""
+    from guided_lfd.excuse.engine import ExcuseOptions, find_excuses
+
+    data = ROOT / "tests" / "data" / "symbolic"
+    report = find_excuses(*parse_task(data / "domain.pddl", data / "problem.pddl"),
+                          ExcuseOptions(semantics="consistent", strategy=strategy, all_minimal=True))
+    assert [[str(c) for c in e.changes] for e in report.excuses] == [["+(road l1 l2)"]]

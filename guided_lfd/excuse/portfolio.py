@@ -57,14 +57,16 @@ class PortfolioSearch:
             return _answered(LandmarkSearch().search(space, limits, progress, oracle, relaxed), "landmark")
         race = _Race(space, limits)
         try:
-            outcome = LandmarkSearch().search(space, replace(limits, stop=race.settled), progress, oracle, relaxed)
-        except SearchStopped:
-            return race.outcome()
+            try:
+                outcome = LandmarkSearch().search(space, replace(limits, stop=race.settled), progress, oracle,
+                                                  relaxed)
+            except SearchStopped:
+                return race.outcome()
+            if outcome.status is ExcuseStatus.TIMEOUT and race.settled(start=False):
+                return race.outcome()  # answered as the time ran out
+            return _answered(outcome, "landmark")
         finally:
             race.end()
-        if outcome.status is ExcuseStatus.TIMEOUT and race.settled():
-            return race.outcome()
-        return _answered(outcome, "landmark")
 
 
 class _Race:
@@ -76,10 +78,10 @@ class _Race:
         self.start_at = time.monotonic() + SYMBOLIC_AFTER_S
         self.worker: Any = None
 
-    def settled(self) -> bool:
-        """Whether the worker has an exact answer (starting it once its time has come)."""
+    def settled(self, start: bool = True) -> bool:
+        """Whether the worker has an exact answer (``start``: starting it once its time has come)."""
         if self.worker is None:
-            if time.monotonic() < self.start_at:
+            if not start or time.monotonic() < self.start_at:
                 return False
             from guided_lfd.symbolic.worker import Forked
 

@@ -63,8 +63,12 @@ class SymbolicRun:
         sym, space, task = self.sym, self.space, self.space.task
         self.layers = backward_layers(sym, deadline=self.deadline)
         states = self.layers.reached & ~sym.goal()
-        if space.groups:
-            states = states & sym.invariants((g.mask, g.exactly_one) for g in space.groups)
+        # A group with no variable keeps its initial atoms, which keep it (groups are closed over: each is
+        # wholly a variable group or wholly not one).
+        variables = sum(1 << atom for atom in sym.atoms)
+        kept = [(g.mask, g.exactly_one) for g in space.groups if g.mask & variables]
+        if kept:
+            states = states & sym.invariants(kept)
         fixed = {v: bool(task.init >> atom & 1) for v, atom in enumerate(sym.atoms)
                  if not space.changeable >> atom & 1}
         return states & sym.dd.cube(fixed)

@@ -29,7 +29,8 @@ from typing import Any, Iterator, Protocol, Sequence
 DEFAULT_LIBRARY = "cudd"
 
 #: The part of the address-space limit the diagrams may take: a forked worker (:mod:`guided_lfd.symbolic.worker`)
-#: sets a half, leaving the other half to the search beside it, so that together they keep ``--memory-limit``.
+#: sets a half.  The limit is per process: the worker and the search beside it each keep ``--memory-limit``,
+#: so together they may hold up to twice it.
 MEMORY_SHARE = 1.0
 
 

@@ -56,11 +56,31 @@ class Forked:
         self._receive.close()
 
 
+def _die_with_parent() -> None:
+    """Have the kernel kill this worker when its parent dies, even by SIGKILL (Linux; elsewhere the worker
+    ends at its own deadline)."""
+    try:
+        import ctypes
+
+        libc = ctypes.CDLL(None, use_errno=True)
+        libc.prctl(1, signal.SIGKILL)  # PR_SET_PDEATHSIG
+        if os.getppid() == 1:  # the parent died before the call
+            os._exit(0)
+    except (OSError, AttributeError):
+        pass
+
+
 def _run(send: Any, target: Callable[..., Any], args: tuple) -> None:
     # The parent's handlers (its watchdog's alarm, the command line's clean-up on SIGTERM) are not the worker's.
     for sig in (signal.SIGALRM, signal.SIGTERM, signal.SIGINT):
         signal.signal(sig, signal.SIG_DFL)
     signal.setitimer(signal.ITIMER_REAL, 0)
+    _die_with_parent()
+    # The answer goes through the pipe: holding the parent's stdout and stderr open would keep a caller that
+    # reads them (a benchmark runner) waiting for a worker its run no longer needs.
+    devnull = os.open(os.devnull, os.O_WRONLY)
+    os.dup2(devnull, 1)
+    os.dup2(devnull, 2)
     from guided_lfd.symbolic import diagrams
 
     diagrams.MEMORY_SHARE = 0.5

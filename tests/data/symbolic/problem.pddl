@@ -1,0 +1,5 @@
+(define (problem one-road-missing)
+  (:domain roads)
+  (:objects o1 o2 - obj l1 l2 - loc)
+  (:init (at o1 l1) (at o2 l1))
+  (:goal (at o1 l2)))
