@@ -17,7 +17,6 @@ label.
 from __future__ import annotations
 
 import argparse
-import csv
 import json
 import statistics
 import subprocess
@@ -26,7 +25,7 @@ import time
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from unsolvability_bench import smallest  # noqa: E402  (the same tasks)
+from unsolvability_bench import smallest, write_results  # noqa: E402  (the same tasks, the same files)
 
 ROOT = Path(__file__).resolve().parent.parent
 OUT = ROOT / "benchmarks" / "bdd_choice_results"
@@ -101,23 +100,14 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--smallest", type=int, default=1, help="tasks per domain folder, smallest first")
     parser.add_argument("--out", type=Path, default=OUT)
     args = parser.parse_args(argv)
-    from guided_lfd.io import write_text
-
     rows = []
     for domain, problem in smallest(args.smallest):
         for lib in LIBRARIES:
             rows.append(run(domain, problem, lib, args.time_limit))
             r = rows[-1]
             print(f"{r['domain']}/{r['task']} {lib}: {r['answer']} {r['search_s']} s", file=sys.stderr, flush=True)
-    args.out.mkdir(parents=True, exist_ok=True)
-    with open(args.out / "bdd_choice.csv", "w", newline="", encoding="utf-8") as fh:
-        writer = csv.DictWriter(fh, fieldnames=FIELDS, lineterminator="\n")
-        writer.writeheader()
-        writer.writerows(rows)
     command = f"python benchmarks/bdd_choice.py --time-limit {args.time_limit:g} --smallest {args.smallest}"
-    text = summary(rows, args.time_limit, command)
-    write_text(args.out / "summary.md", text)
-    print(text)
+    write_results(args.out, "bdd_choice.csv", FIELDS, rows, summary(rows, args.time_limit, command))
     return 0
 
 

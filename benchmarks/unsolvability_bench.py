@@ -96,8 +96,6 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--fast-downward", type=Path, default=None, help="fast-downward.py (default: up-fast-downward's)")
     parser.add_argument("--out", type=Path, default=OUT)
     args = parser.parse_args(argv)
-    from guided_lfd.io import write_text
-
     script = args.fast_downward or fast_downward_script()
     pairs = smallest(args.smallest)
     args.out.mkdir(parents=True, exist_ok=True)
@@ -108,16 +106,23 @@ def main(argv: list[str] | None = None) -> int:
             print(f"[{k}/{len(pairs)}] {row['domain']}/{row['task']}: guided {row['guided_status']} "
                   f"{row['guided_wall_s']} s, lama {row['lama_status'] or '-'}, lmcut {row['lmcut_status'] or '-'}",
                   file=sys.stderr, flush=True)
-    with open(args.out / "unsolvability.csv", "w", newline="", encoding="utf-8") as fh:
-        writer = csv.DictWriter(fh, fieldnames=FIELDS, lineterminator="\n")
-        writer.writeheader()
-        writer.writerows(rows)
     command = (f"python benchmarks/unsolvability_bench.py --jobs {args.jobs} --time-limit {args.time_limit:g} "
                f"--smallest {args.smallest}")
-    text = summary(rows, args.time_limit, command)
-    write_text(args.out / "summary.md", text)
-    print(text)
+    write_results(args.out, "unsolvability.csv", FIELDS, rows, summary(rows, args.time_limit, command))
     return 0
+
+
+def write_results(out: Path, name: str, fields: list[str], rows: list[dict], text: str) -> None:
+    """``rows`` as ``out/name`` (CSV) and ``text`` as ``out/summary.md``, also printed."""
+    from guided_lfd.io import write_text
+
+    out.mkdir(parents=True, exist_ok=True)
+    with open(out / name, "w", newline="", encoding="utf-8") as fh:
+        writer = csv.DictWriter(fh, fieldnames=fields, lineterminator="\n")
+        writer.writeheader()
+        writer.writerows(rows)
+    write_text(out / "summary.md", text)
+    print(text)
 
 
 if __name__ == "__main__":
