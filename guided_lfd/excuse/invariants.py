@@ -113,10 +113,7 @@ def mutex_groups(source: Domain, task: GroundTask, deadline: float | None = None
     else:
         # Conservation is judged with the actions the invariants come from.
         check_task = ground(source, _problem_for(source, task.problem))
-    # Atoms by predicate: each invariant part only looks at its own predicate's atoms.
-    atoms_of: dict[str, list[int]] = {}
-    for i, atom in enumerate(task.atoms):
-        atoms_of.setdefault(atom.predicate, []).append(i)
+    atoms_of = atoms_by_predicate(task)
     for inv in invariants:
         by_key = invariant_instances(inv, task, atoms_of)
         conserved = _conserved(check_task, task, [m for m in by_key.values()])
@@ -141,6 +138,14 @@ def mutex_groups(source: Domain, task: GroundTask, deadline: float | None = None
         if g.mask not in unique or (g.exactly_one and not unique[g.mask].exactly_one):
             unique[g.mask] = g
     return [unique[m] for m in sorted(unique)]
+
+
+def atoms_by_predicate(task: GroundTask) -> dict[str, list[int]]:
+    """The task's atom indices by predicate: each invariant part only looks at its own predicate's atoms."""
+    atoms_of: dict[str, list[int]] = {}
+    for i, atom in enumerate(task.atoms):
+        atoms_of.setdefault(atom.predicate, []).append(i)
+    return atoms_of
 
 
 def invariant_instances(inv, task: GroundTask, atoms_of: dict[str, list[int]]) -> dict[tuple, int]:

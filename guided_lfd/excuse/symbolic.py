@@ -19,6 +19,7 @@ from __future__ import annotations
 import time
 from typing import Any
 
+from guided_lfd.deadline import check
 from guided_lfd.errors import SearchTimeout, UnsupportedFeatureError
 from guided_lfd.excuse.progress import ProgressMeter
 from guided_lfd.excuse.space import ChangeSpace
@@ -142,8 +143,7 @@ class SymbolicSearch:
                                        limits.max_size):
             if limit is not None and weight > limit:
                 break
-            if limits.deadline is not None and time.monotonic() > limits.deadline:
-                raise SearchTimeout("symbolic excuse search exceeded its time limit")
+            check(limits.deadline, "symbolic excuse search")
             if any(changes & s == s for s in solutions):
                 continue  # an excuse with changes added: no other choice
             if limit is None:

@@ -39,11 +39,11 @@ def plan_with_prover(task: GroundTask, deadline: float | None) -> PlanResult:
     def proved_unsolvable() -> bool:
         return worker.poll() and worker.value() is False
 
+    from guided_lfd.deadline import seconds_left
     from guided_lfd.planning import time_limit
 
-    seconds = None if deadline is None else max(0.0, deadline - time.monotonic())
     try:
-        with time_limit(seconds, "planner"):  # LM-cut of one state can be long on a big task
+        with time_limit(seconds_left(deadline), "planner"):  # LM-cut of one state can be long on a big task
             plan = astar(usable, task.init, task.goal_pos, task.goal_neg, deadline=deadline,
                          stop=proved_unsolvable)
     except SearchStopped:

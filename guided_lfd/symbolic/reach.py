@@ -11,16 +11,12 @@ from __future__ import annotations
 
 import time
 from dataclasses import dataclass, field
-from typing import Any, Callable
+from typing import Any
 
+from guided_lfd.deadline import check
 from guided_lfd.errors import SearchTimeout
 from guided_lfd.planning.grounding import GroundAction
 from guided_lfd.symbolic.encoding import SymbolicTask
-
-
-def _check(deadline: float | None) -> None:
-    if deadline is not None and time.monotonic() > deadline:
-        raise SearchTimeout("symbolic search exceeded its time limit")
 
 
 class StepAbandoned(Exception):
@@ -74,7 +70,7 @@ class Reachability:
         return new
 
     def _images(self, states: Any, give_up: float | None) -> Any:
-        sym, dd, deadline = self.sym, self.sym.dd, self.deadline
+        deadline = self.deadline
         if give_up is not None and (deadline is None or give_up < deadline):
             deadline, abandon = give_up, True
         else:
@@ -91,7 +87,7 @@ class Reachability:
         parts = []
         for k, a in enumerate(sym.actions):
             if k % 64 == 0:
-                _check(deadline)
+                check(deadline, "symbolic search")
             if self.backward:
                 part = dd.and_exists(states, a.effect, a.effect_vars)
                 if part != dd.false:
@@ -102,12 +98,10 @@ class Reachability:
                     parts.append(a.effect & part)
         return _balanced_or(dd, parts, deadline)
 
-    def run(self, until: Callable[[Any], bool] | None = None) -> Layers:
-        """Step until the fixpoint (or until ``until(new layer)`` holds)."""
+    def run(self) -> Layers:
+        """Step until the fixpoint."""
         while not self.result.complete:
-            new = self.step()
-            if until is not None and not self.result.complete and until(new):
-                break
+            self.step()
         return self.result
 
 
@@ -116,7 +110,7 @@ def _balanced_or(dd: Any, parts: list[Any], deadline: float | None) -> Any:
     if not parts:
         return dd.false
     while len(parts) > 1:
-        _check(deadline)
+        check(deadline, "symbolic search")
         parts = [parts[i] | parts[i + 1] if i + 1 < len(parts) else parts[i] for i in range(0, len(parts), 2)]
     return parts[0]
 

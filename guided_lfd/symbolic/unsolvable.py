@@ -21,12 +21,10 @@ from guided_lfd.symbolic.reach import Proof, prove_unsolvable
 
 def reachable_invariants(task: GroundTask, deadline: float | None = None) -> list[int]:
     """Masks of ground groups of which at most one atom holds in every state reachable from ``task.init``."""
-    from guided_lfd.excuse.invariants import invariant_instances, lifted_invariants
+    from guided_lfd.excuse.invariants import atoms_by_predicate, invariant_instances, lifted_invariants
 
     remaining = None if deadline is None else max(1.0, deadline - time.monotonic())
-    atoms_of: dict[str, list[int]] = {}
-    for i, atom in enumerate(task.atoms):
-        atoms_of.setdefault(atom.predicate, []).append(i)
+    atoms_of = atoms_by_predicate(task)
     masks = set()
     for inv in lifted_invariants(task.domain, task.problem, remaining, reverse=False):
         for mask in invariant_instances(inv, task, atoms_of).values():
