@@ -54,6 +54,22 @@ def test_the_symbolic_member_answers_as_the_symbolic_strategy_does(symbolic_answ
     assert _excuses(report) == _excuses(alone) and report.excuses
 
 
+def test_a_task_wider_than_the_engines_limit_is_searched_by_the_landmark_search_alone(monkeypatch):
+    from guided_lfd.symbolic import encoding, worker
+
+    monkeypatch.setattr(portfolio, "SYMBOLIC_AFTER_S", 0.0)  # the worker would start at once ...
+    monkeypatch.setattr(encoding, "DEFAULT_MAX_VARIABLES", 3)  # ... but the task has more relevant atoms
+    monkeypatch.setattr(worker, "Forked", _never_forked)  # no second process at all
+    domain, problem = parse_task(BLOCKS / "domain-no-unstack.pddl", BLOCKS / "task03.pddl")
+    report = find_excuses(domain, problem, ExcuseOptions(all_minimal=True))
+    assert report.statistics.answered_by == "landmark" and report.excuses
+    assert report.statistics.relevant_atoms > 3
+
+
+def _never_forked(*_):
+    raise AssertionError("the symbolic search started on a task past its limit")
+
+
 def test_a_quick_run_is_answered_by_the_landmark_search_alone(monkeypatch):
     monkeypatch.setattr(portfolio, "SYMBOLIC_AFTER_S", 3600.0)  # no worker: the landmark search must answer
     report = find_excuses(*parse_task(*kitchen(1)))

@@ -128,3 +128,27 @@ def test_the_ff_search_confirms_when_the_goal_count_search_cannot(monkeypatch):
     report = find_excuses(*parse_task(*kitchen(1)), ExcuseOptions())
     assert report.status == "excuse-found"
     assert report.statistics.counters["oracle_ff_searches"] >= 1
+
+
+def test_a_wide_pair_check_is_built_in_its_slices_and_a_stopped_build_goes_on(monkeypatch):
+    """Past PAIR_CHECK_EAGER_BYTES the masks are built inside the check's steps: a build stopped midway
+    resumes where it stopped and decides as an eager build does."""
+    monkeypatch.setattr(reach, "PAIR_CHECK_EAGER_BYTES", 0)
+    monkeypatch.setattr("guided_lfd.planning.h2.ACTIONS_PER_STEP", 1)
+    domain, problem = parse_task(DATA / "satellite-domain.pddl", DATA / "satellite-problem.pddl")
+    oracle = _oracle(domain, problem)
+    pairs = oracle.pairs()
+    assert pairs.pre_masks == [] and pairs.estimated_bytes() > 0  # nothing built yet
+    build = pairs.build()
+    next(build), next(build)
+    assert 0 < len(pairs.pre_masks) == len(pairs.add_masks) == len(pairs.del_masks) < len(pairs.relaxed.pre)
+    build.close()
+    task = oracle.space.task
+    index = {str(a): i for i, a in enumerate(task.atoms)}
+    calibrated = task.init | 1 << index["(calibrated cam0)"]
+    assert not pairs.reachable(calibrated & oracle.mask)
+    eager = PairReachability(pairs.relaxed)
+    for _ in eager.build():
+        pass
+    assert (pairs.pre_masks, pairs.add_masks, pairs.del_masks) == (eager.pre_masks, eager.add_masks,
+                                                                    eager.del_masks)

@@ -25,6 +25,19 @@ def test_every_registered_search_solves_blocks_and_the_plan_validates(search):
         assert len(result.plan) == 6
 
 
+def test_atoms_of_the_smallest_predicates_come_first_so_action_masks_stay_narrow():
+    """A bit set is as wide as its highest atom: (handempty) and (clear ?x) before (on ?x ?y) keeps each
+    action's masks as narrow as its widest atom allows."""
+    domain, problem = parse_task(BLOCKS / "domain.pddl", BLOCKS / "task03.pddl")
+    task = ground(domain, problem)
+    order = list(dict.fromkeys(a.predicate for a in task.atoms))
+    counts = {p: sum(1 for a in task.atoms if a.predicate == p) for p in order}
+    assert order == sorted(order, key=lambda p: (counts[p], p)) and order[0] == "handempty" and order[-1] == "on"
+    pick_up = next(a for a in task.actions if a.schema == "pick-up")
+    assert pick_up.pre_pos.bit_length() <= counts["handempty"] + counts["clear"] + counts["holding"] \
+        + counts["ontable"]  # (on ?x ?y) is not among its atoms: its masks stay below that relation
+
+
 @pytest.mark.parametrize("search", sorted(SEARCHES))
 def test_every_registered_search_proves_kitchen_unsolvable_for_the_robot(search):
     domain, problem = parse_task(*kitchen(1))

@@ -35,6 +35,20 @@ def test_the_prover_answers_when_astar_cannot(monkeypatch):
     assert result.plan is None and result.answered_by == "symbolic"
 
 
+def test_a_task_wider_than_the_engines_limit_starts_no_prover(monkeypatch):
+    from guided_lfd.symbolic import encoding, worker
+
+    monkeypatch.setattr(encoding, "DEFAULT_MAX_VARIABLES", 10)  # bottleneck prob01's actions touch 49 atoms
+    monkeypatch.setattr(worker, "Forked", _never_forked)  # no second process at all
+    domain, problem = parse_task(TRACK / "bottleneck" / "domain.pddl", TRACK / "bottleneck" / "prob01.pddl")
+    _, result = plan_task(domain, problem)
+    assert result.plan is None and result.answered_by == "astar-lmcut"  # A* alone proved it
+
+
+def _never_forked(*_):
+    raise AssertionError("the prover started on a task past its limit")
+
+
 def test_a_solvable_task_is_planned_by_astar_whatever_the_prover_says():
     domain, problem = parse_task(BLOCKS / "domain.pddl", BLOCKS / "task03.pddl")
     _, result = plan_task(domain, problem)

@@ -119,11 +119,14 @@ def test_a_thing_no_skill_moves_stays_in_one_place():
     assert moved in [sorted(c) for c in _changes(report)]
 
 
-@pytest.mark.parametrize("options", [ExcuseOptions(one_place=False), ExcuseOptions(semantics="literal")])
+@pytest.mark.parametrize("options", [ExcuseOptions(one_place=False, all_minimal=True),
+                                     ExcuseOptions(semantics="literal", all_minimal=True)])
 def test_many_places_and_the_literal_semantics_let_the_thing_be_in_two(options):
     domain, problem = parse_task(*FETCH)
     report = find_excuses(domain, problem, options)
-    assert _changes(report) == [["+(at bot kitchen)", "+(at bot study)"]]
+    # Among the minimal excuses (which one is printed first is a tie the atom order breaks): the robot in two rooms.
+    assert ["+(at bot kitchen)", "+(at bot study)"] in _changes(report)
+    assert {e.size for e in report.excuses} == {2} and max(_places(report)) > 1
     assert report.statistics.kept_in_one_place is None
 
 

@@ -254,9 +254,10 @@ def test_the_excuse_maps_renamed_names_back_to_the_up_objects():
     assert "(door_open door_a)" in report.to_json()  # guided-lfd's document, in the PDDL names
     # Without it, which doors connect which rooms is the world's structure, held fixed by default (#28) ...
     assert find_up_excuses(robot).excuse.added == [robot.fluent("door_open")(robot.object("Door A"))]
-    # ... and with the structure changeable, a new connection is an excuse as small.
-    free = find_up_excuses(robot, ExcuseOptions(change_structure=True))
-    assert free.excuse.added == [robot.fluent("connects")(*(robot.object(n) for n in ("Door B", "Base", "Lab")))]
+    # ... and with the structure changeable, a new connection is an excuse as small (one of the minimal ones).
+    free = find_up_excuses(robot, ExcuseOptions(change_structure=True, all_minimal=True))
+    connection = robot.fluent("connects")(*(robot.object(n) for n in ("Door B", "Base", "Lab")))
+    assert [connection] in [e.added for e in free.excuses] and {e.size for e in free.report.excuses} == {1}
 
 
 def test_an_excuse_that_removes_a_fact():

@@ -6,7 +6,9 @@ search would have to check candidates one by one, each a proof that the robot
 cannot (depot under the consistent semantics).  The landmark search starts
 alone; only a run still going after :data:`SYMBOLIC_AFTER_S` starts the
 symbolic search, in a forked worker (:mod:`guided_lfd.symbolic.worker`), so a
-short run never pays for a process or the diagram library.  From then on the
+short run never pays for a process or the diagram library; a task with more
+relevant atoms than :data:`guided_lfd.symbolic.encoding.DEFAULT_MAX_VARIABLES`
+never starts it.  From then on the
 landmark search asks, between its steps, whether the worker has answered;
 whichever finishes first with an exact answer (an excuse set, or a proof of
 none) ends the other.  ``statistics.answered_by`` says which.
@@ -49,11 +51,12 @@ class PortfolioSearch:
 
     def search(self, space: ChangeSpace, limits: Any, progress: ProgressMeter | None = None,
                oracle: Any = None, relaxed: Any = None) -> Any:
-        """The first exact outcome of the two searches (the landmark search's when the task is no STRIPS task)."""
+        """The first exact outcome of the two searches (the landmark search's alone on a task that is no STRIPS
+        task or is wider than the symbolic engine's default limit, :data:`~guided_lfd.symbolic.encoding.DEFAULT_MAX_VARIABLES`)."""
         from guided_lfd.excuse.strategies import LandmarkSearch, SearchStopped
-        from guided_lfd.symbolic.encoding import supports
+        from guided_lfd.symbolic.encoding import supports, worth_running
 
-        if not supports(space.task):
+        if not supports(space.task) or not worth_running(space.relevant_atoms.bit_count()):
             return _answered(LandmarkSearch().search(space, limits, progress, oracle, relaxed), "landmark")
         race = _Race(space, limits)
         try:

@@ -48,6 +48,10 @@ HILL_CLIMB_EVALUATIONS = 50
 #: decides most IPC candidates in a few milliseconds; on a house it goes on
 #: as a portfolio member beside the searches).
 PAIR_CHECK_FIRST_S = 0.02
+#: The pair check is built before its first slice when it needs at most this much memory (every IPC
+#: task of the excuse suite); a wider one is built inside its slices, so a candidate that the
+#: hill-climb confirms first never pays for it (a house of hundreds of items: gigabytes, seconds).
+PAIR_CHECK_EAGER_BYTES = 256 * 2**20
 #: Time a portfolio member runs before the member with the least time so far
 #: takes its turn.
 PORTFOLIO_SLICE_S = 0.02
@@ -124,6 +128,9 @@ class ReachabilityOracle:
         """The h^2 pair check over the relevant actions (built on first use)."""
         if self._pairs is None:
             self._pairs = PairReachability(self.relaxed_task())
+            if self._pairs.estimated_bytes() <= PAIR_CHECK_EAGER_BYTES:
+                for _ in self._pairs.build():
+                    pass
         return self._pairs
 
     def _hill_climb(self, start: int) -> list[tuple[int, GroundAction, int]] | None | bool:

@@ -207,23 +207,28 @@ def mask_of(indices: Iterable[int]) -> int:
 
 
 def ground_atoms(domain: Domain, problem: Problem, skip: set[str] | None = None) -> list[Atom]:
-    """Every type-correct ground atom of the domain's predicates (except ``skip``), sorted."""
+    """Every type-correct ground atom of the domain's predicates (except ``skip``): by predicate, those with
+    the fewest atoms first (then by name), each predicate's atoms in argument order."""
     by_type = objects_by_type(domain, problem)
     out: list[Atom] = []
-    total = 0
+    counts: dict[str, int] = {}
     for pred in domain.predicates.values():
         if skip and pred.name in skip:
             continue
         count = 1
         for _, t in pred.params:
             count *= len(by_type.get(t, []))
-        total += count
+        counts[pred.name] = count
+    total = sum(counts.values())
     if total > MAX_GROUND_ATOMS:
         raise TaskTooLarge(
             f"{total} ground atoms exceed the limit of {MAX_GROUND_ATOMS} (fewer objects or --fixed predicates help)",
             Location(problem.path),
         )
-    for pred in sorted(domain.predicates.values(), key=lambda p: p.name):
+    # Predicates with the fewest atoms first: a bit set is as wide as its highest atom, and most actions
+    # touch one atom of a wide relation beside atoms of small ones ((hand_free), (clear ?f)), so their
+    # masks stay as narrow as that one atom allows (a house of 256 items: half the grounding's memory).
+    for pred in sorted(domain.predicates.values(), key=lambda p: (counts.get(p.name, 0), p.name)):
         if skip and pred.name in skip:
             continue
         domains = [by_type.get(t, []) for _, t in pred.params]

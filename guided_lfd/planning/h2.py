@@ -34,16 +34,37 @@ class PairReachability:
 
     def __init__(self, relaxed: RelaxedTask) -> None:
         self.relaxed = relaxed
-        pos_id, neg_id = relaxed.pos_id, relaxed.neg_id
         self.pre_masks: list[int] = []
         self.add_masks: list[int] = []
         # What an action makes false, as facts: its deletes, and the
         # complement facts of its adds.
         self.del_masks: list[int] = []
-        for ai, (pre, add) in enumerate(zip(relaxed.pre, relaxed.add)):
-            self.pre_masks.append(_mask(pre))
-            self.add_masks.append(_mask(add))
-            if ai < len(relaxed.actions):
+
+    def estimated_bytes(self) -> int:
+        """About what the check holds once built: a mask of facts per action (three) and per fact (its partners).
+
+        Each is a Python int as wide as its highest fact, so this grows with actions times facts: a
+        house of hundreds of items needs gigabytes, an IPC task a few megabytes.
+        """
+        n_facts, n_actions = self.relaxed.n_facts, len(self.relaxed.pre)
+        return (n_facts * n_facts + 3 * n_actions * n_facts // 2) // 8
+
+    def build(self) -> Generator[None, None, None]:
+        """Build the action masks, yielding now and then; a build stopped early goes on where it stopped.
+
+        :meth:`steps` builds what is missing first, so the cost of a wide task is paid only when its
+        check runs (a candidate that a search confirms first never pays it).
+        """
+        relaxed = self.relaxed
+        pos_id, neg_id = relaxed.pos_id, relaxed.neg_id
+        n_real = len(relaxed.actions)
+        for ai in range(len(self.del_masks), len(relaxed.pre)):
+            if not ai % ACTIONS_PER_STEP:
+                yield
+            # The three lists grow together, between two yields.
+            self.pre_masks.append(_mask(relaxed.pre[ai]))
+            self.add_masks.append(_mask(relaxed.add[ai]))
+            if ai < n_real:
                 act = relaxed.actions[ai]
                 dels = [pos_id[i] for i in act.delete_ids if i in pos_id]
                 dels += [neg_id[i] for i in act.add_ids if i in neg_id]
@@ -57,6 +78,7 @@ class PairReachability:
         ``to_fixpoint``: go on past the goal until no pair is added; ``partners`` and ``reached`` then hold
         every pair and fact h^2 reaches (:meth:`mutex_pairs`).
         """
+        yield from self.build()
         relaxed = self.relaxed
         true = relaxed._true_facts(state)
         true_mask = _mask(true)

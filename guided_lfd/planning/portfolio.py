@@ -5,7 +5,9 @@ exhausting them; symbolic bidirectional search (:mod:`guided_lfd.symbolic`)
 proves unsolvable tasks whose state spaces are far too large to enumerate one
 state at a time.  The symbolic search runs in a forked worker
 (:mod:`guided_lfd.symbolic.worker`), so it takes the second core, and a
-diagram operation that outlives the run is ended with the worker.  Its
+diagram operation that outlives the run is ended with the worker.  A task
+with more atoms than :data:`guided_lfd.symbolic.encoding.DEFAULT_MAX_VARIABLES`
+gets A* alone.  Its
 "solvable" answer is not a plan: A* goes on to find the optimal one.
 """
 
@@ -25,19 +27,29 @@ def _decide(task: GroundTask, actions: list[GroundAction], deadline: float | Non
     return decide(task, actions, deadline).solvable
 
 
+def _variables(actions: list[GroundAction]) -> int:
+    """The atoms the actions read or write: the prover's diagram variables."""
+    atoms: set[int] = set()
+    for act in actions:
+        atoms.update(act.pre_pos_ids, act.pre_neg_ids, act.add_ids, act.delete_ids)
+    return len(atoms)
+
+
 def plan_with_prover(task: GroundTask, deadline: float | None) -> PlanResult:
     """An optimal plan for ``task`` from its initial state, or a proof that none exists, by A* or the prover."""
     from guided_lfd.planning.search import SearchStopped, astar, planning_actions
+    from guided_lfd.symbolic.encoding import worth_running
     from guided_lfd.symbolic.worker import Forked
 
     start = time.perf_counter()
     usable = planning_actions(task, task.init)
     if not usable and not task.satisfies_goal(task.init):
         return PlanResult(None, DEFAULT_SEARCH, True, time.perf_counter() - start)
-    worker = Forked(_decide, task, usable, deadline)
+    # A task wider than the engine's default limit gets A* alone (no second process).
+    worker = Forked(_decide, task, usable, deadline) if worth_running(_variables(usable)) else None
 
     def proved_unsolvable() -> bool:
-        return worker.poll() and worker.value() is False
+        return worker is not None and worker.poll() and worker.value() is False
 
     from guided_lfd.deadline import seconds_left
     from guided_lfd.planning import time_limit
@@ -53,5 +65,6 @@ def plan_with_prover(task: GroundTask, deadline: float | None) -> PlanResult:
             return PlanResult(None, DEFAULT_SEARCH, True, time.perf_counter() - start, answered_by="symbolic")
         raise
     finally:
-        worker.stop()
+        if worker is not None:
+            worker.stop()
     return PlanResult(plan, DEFAULT_SEARCH, True, time.perf_counter() - start)

@@ -40,6 +40,18 @@ class SymbolicAction:
     effect_vars: Any
 
 
+#: The most variables (atoms) of a task on which the default searches (``excuse``'s portfolio, ``plan``'s
+#: prover) start the symbolic engine beside their own search.  Past it the engine's diagrams grow beyond what
+#: it answers in a minute (the household series: no house of 32 items, 1,921 relevant atoms, or more) while
+#: its worker takes a core and as much memory again; ``--strategy symbolic`` still runs it on any size.
+DEFAULT_MAX_VARIABLES = 1_500
+
+
+def worth_running(variables: int) -> bool:
+    """Whether the default searches start the symbolic engine on a task of this many variables (atoms)."""
+    return variables <= DEFAULT_MAX_VARIABLES
+
+
 def supports(task: GroundTask) -> bool:
     """Whether the symbolic engine handles ``task`` (STRIPS with negative preconditions: no conditional effects,
     no derived atoms)."""
