@@ -32,10 +32,10 @@ def test_the_scaling_report_draws_one_line_per_variant_strategy_and_semantics(sc
     for ax, variant in zip(axes, scaling.VARIANTS):
         sizes = {int(r["ground_actions"]) for r in rows if r["variant"] == variant}
         lines = [line for line in ax.get_lines() if not line.get_label().startswith("_")]
+        names = ("baseline (the paper's method)", "portfolio (default)", "symbolic")
         assert sorted(line.get_label() for line in lines) == [
-            f"{name}, {se} semantics" for name in ("baseline (the paper's method)", "landmark (default)")
-            for se in ("consistent", "literal")]
-        assert len({(line.get_color(), line.get_linestyle()) for line in lines}) == 4
+            f"{name}, {se} semantics" for name in names for se in ("consistent", "literal")]
+        assert len({(line.get_color(), line.get_linestyle()) for line in lines}) == 6
         for line in lines:  # only this variant's tasks, left to right: no zigzag between variants
             xs = list(line.get_xdata())
             assert set(xs) <= sizes and xs == sorted(set(xs))

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Household scaling run: whole-run wall time of `guided-lfd excuse` against task size.
+"""Household scaling run: whole-run wall time and peak memory of `guided-lfd excuse` against task size.
 
     python benchmarks/household/scaling.py generate          # -> benchmarks/household/tasks/
     python benchmarks/household/scaling.py run --jobs 2      # -> benchmarks/household/results/scaling.csv
@@ -8,11 +8,14 @@
 
 Every run is the installed command line in its own process, timed from the
 shell's point of view (start-up, parsing, grounding, search, the robot's
-plan, printing).  The default strategy runs on every task under both
-semantics; the baseline (the paper's breadth-first search with a planner
-call per candidate) runs from the smallest task up and stops at the first
-size it does not finish, per semantics and variant.  Sizes found by both are
-compared: they must agree.
+plan, printing); its peak resident memory is the largest of the process and
+the processes it waited for (``wait4``).  The houses are the series of
+``guided_lfd.household.SERIES`` and the wide house ``WIDE_HOUSE``.  The
+default strategy runs on every task under both semantics; the symbolic
+strategy alone and the baseline (the paper's breadth-first search with a
+planner call per candidate) run from the smallest task up and stop at the
+first size they do not finish, per semantics and variant.  Sizes found by
+two strategies are compared: they must agree.
 """
 
 from __future__ import annotations
@@ -40,8 +43,12 @@ TASKS = HERE / "tasks"
 RESULTS = HERE / "results"
 VARIANTS = ("no-push", "no-open")
 FIELDS = ["task", "variant", "rooms", "items", "drawers", "cupboards", "goals", "semantics", "strategy", "status",
-          "exit_code", "size", "plan_length", "plan_optimal", "wall_s", "time_s", "search_time_s",
-          "ground_atoms", "ground_actions"]
+          "exit_code", "size", "plan_length", "plan_optimal", "wall_s", "peak_mb", "time_s", "search_time_s",
+          "answered_by", "ground_atoms", "ground_actions", "relevant_atoms"]
+#: The default strategy (``guided-lfd excuse`` without ``--strategy``), and those run up to their first
+#: unfinished size beside it.
+DEFAULT = "portfolio"
+UP_TO_FIRST_MISS = ("symbolic", "baseline")
 
 
 def generate(series=household.SERIES) -> list[dict]:
@@ -65,15 +72,10 @@ def run_one(task: dict, semantics: str, strategy: str, time_limit: float) -> dic
     """One whole run of the command line; its row."""
     cmd = [*cli_command(), "excuse", str(task["domain"]), str(task["problem"]), "--semantics", semantics,
            "--strategy", strategy, "--time-limit", f"{time_limit:g}", "--json", "--quiet"]
-    start = time.perf_counter()
-    try:
-        proc = subprocess.run(cmd, capture_output=True, text=True, timeout=time_limit + 30)
-        code, stdout = proc.returncode, proc.stdout
-    except subprocess.TimeoutExpired:
-        code, stdout = -9, ""
-    wall = time.perf_counter() - start
+    code, stdout, wall, peak_kb = _timed(cmd, time_limit + 30)
     row = {k: task[k] for k in ("task", "variant", "rooms", "items", "drawers", "cupboards", "goals")}
-    row.update(semantics=semantics, strategy=strategy, exit_code=code, wall_s=round(wall, 3))
+    row.update(semantics=semantics, strategy=strategy, exit_code=code, wall_s=round(wall, 3),
+               peak_mb=round(peak_kb / 1024))
     try:
         doc = json.loads(stdout)
     except json.JSONDecodeError:
@@ -83,36 +85,65 @@ def run_one(task: dict, semantics: str, strategy: str, time_limit: float) -> dic
     excuse = doc.get("excuse") or {}
     row.update(status=doc["status"], size=excuse.get("size", ""), plan_length=excuse.get("plan_length", ""),
                plan_optimal=excuse.get("plan_optimal", ""), time_s=stats.get("time_s", ""),
-               search_time_s=stats.get("search_time_s", ""), ground_atoms=stats.get("ground_atoms", ""),
-               ground_actions=stats.get("ground_actions", ""))
+               search_time_s=stats.get("search_time_s", ""), answered_by=stats.get("answered_by", ""),
+               ground_atoms=stats.get("ground_atoms", ""), ground_actions=stats.get("ground_actions", ""),
+               relevant_atoms=stats.get("relevant_atoms", ""))
     return row
 
 
+def _timed(cmd: list[str], kill_after: float) -> tuple[int, str, float, int]:
+    """Run ``cmd``: its exit code (-9 when killed past ``kill_after`` s), stdout, wall time and peak memory (KiB)."""
+    import os
+    import tempfile
+    import threading
+
+    with tempfile.TemporaryFile("w+") as out:
+        start = time.perf_counter()
+        proc = subprocess.Popen(cmd, stdout=out, stderr=subprocess.DEVNULL, text=True)
+        killer = threading.Timer(kill_after, proc.kill)
+        killer.start()
+        try:
+            _, status, usage = os.wait4(proc.pid, 0)
+        finally:
+            killer.cancel()
+        wall = time.perf_counter() - start
+        proc.returncode = os.waitstatus_to_exitcode(status)
+        out.seek(0)
+        return proc.returncode, out.read(), wall, usage.ru_maxrss
+
+
 def run(tasks: list[dict], time_limit: float, jobs: int, log=print) -> list[dict]:
-    """The default strategy everywhere, the baseline up to its first unfinished size."""
+    """The default strategy everywhere; the symbolic strategy and the baseline up to their first unfinished size."""
     rows: list[dict] = []
-    jobs_list = [(t, sem, "landmark") for t in tasks for sem in ("literal", "consistent")]
+
+    def note(row: dict) -> None:
+        log(f"{row['task']} {row['semantics']} {row['strategy']}: {row['status']} size={row.get('size', '')} "
+            f"{row['wall_s']} s {row.get('peak_mb', '')} MiB")
+
+    jobs_list = [(t, sem, DEFAULT) for t in tasks for sem in ("literal", "consistent")]
     with ThreadPoolExecutor(max_workers=jobs) as pool:
         for row in pool.map(lambda job: run_one(job[0], job[1], job[2], time_limit), jobs_list):
-            log(f"{row['task']} {row['semantics']} landmark: {row['status']} size={row.get('size', '')} "
-                f"{row['wall_s']} s")
+            note(row)
             rows.append(row)
-    # The baseline, size by size per (variant, semantics), until it does not finish.
-    def baseline_series(variant: str, semantics: str) -> list[dict]:
+
+    # Size by size per (strategy, variant, semantics), until a run does not finish.
+    def up_to_first_miss(strategy: str, variant: str, semantics: str) -> list[dict]:
         out = []
-        for t in [t for t in tasks if t["variant"] == variant]:
-            row = run_one(t, semantics, "baseline", time_limit)
-            log(f"{row['task']} {semantics} baseline: {row['status']} size={row.get('size', '')} {row['wall_s']} s")
+        for t in sorted((t for t in tasks if t["variant"] == variant), key=lambda t: (t["items"], t["goals"])):
+            row = run_one(t, semantics, strategy, time_limit)
+            note(row)
             out.append(row)
             if row["status"] not in ("excuse-found", "no-excuse"):
                 break
         return out
 
     with ThreadPoolExecutor(max_workers=jobs) as pool:
-        for series in pool.map(lambda vs: baseline_series(*vs),
-                               [(v, s) for v in VARIANTS for s in ("literal", "consistent")]):
+        for series in pool.map(lambda key: up_to_first_miss(*key),
+                               [(st, v, s) for st in UP_TO_FIRST_MISS for v in VARIANTS
+                                for s in ("literal", "consistent")]):
             rows.extend(series)
-    return sorted(rows, key=lambda r: (r["variant"], int(r["items"]), r["goals"], r["semantics"], r["strategy"]))
+    return sorted(rows, key=lambda r: (r["variant"], int(r["items"]), int(r["goals"]), r["semantics"],
+                                       r["strategy"]))
 
 
 def write_csv(rows: list[dict], path: Path) -> None:
@@ -150,29 +181,40 @@ def _solved(row: dict) -> bool:
 def report(rows: list[dict], time_limit: float, out_dir: Path) -> str:
     """Markdown summary and a log-log plot of wall time against ground actions."""
     actions = {r["task"]: int(r["ground_actions"]) for r in rows if r.get("ground_actions")}
+    relevant = {r["task"]: r["relevant_atoms"] for r in rows if r.get("relevant_atoms")}
     lines = [
         "# Household scaling run",
         "",
         f"Command: `python benchmarks/household/scaling.py all --jobs 2` (time limit {time_limit:g} s per run; "
-        "wall = the whole `guided-lfd excuse` process as the shell sees it).",
+        "wall = the whole `guided-lfd excuse` process as the shell sees it; peak = its largest resident memory, "
+        "the process or a worker it started).",
         "",
-        "| task | ground actions | semantics | landmark: status, size, wall s (search s) | baseline: status, size, wall s |",
-        "|---|---|---|---|---|",
+        "| task | ground actions | relevant atoms | semantics | default: status, size, wall s, peak MiB (answered by) "
+        "| symbolic alone: status, wall s | baseline: status, size, wall s |",
+        "|---|---|---|---|---|---|---|",
     ]
     by_key = {(r["task"], r["semantics"], r["strategy"]): r for r in rows}
     disagreements = 0
     for task in sorted({r["task"] for r in rows}, key=lambda t: (t.split("-")[-1], actions.get(t, 0), t)):
         for sem in ("literal", "consistent"):
-            lm = by_key.get((task, sem, "landmark"))
-            bl = by_key.get((task, sem, "baseline"))
-            if lm is None:
+            default = by_key.get((task, sem, DEFAULT))
+            if default is None:
                 continue
-            lm_cell = f"{lm['status']}, {lm.get('size') or '-'}, {float(lm['wall_s']):.2f} ({lm.get('search_time_s') or '-'})"
-            bl_cell = (f"{bl['status']}, {bl.get('size') or '-'}, {float(bl['wall_s']):.2f}" if bl else "not run")
-            if bl and _solved(bl) and _solved(lm) and bl.get("size") != lm.get("size"):
-                disagreements += 1
-                bl_cell += " **size differs**"
-            lines.append(f"| {task} | {actions.get(task, '-')} | {sem} | {lm_cell} | {bl_cell} |")
+            cells = [f"{default['status']}, {default.get('size') or '-'}, {float(default['wall_s']):.2f}, "
+                     f"{default.get('peak_mb') or '-'} ({default.get('answered_by') or '-'})"]
+            for strategy, with_size in (("symbolic", False), ("baseline", True)):
+                other = by_key.get((task, sem, strategy))
+                if other is None:
+                    cells.append("not run")
+                    continue
+                cell = f"{other['status']}, " + (f"{other.get('size') or '-'}, " if with_size else "")
+                cell += f"{float(other['wall_s']):.2f}"
+                if _solved(other) and _solved(default) and other.get("size") != default.get("size"):
+                    disagreements += 1
+                    cell += " **size differs**"
+                cells.append(cell)
+            lines.append(f"| {task} | {actions.get(task, '-')} | {relevant.get(task, '-')} | {sem} | "
+                         + " | ".join(cells) + " |")
     lines += ["", f"Size disagreements between the strategies where both finish: {disagreements}."]
     lines += limit_section([(float(r["wall_s"]), f"{r['task']} {r['strategy']} {r['semantics']}", r["status"])
                             for r in rows if r.get("wall_s") not in ("", None)], time_limit) + [""]
@@ -240,7 +282,7 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--jobs", type=int, default=2)
     parser.add_argument("--max-items", type=int, default=None, help="only houses with at most this many items")
     args = parser.parse_args(argv)
-    series = [s for s in household.SERIES if args.max_items is None or s[1] <= args.max_items]
+    series = [s for s in [*household.SERIES, household.WIDE_HOUSE] if args.max_items is None or s[1] <= args.max_items]
     tasks = generate(series)
     if args.command == "generate":
         print(f"{len(tasks)} tasks -> {TASKS}", file=sys.stderr)

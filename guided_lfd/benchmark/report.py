@@ -16,7 +16,9 @@ DPI = 120
 
 #: How every benchmark plot draws a strategy (colour, marker, legend name); one colour per strategy in all plots.
 STRATEGY_STYLE: dict[str, tuple[str, str, str]] = {
-    "landmark": ("tab:orange", "o", "landmark (default)"),
+    "portfolio": ("tab:green", "s", "portfolio (default)"),
+    "landmark": ("tab:orange", "o", "landmark"),
+    "symbolic": ("tab:purple", "^", "symbolic"),
     "baseline": ("tab:blue", "x", "baseline (the paper's method)"),
 }
 
