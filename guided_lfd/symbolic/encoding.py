@@ -42,8 +42,9 @@ class SymbolicAction:
 
 #: The most variables (atoms) of a task on which the default searches (``excuse``'s portfolio, ``plan``'s
 #: prover) start the symbolic engine beside their own search.  Past it the engine's diagrams grow beyond what
-#: it answers in a minute (the household series: no house of 32 items, 1,921 relevant atoms, or more) while
-#: its worker takes a core and as much memory again; ``--strategy symbolic`` still runs it on any size.
+#: it answers in a minute (benchmarks/household: alone, it answers no house of 8 items or more, 201 relevant
+#: atoms, within 60 s) while its worker would take a core and as much memory again as the search beside it;
+#: ``--strategy symbolic`` still runs it on any size.
 DEFAULT_MAX_VARIABLES = 1_500
 
 
