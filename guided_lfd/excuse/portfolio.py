@@ -6,12 +6,12 @@ search would have to check candidates one by one, each a proof that the robot
 cannot (depot under the consistent semantics).  The landmark search starts
 alone; only a run still going after :data:`SYMBOLIC_AFTER_S` starts the
 symbolic search, in a forked worker (:mod:`guided_lfd.symbolic.worker`), so a
-short run never pays for a process or the diagram library; a task with more
-relevant atoms than :data:`guided_lfd.symbolic.encoding.DEFAULT_MAX_VARIABLES`
-never starts it.  From then on the
+short run never pays for a process or the diagram library.  From then on the
 landmark search asks, between its steps, whether the worker has answered;
 whichever finishes first with an exact answer (an excuse set, or a proof of
-none) ends the other.  ``statistics.answered_by`` says which.
+none) ends the other.  ``statistics.answered_by`` says which.  A task with
+more relevant atoms than :data:`guided_lfd.symbolic.encoding.DEFAULT_MAX_VARIABLES`
+never starts the worker.
 """
 
 from __future__ import annotations

@@ -5,10 +5,10 @@ exhausting them; symbolic bidirectional search (:mod:`guided_lfd.symbolic`)
 proves unsolvable tasks whose state spaces are far too large to enumerate one
 state at a time.  The symbolic search runs in a forked worker
 (:mod:`guided_lfd.symbolic.worker`), so it takes the second core, and a
-diagram operation that outlives the run is ended with the worker.  A task
-with more atoms than :data:`guided_lfd.symbolic.encoding.DEFAULT_MAX_VARIABLES`
-gets A* alone.  Its
-"solvable" answer is not a plan: A* goes on to find the optimal one.
+diagram operation that outlives the run is ended with the worker.  Its
+"solvable" answer is not a plan: A* goes on to find the optimal one.  A task
+with more variables than :data:`guided_lfd.symbolic.encoding.DEFAULT_MAX_VARIABLES`
+gets A* alone.
 """
 
 from __future__ import annotations
@@ -27,18 +27,11 @@ def _decide(task: GroundTask, actions: list[GroundAction], deadline: float | Non
     return decide(task, actions, deadline).solvable
 
 
-def _variables(actions: list[GroundAction]) -> int:
-    """The atoms the actions read or write: the prover's diagram variables."""
-    atoms: set[int] = set()
-    for act in actions:
-        atoms.update(act.pre_pos_ids, act.pre_neg_ids, act.add_ids, act.delete_ids)
-    return len(atoms)
-
-
 def plan_with_prover(task: GroundTask, deadline: float | None) -> PlanResult:
     """An optimal plan for ``task`` from its initial state, or a proof that none exists, by A* or the prover."""
     from guided_lfd.planning.search import SearchStopped, astar, planning_actions
     from guided_lfd.symbolic.encoding import worth_running
+    from guided_lfd.symbolic.unsolvable import prover_variables
     from guided_lfd.symbolic.worker import Forked
 
     start = time.perf_counter()
@@ -46,7 +39,8 @@ def plan_with_prover(task: GroundTask, deadline: float | None) -> PlanResult:
     if not usable and not task.satisfies_goal(task.init):
         return PlanResult(None, DEFAULT_SEARCH, True, time.perf_counter() - start)
     # A task wider than the engine's default limit gets A* alone (no second process).
-    worker = Forked(_decide, task, usable, deadline) if worth_running(_variables(usable)) else None
+    wide = not worth_running(len(prover_variables(task, usable)))
+    worker = None if wide else Forked(_decide, task, usable, deadline)
 
     def proved_unsolvable() -> bool:
         return worker is not None and worker.poll() and worker.value() is False

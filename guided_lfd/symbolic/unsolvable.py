@@ -33,15 +33,20 @@ def reachable_invariants(task: GroundTask, deadline: float | None = None) -> lis
     return sorted(masks)
 
 
+def prover_variables(task: GroundTask, actions: Iterable[GroundAction]) -> set[int]:
+    """The atoms the prover's diagrams have a variable for: the goal's and those the actions touch."""
+    atoms = set(bits(task.goal_pos | task.goal_neg))
+    for a in actions:
+        atoms.update(a.pre_pos_ids, a.pre_neg_ids, a.add_ids, a.delete_ids)
+    return atoms
+
+
 def symbolic_task(task: GroundTask, actions: Iterable[GroundAction], groups: list[int],
                   library: str | None = None) -> SymbolicTask:
     """``task`` over ``actions`` and the atoms they touch, ordered from the causal graph."""
     actions = list(actions)
     goal = list(bits(task.goal_pos | task.goal_neg))
-    atoms = set(goal)
-    for a in actions:
-        atoms.update(a.pre_pos_ids, a.pre_neg_ids, a.add_ids, a.delete_ids)
-    order = variable_order(atoms, actions, first=goal, groups=groups)
+    order = variable_order(prover_variables(task, actions), actions, first=goal, groups=groups)
     return SymbolicTask(task, order, actions) if library is None else SymbolicTask(task, order, actions, library)
 
 
