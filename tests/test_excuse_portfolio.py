@@ -11,7 +11,7 @@ import time
 import pytest
 from hypothesis import HealthCheck, given, settings
 
-from conftest import BLOCKS, kitchen
+from conftest import BLOCKS, ROOT, kitchen
 from test_excuse_engine import _parse_random, small_tasks
 from guided_lfd.excuse import portfolio
 from guided_lfd.excuse import strategies
@@ -70,11 +70,48 @@ def _never_forked(*_):
     raise AssertionError("the symbolic search started on a task past its limit")
 
 
-def test_a_quick_run_is_answered_by_the_landmark_search_alone(monkeypatch):
+@pytest.mark.parametrize("semantics, answered_by", [(Semantics.LITERAL, "landmark"),
+                                                     (Semantics.CONSISTENT, portfolio.WITHOUT_INVARIANTS)])
+def test_a_quick_run_is_answered_by_the_landmark_search_alone(monkeypatch, semantics, answered_by):
     monkeypatch.setattr(portfolio, "SYMBOLIC_AFTER_S", 3600.0)  # no worker: the landmark search must answer
-    report = find_excuses(*parse_task(*kitchen(1)))
-    assert report.statistics.answered_by == "landmark"
+    report = find_excuses(*parse_task(*kitchen(1)), ExcuseOptions(semantics=semantics))
+    # Consistent: the lightest excuse without the invariants, +(open pinkdrawer), keeps them, so it settles it.
+    assert report.statistics.answered_by == answered_by
     assert [str(c) for c in report.excuse.changes] == ["+(open pinkdrawer)"]
+
+
+DEPOT = ROOT / "data" / "benchmarks" / "ipc" / "depot"
+
+
+def test_no_excuse_without_the_invariants_is_none_with_them(tmp_path):
+    # Depot without drop: no crate is ever put down, whatever the state.  The search without the invariants
+    # proves it in a few expansions; the landmark search with them would enumerate change sets.
+    domain_text = (DEPOT / "domain.pddl").read_text()
+    start = domain_text.index("(:action drop")
+    end = domain_text.index("(:action", start + 1)
+    (tmp_path / "domain.pddl").write_text(domain_text[:start] + domain_text[end:])
+    domain, problem = parse_task(tmp_path / "domain.pddl", DEPOT / "task01.pddl")
+    options = dict(fixed_from=parse_task(DEPOT / "domain.pddl", DEPOT / "task01.pddl")[0])
+    report = find_excuses(domain, problem, ExcuseOptions(**options))
+    assert report.status == "no-excuse" and report.statistics.answered_by == portfolio.WITHOUT_INVARIANTS
+    assert report.statistics.invariants_in_the_way is None  # the literal semantics was not asked again
+    alone = find_excuses(domain, problem, ExcuseOptions(strategy="landmark", **options))
+    assert alone.status == "no-excuse"
+
+
+@pytest.mark.parametrize("literal_answer", ["timeout", "inconsistent"])
+def test_without_invariants_settles_nothing_it_cannot(literal_answer, monkeypatch):
+    # Blocks without unstack: the lightest excuse without invariants puts a block in the hand and keeps it on
+    # the table too; that breaks an invariant, so the consistent search must answer.
+    if literal_answer == "timeout":
+        monkeypatch.setattr(portfolio, "WITHOUT_INVARIANTS_LEAST_S", 0.0)
+        monkeypatch.setattr(portfolio, "WITHOUT_INVARIANTS_SHARE", 0.0)
+    monkeypatch.setattr(portfolio, "SYMBOLIC_AFTER_S", 3600.0)
+    domain, problem = parse_task(BLOCKS / "domain-no-unstack.pddl", BLOCKS / "task03.pddl")
+    report = find_excuses(domain, problem, ExcuseOptions())
+    assert report.statistics.answered_by == "landmark"
+    alone = find_excuses(domain, problem, ExcuseOptions(strategy="landmark"))
+    assert [e.size for e in report.excuses] == [e.size for e in alone.excuses]
 
 
 @pytest.mark.parametrize("semantics", list(Semantics))
@@ -90,3 +127,18 @@ def test_either_member_gives_the_landmark_strategys_answer(tmp_path_factory, mon
         patch.setattr(strategies.LandmarkSearch, "search", _waiting_landmark)
         got = find_excuses(domain, problem, ExcuseOptions(**options))
     assert _excuses(got) == expected
+
+
+@settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow,
+                                                                  HealthCheck.function_scoped_fixture])
+@given(pddl=small_tasks())
+def test_the_search_without_invariants_gives_the_consistent_answer(tmp_path_factory, monkeypatch, pddl):
+    # One excuse (no --all): the shortcut may answer; status and weight must be the consistent search's own.
+    domain, problem = _parse_random(tmp_path_factory, "lit", pddl)
+    options = dict(semantics=Semantics.CONSISTENT, max_size=3)
+    expected = find_excuses(domain, problem, ExcuseOptions(strategy="landmark", **options))
+    with monkeypatch.context() as patch:
+        patch.setattr(portfolio, "SYMBOLIC_AFTER_S", 3600.0)
+        got = find_excuses(domain, problem, ExcuseOptions(**options))
+    assert _excuses(got)[0] == _excuses(expected)[0]
+    assert [(e.size, e.cost) for e in got.excuses] == [(e.size, e.cost) for e in expected.excuses]

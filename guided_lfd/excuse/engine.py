@@ -24,6 +24,7 @@ from guided_lfd.excuse.check import check_excuse
 from guided_lfd.excuse.laws import WorldLaws, derive_laws
 from guided_lfd.excuse import strategies
 from guided_lfd.excuse.lmcut import RelaxedExcuseTask
+from guided_lfd.excuse.portfolio import WITHOUT_INVARIANTS
 from guided_lfd.excuse.prepare import prepare
 from guided_lfd.excuse.progress import ProgressCallback, ProgressMeter
 from guided_lfd.excuse.reach import ReachabilityOracle
@@ -574,7 +575,8 @@ class _Run:
                 self._bound_reached(space, outcome.lower_bound)
         if status is ExcuseStatus.NONE and self.stats.structure_held:
             self._structure_in_the_way()
-        if status is ExcuseStatus.NONE and space.groups and not self.unachievable:
+        if (status is ExcuseStatus.NONE and space.groups and not self.unachievable
+                and outcome.answered_by != WITHOUT_INVARIANTS):  # else the literal semantics has none either
             self._invariants_in_the_way(task, space)
         return self.report(status)
 

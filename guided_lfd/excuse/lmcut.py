@@ -23,6 +23,7 @@ actions.
 
 from __future__ import annotations
 
+import copy
 from dataclasses import dataclass
 
 import math
@@ -116,6 +117,18 @@ class RelaxedExcuseTask:
             self.changeable = bitmask_to_array(space.changeable, self.n_atoms)
             self.group_facts = [np.array(f, dtype=np.int64) for f in self.group_fact_lists]
             self.fact_weight = np.array(self.fact_weight_list, dtype=np.float64)
+
+    def without_invariants(self, space: ChangeSpace) -> RelaxedExcuseTask:
+        """This relaxed task for ``space``: the same task, relevance and changeable atoms without the mutex
+        groups (the literal question beside a consistent one); the fact and action tables are shared."""
+        other = copy.copy(self)
+        other.space = space
+        other._first_hmax = None
+        other._group_charges_tables(space)
+        if not other.small:
+            other.group_facts = []
+            other.fact_weight = np.array(other.fact_weight_list, dtype=np.float64)
+        return other
 
     def _facts_and_actions(self, space: ChangeSpace) -> tuple[list[list[int]], list[list[int]]]:
         """Number the relevant facts (atoms, then negations needed) and list each relevant action's

@@ -12,20 +12,39 @@ whichever finishes first with an exact answer (an excuse set, or a proof of
 none) ends the other.  ``statistics.answered_by`` says which.  A task with
 more relevant atoms than :data:`guided_lfd.symbolic.encoding.DEFAULT_MAX_VARIABLES`
 never starts the worker.
+
+Under the consistent semantics the portfolio first asks the same question
+without the invariants, for a short while (:data:`WITHOUT_INVARIANTS_SHARE`
+of the time left): dropping an excuse's changes to atoms the goal does not
+depend on keeps it an excuse, never makes it heavier, and may break only
+invariants, so the lightest excuse without them weighs no more than the
+lightest one with them.  Hence no excuse without the invariants means none
+with them (depot without ``drop``: a few expansions instead of hundreds of
+thousands of change sets), and a lightest one that happens to keep every
+invariant is a lightest consistent excuse.
 """
 
 from __future__ import annotations
 
+import math
 import time
 from dataclasses import replace
 from typing import Any
 
 from guided_lfd.excuse.progress import ProgressMeter
-from guided_lfd.excuse.space import ChangeSpace
+from guided_lfd.excuse.space import ChangeSpace, Semantics
 from guided_lfd.excuse.status import ExcuseStatus
 
 #: Seconds the landmark search runs alone before the symbolic search starts beside it.
 SYMBOLIC_AFTER_S = 0.5
+
+#: Share of the time left the portfolio gives its search without the invariants (consistent semantics; at least
+#: :data:`WITHOUT_INVARIANTS_LEAST_S` seconds).
+WITHOUT_INVARIANTS_SHARE = 0.05
+WITHOUT_INVARIANTS_LEAST_S = 1.0
+
+#: ``statistics.answered_by`` of an answer the search without the invariants settled.
+WITHOUT_INVARIANTS = "landmark-literal"
 
 #: Outcomes that settle the question (a timed-out search settles nothing).
 _EXACT = (ExcuseStatus.FOUND, ExcuseStatus.NONE, ExcuseStatus.NONE_WITHIN_SIZE)
@@ -56,6 +75,9 @@ class PortfolioSearch:
         from guided_lfd.excuse.strategies import LandmarkSearch, SearchStopped
         from guided_lfd.symbolic.encoding import supports, worth_running
 
+        settled = without_invariants(space, limits, oracle, relaxed)
+        if settled is not None:
+            return settled
         if not supports(space.task) or not worth_running(space.relevant_atoms.bit_count()):
             return _answered(LandmarkSearch().search(space, limits, progress, oracle, relaxed), "landmark")
         race = _Race(space, limits)
@@ -70,6 +92,40 @@ class PortfolioSearch:
             return _answered(outcome, "landmark")
         finally:
             race.end()
+
+
+def without_invariants(space: ChangeSpace, limits: Any, oracle: Any = None, relaxed: Any = None) -> Any | None:
+    """The answer of the search without the invariants when it settles the consistent question (see the module
+    docstring), else None: no invariants to drop, that search found an excuse breaking one, ran out of its
+    share of the time, or ``--all`` / ``--slack`` want more than one lightest excuse."""
+    from guided_lfd.excuse.lmcut import RelaxedExcuseTask
+    from guided_lfd.excuse.reach import ReachabilityOracle
+    from guided_lfd.excuse.strategies import LandmarkSearch, clock
+
+    if not space.groups or limits.all_minimal or limits.slack:
+        return None
+    literal = replace(space, semantics=Semantics.LITERAL, groups=[], groups_of={})
+    left = math.inf if limits.deadline is None else limits.deadline - clock()
+    until = clock() + max(WITHOUT_INVARIANTS_LEAST_S, WITHOUT_INVARIANTS_SHARE * left)
+    if limits.deadline is not None:
+        until = min(until, limits.deadline)
+    oracle = oracle or ReachabilityOracle(space, limits.deadline)
+    relaxed = (relaxed or RelaxedExcuseTask(space)).without_invariants(literal)
+    hard = oracle.deadline
+    # The oracle reads time.monotonic(), the searches' clock too.
+    oracle.deadline = until if hard is None else min(hard, until)
+    try:
+        outcome = LandmarkSearch().search(literal, replace(limits, deadline=until, probe=None, stop=None),
+                                          oracle=oracle, relaxed=relaxed)
+    finally:
+        oracle.deadline = hard
+    if outcome.status in (ExcuseStatus.NONE, ExcuseStatus.NONE_WITHIN_SIZE):
+        return _answered(outcome, WITHOUT_INVARIANTS)
+    if outcome.status is ExcuseStatus.FOUND and all(space.consistent(space.task.init ^ c)
+                                                       for c in outcome.solutions[:1]):
+        outcome.solutions = outcome.solutions[:1]
+        return _answered(outcome, WITHOUT_INVARIANTS)
+    return None
 
 
 class _Race:

@@ -28,13 +28,23 @@ from guided_lfd.planning.grounding import GroundAction, bits
 
 
 def excuse_atoms(space: ChangeSpace) -> set[int]:
-    """The atoms the symbolic search keeps as variables: relevant ones, closed under shared invariant groups."""
+    """The atoms the symbolic search keeps as variables: the relevant ones, and what repairing their groups
+    may need.
+
+    Changing an atom the goal does not depend on only helps by repairing a group, and leaving it out of an
+    excuse keeps every at-most-one group and every other group it is in: so of a group with a variable, only
+    its atoms true initially (a change may have to remove them) and, when exactly one of its atoms must hold,
+    all of them (a change may have to add one) can be in a minimal excuse.  Repeated until nothing is added;
+    every other atom keeps its initial value (false: all the true ones in a group with a variable are kept).
+    """
+    init = space.task.init
     atoms = set(bits(space.relevant_atoms))
     frontier = list(atoms)
     while frontier:
         i = frontier.pop()
         for gi in space.groups_of.get(i, ()):
-            for j in bits(space.groups[gi].mask):
+            group = space.groups[gi]
+            for j in bits(group.mask if group.exactly_one else group.mask & init):
                 if j not in atoms:
                     atoms.add(j)
                     frontier.append(j)
