@@ -40,7 +40,7 @@ def bench(
     jobs: Annotated[int, typer.Option("--jobs", metavar="N", help="Runs at a time.")] = 2,
     memory_limit: Annotated[int, typer.Option("--memory-limit", metavar="MIB",
                                               help="Address-space cap per run (0 = none); a run past it is 'memout'.")] = 8192,
-    strategies: Annotated[str, typer.Option("--strategies", metavar="NAMES", help="Comma-separated strategies.")] = "landmark,baseline",
+    strategies: Annotated[str, typer.Option("--strategies", metavar="NAMES", help="Comma-separated strategies.")] = "portfolio,baseline",
     semantics: Annotated[str, typer.Option("--semantics", metavar="NAMES", help="Comma-separated semantics.")] = "literal,consistent",
     only: Annotated[str, typer.Option("--only", metavar="IDS", help="Comma-separated substrings of task ids to run "
                                                       "(their rows replace theirs in the results; the rest stay).")] = "",

@@ -130,3 +130,22 @@ def test_summary_reports_overruns_of_the_time_limit_and_runs_not_made(tmp_path: 
     assert "- a-task05-x baseline literal: 61.70 s (timeout)" in text
     assert "Runs not made: 1." in text
     assert "| grown | literal | 2 | 1 (50.0%) | 0 (0.0%) | 1 |" in text
+
+
+def test_the_default_is_the_portfolio_where_the_results_have_it(tmp_path):
+    # The same runs under the portfolio's name, beside older landmark rows that solved less: the report
+    # compares the portfolio with the baseline and names it.
+    renamed = [ResultRow(**{**r.__dict__, "strategy": "portfolio"}) for r in ROWS if r.strategy == "landmark"]
+    stale = [row("t1", "literal", "landmark", "timeout", total=60.0)]
+    rows = renamed + stale + [r for r in ROWS if r.strategy == "baseline"]
+    lit = by_label(rows)["literal"]
+    assert (lit.solved_default, lit.solved_baseline) == (3, 2)
+    text = summary_markdown(rows, 60.0, "cmd", None, tmp_path)
+    assert "## Default (portfolio) vs baseline" in text and "solved: portfolio" in text
+    assert "## Minimal excuse sizes found (portfolio)" in text
+    assert "| literal | 3 | 3 (100%) | 2 (67%) |" in text
+
+
+def test_a_subset_run_of_the_portfolio_leaves_the_landmark_rows_the_default():
+    rows = ROWS + [row("t1", "literal", "portfolio", "excuse-found", 1)]
+    assert by_label(rows)["literal"].solved_default == 3  # landmark's: 4 rows against 1

@@ -13,6 +13,7 @@ import pytest
 
 from conftest import ROOT
 from guided_lfd import benchmark
+from guided_lfd.excuse.strategies import DEFAULT_STRATEGY
 
 SUBSET = list(csv.DictReader(open(ROOT / "benchmarks" / "ci_subset.csv", encoding="utf-8")))
 SUITE = {t.id: t for t in benchmark.read_suite(ROOT / "benchmarks" / "suite.csv", ROOT)}
@@ -25,7 +26,7 @@ def test_subset_spans_the_benchmark_domains():
 
 @pytest.mark.parametrize("row,semantics", CASES, ids=[f"{r['id']}-{se}" for r, se in CASES])
 def test_default_strategy_keeps_minimal_sizes(row, semantics):
-    result = benchmark.run_one(SUITE[row["id"]], "landmark", semantics, time_limit=30).to_csv()
+    result = benchmark.run_one(SUITE[row["id"]], DEFAULT_STRATEGY, semantics, time_limit=30).to_csv()
     assert result["status"] == row[f"{semantics}_status"]
     assert result["size"] == row[f"{semantics}_size"]
 

@@ -6,10 +6,12 @@ against the answer of its strategy run alone."""
 
 from __future__ import annotations
 
+import math
 import time
 
 import pytest
 from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
 
 from conftest import BLOCKS, ROOT, kitchen
 from test_excuse_engine import _parse_random, small_tasks
@@ -74,6 +76,7 @@ def _never_forked(*_):
                                                      (Semantics.CONSISTENT, portfolio.WITHOUT_INVARIANTS)])
 def test_a_quick_run_is_answered_by_the_landmark_search_alone(monkeypatch, semantics, answered_by):
     monkeypatch.setattr(portfolio, "SYMBOLIC_AFTER_S", 3600.0)  # no worker: the landmark search must answer
+    monkeypatch.setattr(portfolio, "WITHOUT_INVARIANTS_UNLIMITED_S", 1e6)  # whatever the machine's speed
     report = find_excuses(*parse_task(*kitchen(1)), ExcuseOptions(semantics=semantics))
     # Consistent: the lightest excuse without the invariants, +(open pinkdrawer), keeps them, so it settles it.
     assert report.statistics.answered_by == answered_by
@@ -83,9 +86,10 @@ def test_a_quick_run_is_answered_by_the_landmark_search_alone(monkeypatch, seman
 DEPOT = ROOT / "data" / "benchmarks" / "ipc" / "depot"
 
 
-def test_no_excuse_without_the_invariants_is_none_with_them(tmp_path):
+def test_no_excuse_without_the_invariants_is_none_with_them(tmp_path, monkeypatch):
     # Depot without drop: no crate is ever put down, whatever the state.  The search without the invariants
     # proves it in a few expansions; the landmark search with them would enumerate change sets.
+    monkeypatch.setattr(portfolio, "WITHOUT_INVARIANTS_UNLIMITED_S", 1e6)  # whatever the machine's speed
     domain_text = (DEPOT / "domain.pddl").read_text()
     start = domain_text.index("(:action drop")
     end = domain_text.index("(:action", start + 1)
@@ -106,10 +110,27 @@ def test_without_invariants_settles_nothing_it_cannot(literal_answer, monkeypatc
     if literal_answer == "timeout":
         monkeypatch.setattr(portfolio, "WITHOUT_INVARIANTS_LEAST_S", 0.0)
         monkeypatch.setattr(portfolio, "WITHOUT_INVARIANTS_SHARE", 0.0)
+    else:
+        monkeypatch.setattr(portfolio, "WITHOUT_INVARIANTS_UNLIMITED_S", 1e6)
     monkeypatch.setattr(portfolio, "SYMBOLIC_AFTER_S", 3600.0)
+    firsts = []
+    real = portfolio.without_invariants
+
+    def recording(*args):
+        answer, first = real(*args)
+        firsts.append(first)
+        return answer, first
+
+    monkeypatch.setattr(portfolio, "without_invariants", recording)
     domain, problem = parse_task(BLOCKS / "domain-no-unstack.pddl", BLOCKS / "task03.pddl")
     report = find_excuses(domain, problem, ExcuseOptions())
     assert report.statistics.answered_by == "landmark"
+    [first] = firsts
+    if literal_answer == "timeout":
+        assert first.status.value == "timeout"
+    else:
+        assert first.status.value == "excuse-found" and first.solutions
+    assert "literal_expanded" in report.statistics.counters
     alone = find_excuses(domain, problem, ExcuseOptions(strategy="landmark"))
     assert [e.size for e in report.excuses] == [e.size for e in alone.excuses]
 
@@ -131,14 +152,39 @@ def test_either_member_gives_the_landmark_strategys_answer(tmp_path_factory, mon
 
 @settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow,
                                                                   HealthCheck.function_scoped_fixture])
-@given(pddl=small_tasks())
-def test_the_search_without_invariants_gives_the_consistent_answer(tmp_path_factory, monkeypatch, pddl):
+@given(pddl=small_tasks(), costs=st.lists(st.tuples(st.sampled_from(["p0", "p1", "u0", "u1"]), st.integers(0, 4)),
+                                          max_size=3))
+def test_the_search_without_invariants_gives_the_consistent_answer(tmp_path_factory, monkeypatch, pddl, costs):
     # One excuse (no --all): the shortcut may answer; status and weight must be the consistent search's own.
     domain, problem = _parse_random(tmp_path_factory, "lit", pddl)
-    options = dict(semantics=Semantics.CONSISTENT, max_size=3)
+    specs = [f"{p}={c}" for p, c in dict(costs).items() if p in domain.predicates]
+    options = dict(semantics=Semantics.CONSISTENT, max_size=3, costs=specs)
     expected = find_excuses(domain, problem, ExcuseOptions(strategy="landmark", **options))
     with monkeypatch.context() as patch:
         patch.setattr(portfolio, "SYMBOLIC_AFTER_S", 3600.0)
+        patch.setattr(portfolio, "WITHOUT_INVARIANTS_UNLIMITED_S", 1e6)
         got = find_excuses(domain, problem, ExcuseOptions(**options))
     assert _excuses(got)[0] == _excuses(expected)[0]
     assert [(e.size, e.cost) for e in got.excuses] == [(e.size, e.cost) for e in expected.excuses]
+
+
+def test_without_a_time_limit_the_search_without_invariants_still_has_one(monkeypatch):
+    # It may never finish (depot's literal candidates) where the consistent search would: it gets a share of
+    # WITHOUT_INVARIANTS_UNLIMITED_S, and the oracle's own deadline is restored after it.
+    seen = []
+    real = strategies.LandmarkSearch.search
+
+    def recording(self, space, limits, progress=None, oracle=None, relaxed=None):
+        seen.append((space.semantics, limits.deadline, oracle.deadline if oracle is not None else None))
+        return real(self, space, limits, progress, oracle, relaxed)
+
+    monkeypatch.setattr(strategies.LandmarkSearch, "search", recording)
+    monkeypatch.setattr(portfolio, "SYMBOLIC_AFTER_S", 3600.0)
+    domain, problem = parse_task(BLOCKS / "domain-no-unstack.pddl", BLOCKS / "task03.pddl")
+    report = find_excuses(domain, problem, ExcuseOptions())
+    assert report.excuses and [s for s, _, _ in seen] == [Semantics.LITERAL, Semantics.CONSISTENT]
+    (_, literal_until, literal_oracle), (_, consistent_until, consistent_oracle) = seen
+    most = time.monotonic() + portfolio.WITHOUT_INVARIANTS_SHARE * portfolio.WITHOUT_INVARIANTS_UNLIMITED_S
+    assert math.isfinite(literal_until) and literal_until <= most
+    assert math.isfinite(literal_oracle) and literal_oracle <= most
+    assert consistent_until is None and consistent_oracle is None

@@ -25,12 +25,20 @@ def test_every_registered_search_solves_blocks_and_the_plan_validates(search):
         assert len(result.plan) == 6
 
 
-def test_atoms_of_the_smallest_predicates_come_first_so_action_masks_stay_narrow():
-    """A bit set is as wide as its highest atom: (handempty) and (clear ?x) before (on ?x ?y) keeps each
-    action's masks as narrow as its widest atom allows."""
+@pytest.mark.parametrize("by_count_from", [0, 10**9])
+def test_atoms_of_the_smallest_predicates_come_first_so_action_masks_stay_narrow(monkeypatch, by_count_from):
+    """A bit set is as wide as its highest atom: on a large task (here: any task), (handempty) and (clear ?x)
+    before (on ?x ?y) keeps each action's masks as narrow as its widest atom allows; a smaller one keeps the
+    order by name."""
+    from guided_lfd.planning import grounding
+
+    monkeypatch.setattr(grounding, "ATOMS_BY_COUNT_FROM", by_count_from)
     domain, problem = parse_task(BLOCKS / "domain.pddl", BLOCKS / "task03.pddl")
     task = ground(domain, problem)
     order = list(dict.fromkeys(a.predicate for a in task.atoms))
+    if by_count_from:
+        assert order == sorted(order)
+        return
     counts = {p: sum(1 for a in task.atoms if a.predicate == p) for p in order}
     assert order == sorted(order, key=lambda p: (counts[p], p)) and order[0] == "handempty" and order[-1] == "on"
     pick_up = next(a for a in task.actions if a.schema == "pick-up")

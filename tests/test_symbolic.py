@@ -222,3 +222,29 @@ def test_a_group_no_variable_touches_keeps_its_initial_atoms(strategy):
     report = find_excuses(*parse_task(data / "domain.pddl", data / "problem.pddl"),
                           ExcuseOptions(semantics="consistent", strategy=strategy, all_minimal=True))
     assert [[str(c) for c in e.changes] for e in report.excuses] == [["+(road l1 l2)"]]
+
+
+def test_the_excuse_variables_leave_out_atoms_no_minimal_excuse_changes(tmp_path):
+    """Depot with type predicates grounds (lifting crate0 crate1) and the like: false, read by no action, in
+    at-most-one groups only through a crate.  They stay out; what a group's repair may need stays in."""
+    from guided_lfd.excuse.engine import ExcuseOptions
+    from guided_lfd.excuse.prepare import prepare
+    from guided_lfd.excuse.space import Semantics
+    from guided_lfd.excuse.symbolic import excuse_atoms
+
+    depot = ROOT / "data" / "benchmarks" / "ipc" / "depot"
+    text = (depot / "domain.pddl").read_text()
+    start = text.index("(:action lift")
+    (tmp_path / "domain.pddl").write_text(text[:start] + text[text.index("(:action", start + 1):])
+    domain, problem = parse_task(tmp_path / "domain.pddl", depot / "task01.pddl")
+    full = parse_task(depot / "domain.pddl", depot / "task01.pddl")[0]
+    fixed = ExcuseOptions(fixed_from=full).fixed_predicates(domain)
+    space = prepare(domain, problem, Semantics.CONSISTENT, fixed).space
+    atoms = excuse_atoms(space)
+    assert set(bits(space.relevant_atoms)) <= atoms
+    for group in space.groups:
+        if any(group.mask >> i & 1 for i in atoms):
+            assert set(bits(group.mask if group.exactly_one else group.mask & space.task.init)) <= atoms
+    names = {str(space.task.atoms[i]) for i in atoms}
+    assert "(lifting hoist0 crate0)" in names and "(available crate0)" not in names
+    assert len(atoms) < space.changeable.bit_count() / 2

@@ -7,8 +7,9 @@ from pathlib import Path
 from typing import Any
 
 from guided_lfd.benchmark.results import SOLVED, ResultRow
-from guided_lfd.benchmark.analysis import (NONTRIVIAL_S, SIZE_BUCKETS, SIZE_COUNTS, Comparison, compare, speedups_by_size,
-                                           size_count_key, suite_part, whole_run_s)
+from guided_lfd.benchmark.analysis import (NONTRIVIAL_S, SIZE_BUCKETS, SIZE_COUNTS, Comparison, compare,
+                                           default_strategy, speedups_by_size, size_count_key, suite_part,
+                                           whole_run_s)
 from guided_lfd.reporting import markdown_table, plots_markdown, pyplot, save_figure
 
 #: Resolution of the benchmark's PNG plots.
@@ -99,6 +100,7 @@ def _time_vs_size(plt: Any, rows: list[ResultRow], path: Path) -> Path:
 
 def _parts_table(rows: list[ResultRow]) -> list[str]:
     """Default coverage per suite part (the first 168 tasks, the grown ones) and semantics."""
+    default = default_strategy(rows)
     parts = sorted({suite_part(r) for r in rows})
     if parts == ["first"]:
         return []
@@ -109,12 +111,12 @@ def _parts_table(rows: list[ResultRow]) -> list[str]:
         for se in sorted({r.semantics for r in rows}):
             sub = [r for r in rows if suite_part(r) == part and r.semantics == se]
             n = len({r.id for r in sub})
-            lm = sum(r.status in SOLVED for r in sub if r.strategy == "landmark")
+            lm = sum(r.status in SOLVED for r in sub if r.strategy == default)
             bl = sum(r.status in SOLVED for r in sub if r.strategy == "baseline")
             skipped = sum(r.status == "not-run" for r in sub if r.strategy == "baseline")
             table.append([part, se, n, f"{lm} ({100 * lm / max(n, 1):.1f}%)", f"{bl} ({100 * bl / max(n, 1):.1f}%)",
                           skipped])
-    out.append(markdown_table(["part", "semantics", "tasks", "solved: landmark", "solved: baseline",
+    out.append(markdown_table(["part", "semantics", "tasks", f"solved: {default}", "solved: baseline",
                                "baseline not run"], table))
     return out
 
@@ -164,7 +166,8 @@ def summary_markdown(rows: list[ResultRow], time_limit: float, command: str, plo
 
 def _overview_section(rows: list[ResultRow], comps: list[Comparison], domains: list[str], time_limit: float,
                       command: str) -> list[str]:
-    """Title, how to regenerate, what the numbers mean, and the landmark-vs-baseline table per semantics."""
+    """Title, how to regenerate, what the numbers mean, and the default-vs-baseline table per semantics."""
+    default = default_strategy(rows)
     return [
         "# Excuse benchmark",
         "",
@@ -174,9 +177,9 @@ def _overview_section(rows: list[ResultRow], comps: list[Comparison], domains: l
         "and run; each run is one `guided-lfd excuse ... --json` process, as a user would start it. *Solved* = "
         "a minimal excuse found, or proved that none exists.",
         "",
-        "## Default (landmark) vs baseline (the paper's method)",
+        f"## Default ({default}) vs baseline (the paper's method)",
         "",
-        "Speed-ups are baseline time / landmark time. *search* is the excuse search itself (the engine), on "
+        f"Speed-ups are baseline time / {default} time. *search* is the excuse search itself (the engine), on "
         "the tasks both solve; the setup before it is the same code for both strategies and is excluded: "
         "parsing, grounding, invariant synthesis, compiling the relaxed excuse task and the \"already "
         "solvable?\" check (whose reachability memory the landmark search then reuses). *whole run* is the "
@@ -188,9 +191,9 @@ def _overview_section(rows: list[ResultRow], comps: list[Comparison], domains: l
         "0.1 ms count as 0.1 ms.",
         "",
         markdown_table(
-            ["semantics", "tasks", "solved: landmark", "solved: baseline", "both", "median speed-up (search)",
+            ["semantics", "tasks", f"solved: {default}", "solved: baseline", "both", "median speed-up (search)",
              "geo-mean speed-up (search)", "median speed-up (whole run)", "non-trivial tasks",
-             "median speed-up (whole run, non-trivial)", "size >= 3 solved: landmark", "size >= 3 solved: baseline",
+             "median speed-up (whole run, non-trivial)", f"size >= 3 solved: {default}", "size >= 3 solved: baseline",
              "size disagreements"],
             [[c.semantics, c.tasks, f"{c.solved_default} ({100 * c.solved_default / c.tasks:.0f}%)",
               f"{c.solved_baseline} ({100 * c.solved_baseline / c.tasks:.0f}%)", c.both, f"{c.median_speedup:.0f}x",
@@ -201,8 +204,10 @@ def _overview_section(rows: list[ResultRow], comps: list[Comparison], domains: l
 
 
 def _domain_coverage_section(rows: list[ResultRow], domains: list[str]) -> list[str]:
-    """Solved tasks per domain, for each semantics and strategy."""
-    columns = [(se, st) for se in ("literal", "consistent") for st in ("landmark", "baseline")]
+    """Solved tasks per domain, for each semantics and strategy (the default's first)."""
+    default = default_strategy(rows)
+    strategies = [default, "baseline"] + sorted({r.strategy for r in rows} - {default, "baseline"})
+    columns = [(se, st) for se in ("literal", "consistent") for st in strategies]
     coverage = []
     for dom in domains:
         ids = {r.id for r in rows if r.domain == dom}
@@ -225,14 +230,15 @@ def _size_speedup_section(rows: list[ResultRow]) -> list[str]:
 
 
 def _sizes_found_section(rows: list[ResultRow]) -> list[str]:
-    """How many minimal excuses of each size (1 to 6+) the landmark strategy found, per semantics."""
+    """How many minimal excuses of each size (1 to 6+) the default strategy found, per semantics."""
+    default = default_strategy(rows)
     sizes: dict[str, int] = {}
     for r in rows:
-        if r.strategy == "landmark" and r.status == "excuse-found":
+        if r.strategy == default and r.status == "excuse-found":
             key = size_count_key(r.size or 0)
             sizes[f"{r.semantics} {key}"] = sizes.get(f"{r.semantics} {key}", 0) + 1
     keys = list(SIZE_COUNTS)
-    return ["", "## Minimal excuse sizes found (landmark)", "",
+    return ["", f"## Minimal excuse sizes found ({default})", "",
             markdown_table(["semantics"] + keys,
                            [[se] + [sizes.get(f"{se} {k}", 0) for k in keys] for se in ("literal", "consistent")])]
 

@@ -26,7 +26,6 @@ invariant is a lightest consistent excuse.
 
 from __future__ import annotations
 
-import math
 import time
 from dataclasses import replace
 from typing import Any
@@ -42,6 +41,8 @@ SYMBOLIC_AFTER_S = 0.5
 #: :data:`WITHOUT_INVARIANTS_LEAST_S` seconds).
 WITHOUT_INVARIANTS_SHARE = 0.05
 WITHOUT_INVARIANTS_LEAST_S = 1.0
+#: What a run without a time limit counts as its time left for that share.
+WITHOUT_INVARIANTS_UNLIMITED_S = 60.0
 
 #: ``statistics.answered_by`` of an answer the search without the invariants settled.
 WITHOUT_INVARIANTS = "landmark-literal"
@@ -75,11 +76,12 @@ class PortfolioSearch:
         from guided_lfd.excuse.strategies import LandmarkSearch, SearchStopped
         from guided_lfd.symbolic.encoding import supports, worth_running
 
-        settled = without_invariants(space, limits, oracle, relaxed)
+        settled, first = without_invariants(space, limits, oracle, relaxed)
         if settled is not None:
             return settled
         if not supports(space.task) or not worth_running(space.relevant_atoms.bit_count()):
-            return _answered(LandmarkSearch().search(space, limits, progress, oracle, relaxed), "landmark")
+            outcome = LandmarkSearch().search(space, limits, progress, oracle, relaxed)
+            return _with_first(_answered(outcome, "landmark"), first)
         race = _Race(space, limits)
         try:
             try:
@@ -89,43 +91,59 @@ class PortfolioSearch:
                 return race.outcome()
             if outcome.status is ExcuseStatus.TIMEOUT and race.settled(start=False):
                 return race.outcome()  # answered as the time ran out
-            return _answered(outcome, "landmark")
+            return _with_first(_answered(outcome, "landmark"), first)
         finally:
             race.end()
 
 
-def without_invariants(space: ChangeSpace, limits: Any, oracle: Any = None, relaxed: Any = None) -> Any | None:
-    """The answer of the search without the invariants when it settles the consistent question (see the module
-    docstring), else None: no invariants to drop, that search found an excuse breaking one, ran out of its
-    share of the time, or ``--all`` / ``--slack`` want more than one lightest excuse."""
+def _with_first(outcome: Any, first: Any) -> Any:
+    """``outcome`` with the effort of the search without the invariants (``first``, None: it did not run) in its
+    counters and, on a timeout, that search's lower bound where it is the higher (it bounds both questions)."""
+    if first is None:
+        return outcome
+    outcome.extra.update(literal_expanded=first.expanded, literal_candidates=first.candidates)
+    if outcome.status is ExcuseStatus.TIMEOUT:
+        outcome.lower_bound = max(outcome.lower_bound, first.lower_bound)
+    return outcome
+
+
+def without_invariants(space: ChangeSpace, limits: Any, oracle: Any = None,
+                       relaxed: Any = None) -> tuple[Any | None, Any | None]:
+    """(the answer, None) when the search without the invariants settles the consistent question (see the
+    module docstring), else (None, that search's outcome, or None where it did not run: no invariants to
+    drop, or ``--all`` / ``--slack`` want more than one lightest excuse).
+
+    It settles it by proving that no excuse exists at all (none within ``--max-size`` would answer less than
+    the consistent search may) or by a lightest excuse that keeps every invariant.
+    """
     from guided_lfd.excuse.lmcut import RelaxedExcuseTask
     from guided_lfd.excuse.reach import ReachabilityOracle
     from guided_lfd.excuse.strategies import LandmarkSearch, clock
 
     if not space.groups or limits.all_minimal or limits.slack:
-        return None
+        return None, None
     literal = replace(space, semantics=Semantics.LITERAL, groups=[], groups_of={})
-    left = math.inf if limits.deadline is None else limits.deadline - clock()
-    until = clock() + max(WITHOUT_INVARIANTS_LEAST_S, WITHOUT_INVARIANTS_SHARE * left)
-    if limits.deadline is not None:
-        until = min(until, limits.deadline)
+    now = clock()
+    left = WITHOUT_INVARIANTS_UNLIMITED_S if limits.deadline is None else limits.deadline - now
+    # Its share, at least a second, but never most of a short run.
+    until = now + min(max(WITHOUT_INVARIANTS_LEAST_S, WITHOUT_INVARIANTS_SHARE * left), left / 4)
     oracle = oracle or ReachabilityOracle(space, limits.deadline)
     relaxed = (relaxed or RelaxedExcuseTask(space)).without_invariants(literal)
     hard = oracle.deadline
-    # The oracle reads time.monotonic(), the searches' clock too.
-    oracle.deadline = until if hard is None else min(hard, until)
+    # The oracle reads time.monotonic(): the time left in its terms (a test's clock() may tick otherwise).
+    soft = time.monotonic() + max(0.0, until - now)
+    oracle.deadline = soft if hard is None else min(hard, soft)
     try:
         outcome = LandmarkSearch().search(literal, replace(limits, deadline=until, probe=None, stop=None),
                                           oracle=oracle, relaxed=relaxed)
     finally:
         oracle.deadline = hard
-    if outcome.status in (ExcuseStatus.NONE, ExcuseStatus.NONE_WITHIN_SIZE):
-        return _answered(outcome, WITHOUT_INVARIANTS)
-    if outcome.status is ExcuseStatus.FOUND and all(space.consistent(space.task.init ^ c)
-                                                       for c in outcome.solutions[:1]):
+    if outcome.status is ExcuseStatus.NONE:
+        return _answered(outcome, WITHOUT_INVARIANTS), None
+    if outcome.status is ExcuseStatus.FOUND and space.consistent(space.task.init ^ outcome.solutions[0]):
         outcome.solutions = outcome.solutions[:1]
-        return _answered(outcome, WITHOUT_INVARIANTS)
-    return None
+        return _answered(outcome, WITHOUT_INVARIANTS), None
+    return None, outcome
 
 
 class _Race:

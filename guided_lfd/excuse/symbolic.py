@@ -9,9 +9,10 @@ state (:mod:`guided_lfd.symbolic.nearest`), in the order of the searches'
 weight (cost first, size second).  No candidate is checked on its own.
 
 The variables are the relevant atoms and, under the consistent semantics,
-the atoms sharing an invariant group with them (repairing a group can need
-a change to an atom no action reads).  The diagram library is imported here,
-when this strategy runs, and nowhere else on an excuse run.
+the atoms of their invariant groups that repairing a group can need to
+change though no action reads them (:func:`excuse_atoms`).  The diagram
+library is imported here, when this strategy runs, and nowhere else on an
+excuse run.
 """
 
 from __future__ import annotations
@@ -31,11 +32,14 @@ def excuse_atoms(space: ChangeSpace) -> set[int]:
     """The atoms the symbolic search keeps as variables: the relevant ones, and what repairing their groups
     may need.
 
-    Changing an atom the goal does not depend on only helps by repairing a group, and leaving it out of an
-    excuse keeps every at-most-one group and every other group it is in: so of a group with a variable, only
-    its atoms true initially (a change may have to remove them) and, when exactly one of its atoms must hold,
-    all of them (a change may have to add one) can be in a minimal excuse.  Repeated until nothing is added;
-    every other atom keeps its initial value (false: all the true ones in a group with a variable are kept).
+    The set A grows from the relevant atoms: a group with an atom in A adds its atoms true initially and, when
+    exactly one of its atoms must hold, all of them; until nothing is added.  Undoing all of a consistent
+    excuse's changes outside A at once leaves an excuse no heavier: the goal does not depend on those atoms; a
+    group with an atom in A has its atoms outside A false again (its initially true ones are in A), so at most
+    one holds where at most one did, and an exactly-one group lies wholly in A; a group with no atom in A
+    is back at its initial atoms, which keep it (the synthesised groups are those the initial state keeps).
+    So every minimal excuse changes atoms of A only, and every other atom keeps its initial value (false, in
+    a group with an atom in A).
     """
     init = space.task.init
     atoms = set(bits(space.relevant_atoms))
@@ -74,8 +78,9 @@ class SymbolicRun:
         sym, space, task = self.sym, self.space, self.space.task
         self.layers = backward_layers(sym, deadline=self.deadline)
         states = self.layers.reached & ~sym.goal()
-        # A group with no variable keeps its initial atoms, which keep it (groups are closed over: each is
-        # wholly a variable group or wholly not one).
+        # A group with no variable keeps its initial atoms, which keep it; one with a variable has its other
+        # atoms false (excuse_atoms took its true ones, and all of an exactly-one group), as the diagram's
+        # at_most_one reads atoms that are no variables.
         variables = sum(1 << atom for atom in sym.atoms)
         kept = [(g.mask, g.exactly_one) for g in space.groups if g.mask & variables]
         if kept:
