@@ -115,8 +115,6 @@ class RelaxedExcuseTask:
         if not self.small:  # the numpy versions of the tables above
             self.goal = np.array(self.goal_list, dtype=np.int64)
             self.changeable = bitmask_to_array(space.changeable, self.n_atoms)
-            self.group_facts = [np.array(f, dtype=np.int64) for f in self.group_fact_lists]
-            self.fact_weight = np.array(self.fact_weight_list, dtype=np.float64)
 
     def without_invariants(self, space: ChangeSpace) -> RelaxedExcuseTask:
         """This relaxed task for ``space``: the same task, relevance and changeable atoms without the mutex
@@ -125,9 +123,6 @@ class RelaxedExcuseTask:
         other.space = space
         other._first_hmax = None
         other._group_charges_tables(space)
-        if not other.small:
-            other.group_facts = []
-            other.fact_weight = np.array(other.fact_weight_list, dtype=np.float64)
         return other
 
     def _facts_and_actions(self, space: ChangeSpace) -> tuple[list[list[int]], list[list[int]]]:
@@ -200,6 +195,9 @@ class RelaxedExcuseTask:
         self.group_fact_lists = [[pos_id[i] for i in bits(mask) if i in pos_id] for mask in self.groups]
         # Only the facts' weights matter (the task may have many irrelevant atoms).
         self.fact_weight_list = [float(space.weights.get(a, 0) * self.scale) for a in self.fact_atom_list]
+        if not self.small:  # their numpy versions
+            self.group_facts = [np.array(f, dtype=np.int64) for f in self.group_fact_lists]
+            self.fact_weight = np.array(self.fact_weight_list, dtype=np.float64)
 
     def _initial_lists(self, state: int, changes: int) -> tuple[list[bool], list[float]]:
         """:meth:`_initial` on plain lists, for small tasks (no numpy call overhead).

@@ -73,9 +73,14 @@ class PortfolioSearch:
                oracle: Any = None, relaxed: Any = None) -> Any:
         """The first exact outcome of the two searches (the landmark search's alone on a task that is no STRIPS
         task or is wider than the symbolic engine's default limit, :data:`~guided_lfd.symbolic.encoding.DEFAULT_MAX_VARIABLES`)."""
+        from guided_lfd.excuse.lmcut import RelaxedExcuseTask
+        from guided_lfd.excuse.reach import ReachabilityOracle
         from guided_lfd.excuse.strategies import LandmarkSearch, SearchStopped
         from guided_lfd.symbolic.encoding import supports, worth_running
 
+        # One oracle (and its memory of dead states) and one compiled relaxed task for every search here.
+        oracle = oracle or ReachabilityOracle(space, limits.deadline)
+        relaxed = relaxed or RelaxedExcuseTask(space)
         settled, first = without_invariants(space, limits, oracle, relaxed)
         if settled is not None:
             return settled
@@ -107,18 +112,16 @@ def _with_first(outcome: Any, first: Any) -> Any:
     return outcome
 
 
-def without_invariants(space: ChangeSpace, limits: Any, oracle: Any = None,
-                       relaxed: Any = None) -> tuple[Any | None, Any | None]:
+def without_invariants(space: ChangeSpace, limits: Any, oracle: Any, relaxed: Any) -> tuple[Any | None, Any | None]:
     """(the answer, None) when the search without the invariants settles the consistent question (see the
     module docstring), else (None, that search's outcome, or None where it did not run: no invariants to
-    drop, or ``--all`` / ``--slack`` want more than one lightest excuse).
+    drop, or ``--all`` / ``--slack`` want more than one lightest excuse).  ``oracle`` and ``relaxed`` are the
+    consistent search's (the relaxed task is copied without its invariants).
 
     It settles it by proving that no excuse exists at all (none within ``--max-size`` would answer less than
     the consistent search may) or by a lightest excuse that keeps every invariant.
     """
-    from guided_lfd.excuse.lmcut import RelaxedExcuseTask
-    from guided_lfd.excuse.reach import ReachabilityOracle
-    from guided_lfd.excuse.strategies import LandmarkSearch, clock
+    from guided_lfd.excuse.strategies import LandmarkSearch, clock, oracle_until
 
     if not space.groups or limits.all_minimal or limits.slack:
         return None, None
@@ -127,17 +130,9 @@ def without_invariants(space: ChangeSpace, limits: Any, oracle: Any = None,
     left = WITHOUT_INVARIANTS_UNLIMITED_S if limits.deadline is None else limits.deadline - now
     # Its share, at least a second, but never most of a short run.
     until = now + min(max(WITHOUT_INVARIANTS_LEAST_S, WITHOUT_INVARIANTS_SHARE * left), left / 4)
-    oracle = oracle or ReachabilityOracle(space, limits.deadline)
-    relaxed = (relaxed or RelaxedExcuseTask(space)).without_invariants(literal)
-    hard = oracle.deadline
-    # The oracle reads time.monotonic(): the time left in its terms (a test's clock() may tick otherwise).
-    soft = time.monotonic() + max(0.0, until - now)
-    oracle.deadline = soft if hard is None else min(hard, soft)
-    try:
+    with oracle_until(oracle, until):
         outcome = LandmarkSearch().search(literal, replace(limits, deadline=until, probe=None, stop=None),
-                                          oracle=oracle, relaxed=relaxed)
-    finally:
-        oracle.deadline = hard
+                                          oracle=oracle, relaxed=relaxed.without_invariants(literal))
     if outcome.status is ExcuseStatus.NONE:
         return _answered(outcome, WITHOUT_INVARIANTS), None
     if outcome.status is ExcuseStatus.FOUND and space.consistent(space.task.init ^ outcome.solutions[0]):

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import heapq
 import time
+from contextlib import contextmanager
 from dataclasses import dataclass, field, replace
 from typing import Callable, Iterator, Protocol
 
@@ -36,6 +37,20 @@ def clock() -> float:
     number of checks, whatever the machine's speed.
     """
     return time.monotonic()
+
+
+@contextmanager
+def oracle_until(oracle: ReachabilityOracle, until: float) -> Iterator[None]:
+    """Within the block, ``oracle`` gives up by ``until`` (a :func:`clock` value) or its own deadline, the
+    earlier; its own deadline again after."""
+    hard = oracle.deadline
+    # The oracle reads time.monotonic(): the time left, in its terms (a test's clock() may tick otherwise).
+    soft = time.monotonic() + max(0.0, until - clock())
+    oracle.deadline = soft if hard is None else min(hard, soft)
+    try:
+        yield
+    finally:
+        oracle.deadline = hard
 
 
 @dataclass
@@ -245,21 +260,17 @@ class _LandmarkRun:
             progress.phase("probing for any excuse")
         limits = replace(self.limits, all_minimal=False, deadline=probe.until, probe=None)
         greedy = _LandmarkRun(self.space, limits, self.relaxed, self.oracle, greedy=True)
-        oracle, hard = self.oracle, self.oracle.deadline
-        # The oracle reads time.monotonic(): the probe's time left, in its terms.
-        until = time.monotonic() + max(0.0, probe.until - clock())
-        oracle.deadline = until if hard is None else min(hard, until)
         found = None
         try:
-            greedy.loop(None)
-            if greedy.solutions:
-                found = greedy.solutions[0], greedy.plans[greedy.solutions[0]]
-                found = self.trimmed(*found, probe.until)
+            with oracle_until(self.oracle, probe.until):
+                greedy.loop(None)
+                if greedy.solutions:
+                    found = greedy.solutions[0], greedy.plans[greedy.solutions[0]]
+                    found = self.trimmed(*found, probe.until)
         except SearchTimeout:
             if _timed_out(self.limits):
                 raise  # the run's time is up, not only the probe's
         finally:
-            oracle.deadline = hard
             self.probe_expanded = greedy.expanded
         if progress is not None:
             progress.phase("searching")
