@@ -152,3 +152,26 @@ def test_a_wide_pair_check_is_built_in_its_slices_and_a_stopped_build_goes_on(mo
         pass
     assert (pairs.pre_masks, pairs.add_masks, pairs.del_masks) == (eager.pre_masks, eager.add_masks,
                                                                     eager.del_masks)
+
+
+def test_alternating_queues_take_turns_and_a_boost_gives_the_preferred_queue_its_turns_first():
+    """Fast Downward's alternation: turns between the queues, and PREFERRED_BOOST preferred pops after a boost."""
+    queues = reach.AlternatingQueues()
+    for k in range(reach.PREFERRED_BOOST + 10):
+        queues.push(5, ("every", k), False)
+        queues.push(5, ("preferred", k), True)
+    assert [queues.pop()[0] for _ in range(4)] == ["every", "preferred", "every", "preferred"]
+    queues.boost()
+    taken = [queues.pop()[0] for _ in range(reach.PREFERRED_BOOST + 2)]
+    assert taken[:reach.PREFERRED_BOOST] == ["preferred"] * reach.PREFERRED_BOOST
+    assert taken[reach.PREFERRED_BOOST:] == ["every", "preferred"]
+
+
+def test_alternating_queues_order_by_value_then_first_in_and_skip_an_empty_queue():
+    queues = reach.AlternatingQueues()
+    queues.push(3, "c", False)
+    queues.push(1, "a", False)
+    queues.push(1, "b", False)
+    queues.boost()  # a boost with an empty preferred queue takes nothing from the other
+    assert [queues.pop() for _ in range(3)] == ["a", "b", "c"]
+    assert not queues

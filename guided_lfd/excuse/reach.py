@@ -52,6 +52,9 @@ PAIR_CHECK_FIRST_S = 0.02
 #: task of the excuse suite); a wider one is built inside its slices, so a candidate that the
 #: hill-climb confirms first never pays for it (a house of hundreds of items: gigabytes, seconds).
 PAIR_CHECK_EAGER_BYTES = 256 * 2**20
+#: Turns the helpful-action queue of the h^FF search gets first after each new best heuristic value
+#: (Fast Downward's ``boost`` of ``lazy_greedy``, the same number).
+PREFERRED_BOOST = 1000
 #: Time a portfolio member runs before the member with the least time so far
 #: takes its turn.
 PORTFOLIO_SLICE_S = 0.02
@@ -315,16 +318,14 @@ class ReachabilityOracle:
         """
         ff = self.relaxed_task()
         parents: dict[int, tuple[int, GroundAction] | None] = {}
-        queues: list[list[tuple[int, int, int, tuple[int, GroundAction] | None]]] = [[(0, 0, start, None)], []]
+        queues = AlternatingQueues()
+        queues.push(0, (start, None), False)
         goal_pos, goal_neg, mask = self.goal_pos, self.goal_neg, self.mask
         alive, dead, actions = self.alive, self.dead, self.actions
-        counter = turn = 0
-        pop, push = heapq.heappop, heapq.heappush
+        best_h: int | None = None
         try:
-            while queues[0] or queues[1]:
-                turn ^= 1
-                queue = queues[1] if (turn and queues[1]) or not queues[0] else queues[0]
-                _, _, s, parent = pop(queue)
+            while queues:
+                s, parent = queues.pop()
                 if s in parents:
                     continue
                 parents[s] = parent
@@ -338,16 +339,18 @@ class ReachabilityOracle:
                     dead.add(s)
                     continue
                 h = len(relaxed[0])
+                if best_h is None or h < best_h:
+                    if best_h is not None:
+                        queues.boost()
+                    best_h = h
                 for act, t in self._successors(s):
                     if t not in parents and t not in dead:
-                        counter += 1
-                        push(queues[0], (h, counter, t, (s, act)))
+                        queues.push(h, (t, (s, act)), False)
                 for ai in ff.helpful(s, relaxed[1]):
                     act = actions[ai]
                     t = (s & ~act.delete) | (act.add & mask)
                     if t not in parents and t not in dead:
-                        counter += 1
-                        push(queues[1], (h, counter, t, (s, act)))
+                        queues.push(h, (t, (s, act)), True)
             return "dead", parents
         finally:
             self.stats.expanded += len(parents)  # the states it expanded (or met alive)
@@ -406,6 +409,42 @@ class ReachabilityOracle:
         finally:
             self.stats.memo_hits += memo_hits
             self.stats.expanded += expanded
+
+
+class AlternatingQueues:
+    """Two priority queues of a greedy search, all successors in one and the preferred (helpful) ones in the
+    other, taken in turns as by Fast Downward's alternation open list: the queue taken least often goes next
+    (ties: the first), and :meth:`boost` gives the preferred queue :data:`PREFERRED_BOOST` turns first.  Within
+    a queue, the lowest value first, then first in, first out.
+
+    The boost on each new best heuristic value is what makes the helpful actions pay: without it, a depot
+    candidate with 15 crates and a hoist at every place is not solved in 100 s by Fast Downward itself, with
+    it in 2,172 states.
+    """
+
+    def __init__(self) -> None:
+        self.queues: tuple[list[tuple[int, int, Any]], list[tuple[int, int, Any]]] = ([], [])
+        self.turns = [0, 0]
+        self.count = 0
+
+    def __bool__(self) -> bool:
+        return bool(self.queues[0] or self.queues[1])
+
+    def push(self, value: int, entry: Any, preferred: bool) -> None:
+        """Queue ``entry`` with ``value`` (in the preferred queue when ``preferred``)."""
+        self.count += 1
+        heapq.heappush(self.queues[preferred], (value, self.count, entry))
+
+    def pop(self) -> Any:
+        """The next entry: from the queue taken least often so far that has one."""
+        every, preferred = self.queues
+        side = 0 if not preferred or (every and self.turns[0] <= self.turns[1]) else 1
+        self.turns[side] += 1
+        return heapq.heappop(self.queues[side])[2]
+
+    def boost(self) -> None:
+        """Give the preferred queue the next :data:`PREFERRED_BOOST` turns (progress was made)."""
+        self.turns[1] -= PREFERRED_BOOST
 
 
 def _path(parents: dict[int, tuple[int, GroundAction] | None], end: int) -> list[tuple[int, GroundAction, int]]:

@@ -62,6 +62,10 @@ class RelaxedTask:
         add.append([1])
         self.pre, self.add = pre, add
         self.base_costs = [*(costs if costs is not None else [a.cost for a in self.actions]), 0]
+        self._n_pre = [len(p) for p in pre]  # copied per evaluation (cheaper than counting again)
+        #: An applicable action adds only facts of h^add at most its cost: the needed facts above this
+        #: have no applicable achiever, so helpful actions never look at them.
+        self._max_cost = max(self.base_costs)
         self.prec_of: list[list[int]] = [[] for _ in range(self.n_facts)]
         self.achievers: list[list[int]] = [[] for _ in range(self.n_facts)]
         for ai, p in enumerate(pre):
@@ -168,12 +172,13 @@ class RelaxedTask:
                 cost[ai] -= m
 
     def relaxed_plan(self, state: int) -> tuple[list[int], set[int]] | None:
-        """(relaxed plan as action indices, facts it needs that ``state`` lacks); None = relaxed dead end."""
+        """(relaxed plan as action indices, the facts it needs that an action applicable in ``state`` may
+        add); None = relaxed dead end."""
         true = self._true_facts(state)
         n_actions = len(self.pre)
         h = [INF] * self.n_facts
         best = [-1] * self.n_facts
-        unsat = [len(p) for p in self.pre]
+        unsat = self._n_pre[:]
         acc = [0.0] * n_actions
         for f in true:
             h[f] = 0
@@ -217,7 +222,8 @@ class RelaxedTask:
         goal_action = n_actions - 1
         chosen.discard(goal_action)
         needed.discard(1)
-        return sorted(chosen), needed
+        most = self._max_cost
+        return sorted(chosen), {q for q in needed if h[q] <= most}
 
     def helpful(self, state: int, needed: set[int]) -> list[int]:
         """Actions applicable in ``state`` that add a fact the relaxed plan needs (FF's helpful actions).
