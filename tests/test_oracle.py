@@ -175,3 +175,27 @@ def test_alternating_queues_order_by_value_then_first_in_and_skip_an_empty_queue
     queues.boost()  # a boost with an empty preferred queue takes nothing from the other
     assert [queues.pop() for _ in range(3)] == ["a", "b", "c"]
     assert not queues
+
+
+@settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow, HealthCheck.function_scoped_fixture])
+@given(pddl=small_tasks())
+def test_helpful_actions_are_the_applicable_achievers_of_every_fact_the_relaxed_plan_needs(tmp_path_factory, pddl):
+    """The needed facts are cut to those an applicable action can add (h^add at most the dearest action's cost):
+    the helpful actions are still every applicable action adding a precondition or goal fact of the relaxed plan
+    that the state lacks, from every state of a random task."""
+    domain, problem = _parse_random(tmp_path_factory, "helpful", pddl)
+    oracle = _oracle(domain, problem)
+    relaxed = oracle.relaxed_task()
+    true_fact = 0
+    for state in _every_state(oracle.space.task):
+        state &= oracle.mask
+        found = relaxed.relaxed_plan(state)
+        if found is None:
+            continue
+        plan, needed = found
+        holds = set(relaxed._true_facts(state))
+        wanted = {f for ai in [*plan, len(relaxed.pre) - 1] for f in relaxed.pre[ai]} - holds - {true_fact}
+        reference = {ai for ai, act in enumerate(relaxed.actions)
+                     if (state & act.pre_pos) == act.pre_pos and not state & act.pre_neg
+                     and wanted & set(relaxed.add[ai])}
+        assert set(relaxed.helpful(state, needed)) == reference

@@ -19,8 +19,9 @@ excuse search:
 * what is still undecided goes to a portfolio run in turns: greedy
   best-first search on the number of unsatisfied goal atoms (cheap per
   state: it refutes by exhausting the states), lazy greedy search on h^FF
-  with helpful actions (it confirms plans where the goal count wanders
-  plateaus of interchangeable objects), and the rest of the h^2 check on a
+  with helpful actions, boosted as Fast Downward boosts them (it confirms
+  plans where the goal count wanders plateaus of interchangeable objects),
+  and the rest of the h^2 check on a
   large task.  Both searches are complete (duplicate detection, finite
   space); the first to decide answers.
 """
@@ -312,7 +313,8 @@ class ReachabilityOracle:
 
         Lazy, as Fast Downward's ``lazy_greedy``: a state is evaluated when it
         is expanded, its successors queued with its value; helpful successors
-        also enter a second queue, and the two queues take turns.  States the
+        also enter a second queue, and the two queues take turns, the helpful
+        one boosted on progress (:class:`AlternatingQueues`).  States the
         relaxation proves dead are pruned and remembered.  Complete: when both
         queues run dry, every state reached is dead.
         """
