@@ -98,9 +98,8 @@ def _time_vs_size(plt: Any, rows: list[ResultRow], path: Path) -> Path:
     return save_figure(fig, path, DPI)
 
 
-def _parts_table(rows: list[ResultRow]) -> list[str]:
+def _parts_table(rows: list[ResultRow], default: str) -> list[str]:
     """Default coverage per suite part (the first 168 tasks, the grown ones) and semantics."""
-    default = default_strategy(rows)
     parts = sorted({suite_part(r) for r in rows})
     if parts == ["first"]:
         return []
@@ -151,13 +150,14 @@ def _limit_section(rows: list[ResultRow], time_limit: float) -> list[str]:
 def summary_markdown(rows: list[ResultRow], time_limit: float, command: str, plots: list[Path] | None,
                      base: Path) -> str:
     """The markdown summary: coverage table, speed-ups, agreement, plots (None: skipped, the section says so)."""
-    comps = compare(rows, time_limit=time_limit)
+    default = default_strategy(rows)  # counted once: every section compares the same strategy
+    comps = compare(rows, time_limit=time_limit, default=default)
     domains = sorted({r.domain for r in rows})
-    lines = _overview_section(rows, comps, domains, time_limit, command)
-    lines += _parts_table(rows) + _limit_section(rows, time_limit)
-    lines += _domain_coverage_section(rows, domains)
-    lines += _size_speedup_section(rows)
-    lines += _sizes_found_section(rows)
+    lines = _overview_section(rows, comps, domains, time_limit, command, default)
+    lines += _parts_table(rows, default) + _limit_section(rows, time_limit)
+    lines += _domain_coverage_section(rows, domains, default)
+    lines += _size_speedup_section(rows, default)
+    lines += _sizes_found_section(rows, default)
     lines += _agreement_section(comps)
     lines += _validation_section(rows)
     lines += [""] + plots_markdown(plots, base)
@@ -165,9 +165,8 @@ def summary_markdown(rows: list[ResultRow], time_limit: float, command: str, plo
 
 
 def _overview_section(rows: list[ResultRow], comps: list[Comparison], domains: list[str], time_limit: float,
-                      command: str) -> list[str]:
+                      command: str, default: str) -> list[str]:
     """Title, how to regenerate, what the numbers mean, and the default-vs-baseline table per semantics."""
-    default = default_strategy(rows)
     return [
         "# Excuse benchmark",
         "",
@@ -203,9 +202,8 @@ def _overview_section(rows: list[ResultRow], comps: list[Comparison], domains: l
     ]
 
 
-def _domain_coverage_section(rows: list[ResultRow], domains: list[str]) -> list[str]:
+def _domain_coverage_section(rows: list[ResultRow], domains: list[str], default: str) -> list[str]:
     """Solved tasks per domain, for each semantics and strategy (the default's first)."""
-    default = default_strategy(rows)
     strategies = [default, "baseline"] + sorted({r.strategy for r in rows} - {default, "baseline"})
     columns = [(se, st) for se in ("literal", "consistent") for st in strategies]
     coverage = []
@@ -218,9 +216,9 @@ def _domain_coverage_section(rows: list[ResultRow], domains: list[str]) -> list[
             markdown_table(["domain", "tasks"] + [f"{st} {se}" for se, st in columns], coverage)]
 
 
-def _size_speedup_section(rows: list[ResultRow]) -> list[str]:
+def _size_speedup_section(rows: list[ResultRow], default: str) -> list[str]:
     """Median search speed-up per minimal excuse size bucket and semantics."""
-    by_size = speedups_by_size(rows)
+    by_size = speedups_by_size(rows, default)
     return ["", "## Median search speed-up by minimal excuse size", "",
             "On the tasks both strategies solve; each cell is the median and, in brackets, the number of tasks.",
             "", markdown_table(
@@ -229,9 +227,8 @@ def _size_speedup_section(rows: list[ResultRow]) -> list[str]:
                          for b in SIZE_BUCKETS] for se in sorted(by_size)])]
 
 
-def _sizes_found_section(rows: list[ResultRow]) -> list[str]:
+def _sizes_found_section(rows: list[ResultRow], default: str) -> list[str]:
     """How many minimal excuses of each size (1 to 6+) the default strategy found, per semantics."""
-    default = default_strategy(rows)
     sizes: dict[str, int] = {}
     for r in rows:
         if r.strategy == default and r.status == "excuse-found":
