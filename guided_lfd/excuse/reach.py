@@ -21,9 +21,8 @@ excuse search:
   state: it refutes by exhausting the states), lazy greedy search on h^FF
   with helpful actions, boosted as Fast Downward boosts them (it confirms
   plans where the goal count wanders plateaus of interchangeable objects),
-  and the rest of the h^2 check on a
-  large task.  Both searches are complete (duplicate detection, finite
-  space); the first to decide answers.
+  and the rest of the h^2 check on a large task.  Both searches are
+  complete (duplicate detection, finite space); the first to decide answers.
 """
 
 from __future__ import annotations

@@ -62,7 +62,7 @@ class RelaxedTask:
         add.append([1])
         self.pre, self.add = pre, add
         self.base_costs = [*(costs if costs is not None else [a.cost for a in self.actions]), 0]
-        self._n_pre = [len(p) for p in pre]  # copied per evaluation (cheaper than counting again)
+        self._n_pre = [len(p) for p in pre]  # copied per h^max / h^add pass (cheaper than counting again)
         #: An applicable action adds only facts of h^add at most its cost: the needed facts above this
         #: have no applicable achiever, so helpful actions never look at them.
         self._max_cost = max(self.base_costs)
@@ -91,7 +91,7 @@ class RelaxedTask:
         """h^max of every fact and each reached action's precondition choice (-1 = not reached)."""
         n_actions = len(self.pre)
         h = [INF] * self.n_facts
-        unsat = [len(p) for p in self.pre]
+        unsat = self._n_pre[:]
         pcf = [-1] * n_actions
         heap: list[tuple[float, int]] = []
         for f in true:
