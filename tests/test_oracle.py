@@ -199,3 +199,75 @@ def test_helpful_actions_are_the_applicable_achievers_of_every_fact_the_relaxed_
                      if (state & act.pre_pos) == act.pre_pos and not state & act.pre_neg
                      and wanted & set(relaxed.add[ai])}
         assert set(relaxed.helpful(state, needed)) == reference
+
+
+@settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow, HealthCheck.function_scoped_fixture])
+@given(pddl=small_tasks())
+def test_the_relaxed_plan_lists_each_action_after_those_adding_its_preconditions(tmp_path_factory, pddl):
+    """In h^add's order a relaxed plan runs as it stands in the relaxation (unit costs), from every state."""
+    domain, problem = _parse_random(tmp_path_factory, "order", pddl)
+    oracle = _oracle(domain, problem)
+    relaxed = oracle.relaxed_task()
+    for state in _every_state(oracle.space.task):
+        found = relaxed.relaxed_plan(state & oracle.mask)
+        if found is None:
+            continue
+        holds = set(relaxed._true_facts(state & oracle.mask))
+        for ai in [*found[0], len(relaxed.pre) - 1]:
+            assert set(relaxed.pre[ai]) <= holds
+            holds.update(relaxed.add[ai])
+
+
+@settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow, HealthCheck.function_scoped_fixture])
+@given(pddl=small_tasks())
+def test_the_lookahead_applies_relaxed_plan_actions_until_none_applies(tmp_path_factory, pddl):
+    """Its steps chain real transitions, each a relaxed plan action used once, and none of the rest applies after."""
+    domain, problem = _parse_random(tmp_path_factory, "ahead", pddl)
+    oracle = _oracle(domain, problem)
+    for state in _every_state(oracle.space.task):
+        state &= oracle.mask
+        found = oracle.relaxed_task().relaxed_plan(state)
+        if found is None:
+            continue
+        end, steps = oracle._lookahead(state, found[0])
+        s = state
+        used = []
+        for before, act, after in steps:
+            assert before == s and act.applicable(s) and after == act.apply(s) & oracle.mask != s
+            used.append(oracle.actions.index(act))
+            s = after
+        assert end == s and len(set(used)) == len(used) and set(used) <= set(found[0])
+        assert not any(oracle.actions[ai].applicable(end) for ai in found[0] if ai not in used
+                       and oracle.actions[ai].apply(end) & oracle.mask != end)
+
+
+def _ff_search_to_the_end(oracle: ReachabilityOracle, state: int):
+    search = oracle._ff_search(state & oracle.mask)
+    while True:
+        try:
+            next(search)
+        except StopIteration as done:
+            return done.value
+
+
+def test_one_lookahead_reaches_the_goal_where_every_relaxed_plan_is_a_plan(monkeypatch):
+    """Six independent errands: the start and the lookahead's state (the goal) are all the h^FF search meets;
+    without the lookahead it steps one action at a time."""
+    domain, problem = parse_task(DATA / "errands-domain.pddl", DATA / "errands-problem.pddl")
+    oracle = _oracle(domain, problem)
+    kind, (steps, _end) = _ff_search_to_the_end(oracle, oracle.space.task.init)
+    assert kind == "plan" and len(steps) == 12 and oracle.stats.expanded == 2
+    monkeypatch.setattr(ReachabilityOracle, "_lookahead", lambda self, s, plan: (s, ()))
+    oracle = _oracle(domain, problem)
+    kind, (steps, _end) = _ff_search_to_the_end(oracle, oracle.space.task.init)
+    assert kind == "plan" and len(steps) == 12 and oracle.stats.expanded == 13
+
+
+def test_the_lookahead_takes_an_action_harmless_to_the_rest_of_the_plan_first():
+    """The courier takes p1 (every take and walk deletes what another needs; the first in order goes), walks to
+    h1 and puts it down at once (harmless), before anything else."""
+    domain, problem = parse_task(DATA / "parcels-domain.pddl", DATA / "parcels-problem.pddl")
+    oracle = _oracle(domain, problem)
+    start = oracle.space.task.init & oracle.mask
+    _end, steps = oracle._lookahead(start, oracle.relaxed_task().relaxed_plan(start)[0])
+    assert [act.name for _, act, _ in steps] == ["(take p1 depot)", "(walk depot h1)", "(put p1 h1)"]

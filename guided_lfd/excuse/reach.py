@@ -15,12 +15,14 @@ excuse search:
   searching (an instrument calibrated but not powered on stays so);
 * on large tasks it then hill-climbs on h^FF with helpful actions (a plan
   in about plan-length heuristic evaluations; a relaxed dead end proves the
-  goal unreachable at once);
+  goal unreachable at once), trying first the state the relaxed plan itself
+  leads to (Vidal's lookahead);
 * what is still undecided goes to a portfolio run in turns: greedy
   best-first search on the number of unsatisfied goal atoms (cheap per
   state: it refutes by exhausting the states), lazy greedy search on h^FF
-  with helpful actions, boosted as Fast Downward boosts them (it confirms
-  plans where the goal count wanders plateaus of interchangeable objects),
+  with helpful actions, boosted as Fast Downward boosts them, and each
+  state's lookahead taken next (it confirms plans where the goal count
+  wanders plateaus of interchangeable objects),
   and the rest of the h^2 check on a large task.  Both searches are
   complete (duplicate detection, finite space); the first to decide answers.
 """
@@ -152,7 +154,8 @@ class ReachabilityOracle:
         first = ff.relaxed_plan(start)
         if first is None:
             return None
-        h, needed = len(first[0]), first[1]
+        rplan, needed = first
+        h = len(rplan)
         budget = HILL_CLIMB_EVALUATIONS + 4 * h
         evaluations = 1
         path: list[tuple[int, GroundAction, int]] = []
@@ -163,6 +166,14 @@ class ReachabilityOracle:
             frontier = deque([(s, needed, ())])
             seen = {s}
             improved = None
+            ahead, chain = self._lookahead(s, rplan)
+            if chain and ahead not in self.dead:  # the relaxed plan's state first: often a better one
+                if ahead in self.alive or not (goal_pos & ~ahead or goal_neg & ahead):
+                    return path + list(chain)
+                evaluations += 1
+                result = ff.relaxed_plan(ahead)
+                if result is not None and len(result[0]) < h:
+                    improved = (ahead, result, chain)
             while frontier and improved is None:
                 u, u_needed, u_steps = frontier.popleft()
                 for ai in ff.helpful(u, u_needed):
@@ -344,6 +355,9 @@ class ReachabilityOracle:
                     if best_h is not None:
                         queues.boost()
                     best_h = h
+                ahead, chain = self._lookahead(s, relaxed[0])
+                if chain and ahead not in parents and ahead not in dead:  # value 0: taken next, as YAHSP does
+                    queues.push(0, (ahead, (s, chain)), True)
                 for act, t in self._successors(s):
                     if t not in parents and t not in dead:
                         queues.push(h, (t, (s, act)), False)
@@ -355,6 +369,42 @@ class ReachabilityOracle:
             return "dead", parents
         finally:
             self.stats.expanded += len(parents)  # the states it expanded (or met alive)
+
+    def _lookahead(self, s: int, plan: list[int]) -> tuple[int, tuple[tuple[int, GroundAction, int], ...]]:
+        """The state reached by applying the relaxed plan's actions while any applies (Vidal's lookahead, YAHSP).
+
+        Each step applies the first applicable action of the plan (in h^add order) that deletes nothing
+        another of its actions still needs, or else the first applicable one; each action once.  Returns
+        that state and the steps to it (none when nothing applies).  Where the relaxed plan is mostly a real
+        one (transport, depot), its state is many steps ahead for one evaluation.
+        """
+        actions, mask = self.actions, self.mask
+        todo = [actions[ai] for ai in plan]
+        steps: list[tuple[int, GroundAction, int]] = []
+        while todo:
+            after = [0] * (len(todo) + 1)  # after[k]: what the actions after the k-th need
+            for k in range(len(todo) - 1, -1, -1):
+                after[k] = after[k + 1] | todo[k].pre_pos
+            before = 0
+            harmless = first = None
+            for k, act in enumerate(todo):
+                others = before | after[k + 1]
+                before |= act.pre_pos
+                if (s & act.pre_pos) == act.pre_pos and not s & act.pre_neg:
+                    if not act.delete & others & s:
+                        harmless = k
+                        break
+                    if first is None:
+                        first = k
+            k = harmless if harmless is not None else first
+            if k is None:
+                break
+            act = todo.pop(k)
+            t = (s & ~act.delete) | (act.add & mask)
+            if t != s:
+                steps.append((s, act, t))
+                s = t
+        return s, tuple(steps)
 
     def _goal_count_search(self, start: int) -> Generator[None, None, tuple[str, Any]]:
         """Greedy best-first search on the number of unsatisfied goal atoms (a portfolio member).
@@ -454,7 +504,10 @@ def _path(parents: dict[int, tuple[int, GroundAction] | None], end: int) -> list
     s = end
     while parents[s] is not None:
         prev, act = parents[s]  # type: ignore[misc]
-        steps.append((prev, act, s))
+        if isinstance(act, tuple):  # a lookahead's steps
+            steps.extend(reversed(act))
+        else:
+            steps.append((prev, act, s))
         s = prev
     steps.reverse()
     return steps

@@ -172,8 +172,8 @@ class RelaxedTask:
                 cost[ai] -= m
 
     def relaxed_plan(self, state: int) -> tuple[list[int], set[int]] | None:
-        """(relaxed plan as action indices, the facts it needs that an action applicable in ``state`` may
-        add); None = relaxed dead end."""
+        """(relaxed plan as action indices, in order of h^add, the facts it needs that an action applicable
+        in ``state`` may add); None = relaxed dead end."""
         true = self._true_facts(state)
         n_actions = len(self.pre)
         h = [INF] * self.n_facts
@@ -223,7 +223,9 @@ class RelaxedTask:
         chosen.discard(goal_action)
         needed.discard(1)
         most = self._max_cost
-        return sorted(chosen), {q for q in needed if h[q] <= most}
+        # In the order of h^add of the preconditions: an action before those that need what it adds, so the
+        # plan can be tried as it stands (the oracle's lookahead).
+        return sorted(chosen, key=lambda ai: (acc[ai], ai)), {q for q in needed if h[q] <= most}
 
     def helpful(self, state: int, needed: set[int]) -> list[int]:
         """Actions applicable in ``state`` that add a fact the relaxed plan needs (FF's helpful actions).

@@ -1,0 +1,5 @@
+(define (problem errands-6)
+  (:domain errands)
+  (:objects e1 e2 e3 e4 e5 e6 - errand)
+  (:init (open e1) (open e2) (open e3) (open e4) (open e5) (open e6))
+  (:goal (and (done e1) (done e2) (done e3) (done e4) (done e5) (done e6))))

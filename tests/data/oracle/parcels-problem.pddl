@@ -1,0 +1,5 @@
+(define (problem parcels-3)
+  (:domain parcels)
+  (:objects depot h1 h2 h3 - place p1 p2 p3 - parcel)
+  (:init (courier-at depot) (free) (at p1 depot) (at p2 depot) (at p3 depot))
+  (:goal (and (at p1 h1) (at p2 h2) (at p3 h3))))
