@@ -99,6 +99,7 @@ def test_each_portfolio_member_decides_like_brute_force(tmp_path_factory, monkey
     """
     monkeypatch.setattr(reach, "PORTFOLIO_SLICE_S", 0.0)
     monkeypatch.setattr(reach, "PAIR_CHECK_FIRST_S", 0.0)
+    monkeypatch.setattr(reach, "COUNTING_AFTER_S", 0.0)  # the operator-counting member takes turns too
     if silenced != "none":
         monkeypatch.setattr(ReachabilityOracle, silenced, _never_decides)
     domain, problem = _parse_random(tmp_path_factory, "pf", pddl)

@@ -23,7 +23,9 @@ excuse search:
   with helpful actions, boosted as Fast Downward boosts them, and each
   state's lookahead taken next (it confirms plans where the goal count
   wanders plateaus of interchangeable objects),
-  and the rest of the h^2 check on a large task.  Both searches are
+  the rest of the h^2 check on a large task, and, after the others have had
+  :data:`COUNTING_AFTER_S`, the operator-counting program
+  (:mod:`guided_lfd.planning.counting`: resources that only run down).  Both searches are
   complete (duplicate detection, finite space); the first to decide answers.
 """
 
@@ -37,6 +39,7 @@ from typing import Any, Callable, Generator, Iterator
 
 from guided_lfd.errors import SearchTimeout
 from guided_lfd.excuse.space import ChangeSpace
+from guided_lfd.planning.counting import OperatorCounting
 from guided_lfd.planning.grounding import GroundAction, bits
 from guided_lfd.planning.h2 import PairReachability
 from guided_lfd.planning.relaxation import RelaxedTask
@@ -60,6 +63,13 @@ PREFERRED_BOOST = 1000
 #: Time a portfolio member runs before the member with the least time so far
 #: takes its turn.
 PORTFOLIO_SLICE_S = 0.02
+#: Portfolio time on a candidate before the operator-counting program is asked (most candidates are decided
+#: sooner, and the program costs tens to hundreds of milliseconds), and the most its solver may take.
+COUNTING_AFTER_S = 0.5
+COUNTING_LIMIT_S = 1.0
+#: The program's own limit: above this many relevant actions it is not asked (its LM-cut pass alone takes a
+#: second at 5,000 actions and is not interruptible; the houses' checks are the hill-climb's anyway).
+COUNTING_MAX_ACTIONS = 20_000
 
 
 @dataclass
@@ -72,6 +82,7 @@ class ReachStats:
     hill_climbs: int = 0  # calls answered by hill-climbing on h^FF
     pair_proofs: int = 0  # calls answered "unreachable" by the h^2 pair check
     ff_searches: int = 0  # calls answered by the h^FF search of the portfolio
+    counting_proofs: int = 0  # calls answered "unreachable" by the operator-counting program
 
 
 class ReachabilityOracle:
@@ -95,6 +106,7 @@ class ReachabilityOracle:
         self.guided = len(self.actions) >= GUIDED_MIN_ACTIONS
         self._relaxed: RelaxedTask | None = None
         self._pairs: PairReachability | None = None
+        self._counting: OperatorCounting | None = None
         # Index actions by one positive precondition so successor generation
         # skips most inapplicable actions; actions without one are always tried
         # (bucket 0, entries with pre_pos = 0).
@@ -248,16 +260,22 @@ class ReachabilityOracle:
         members = [self._goal_count_search(start), self._ff_search(start)]
         if verdict is None:  # the pair check did not finish in its first slice: it goes on beside the searches
             members.append(pairs)
+        start_after = {}
+        if not self.space.task.is_adl and len(self.actions) <= COUNTING_MAX_ACTIONS:
+            start_after[len(members)] = COUNTING_AFTER_S
+            members.append(self._counting_check(start))
         # The last call's searches stay referenced until the next call: a
         # deadline that stops this one does not wait for them to be freed.
         self._scratch = members
-        index, result = self._portfolio(members)
+        index, result = self._portfolio(members, start_after)
         for member in members:
             member.close()  # decided: the others stop (their statistics are counted)
-        if index == 2:
+        if index == 2 and verdict is None:
             return self._proved_dead(start)
         if index == 1:
             self.stats.ff_searches += 1
+        if index in start_after:
+            self.stats.counting_proofs += 1
         kind, found = result
         if kind == "dead":
             self.dead.update(found)
@@ -270,7 +288,20 @@ class ReachabilityOracle:
         self.dead.add(start)
         return None
 
-    def _portfolio(self, members: list[Generator]) -> tuple[int, Any]:
+    def _counting_check(self, start: int) -> Generator[None, None, tuple[str, Any] | bool]:
+        """The operator-counting program as a portfolio member: ("dead", {start}) when it has no solution,
+        else True (undecided: the searches go on).  Set up on its first turn."""
+        yield
+        if self._counting is None:
+            self._counting = OperatorCounting(self.relaxed_task(), self.goal_pos)
+        limit = COUNTING_LIMIT_S
+        if self.deadline is not None and self.deadline - time.monotonic() < 2 * COUNTING_LIMIT_S:
+            return True  # too close to the deadline for a step that cannot be interrupted
+        if self._counting.dead(start, limit):
+            return "dead", {start}
+        return True
+
+    def _portfolio(self, members: list[Generator], start_after: dict[int, float] | None = None) -> tuple[int, Any]:
         """Run the members in turns, each when it has had the least time, until one decides.
 
         Returns (member index, its verdict).  The goal-count search is cheap
@@ -281,9 +312,14 @@ class ReachabilityOracle:
         """
         spent = [0.0] * len(members)
         live = set(range(len(members)))
+        waiting = dict(start_after or {})  # member -> portfolio time before its first turn
         deadline = self.deadline
         while True:
-            index = min(live, key=spent.__getitem__)
+            if waiting:
+                total = sum(spent)
+                for i in [i for i, after in waiting.items() if total >= after]:
+                    del waiting[i]
+            index = min(live - waiting.keys(), key=spent.__getitem__)
             member = members[index]
             began = time.monotonic()
             try:

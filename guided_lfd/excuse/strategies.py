@@ -407,7 +407,7 @@ class _LandmarkRun:
                              {"evaluations": self.evaluations, "oracle_expanded": stats.expanded,
                               "oracle_memo_hits": stats.memo_hits, "oracle_hill_climbs": stats.hill_climbs,
                               "oracle_pair_proofs": stats.pair_proofs, "oracle_ff_searches": stats.ff_searches,
-                              **probed}, self.bound)
+                              "oracle_counting_proofs": stats.counting_proofs, **probed}, self.bound)
 
 
 #: ``_LandmarkRun.branch``'s answer when the search is over (enough minimal excuses found).

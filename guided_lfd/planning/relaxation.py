@@ -120,8 +120,12 @@ class RelaxedTask:
                         push(heap, (reach, q))
         return h, pcf
 
-    def lmcut(self, state: int) -> float:
-        """The LM-cut lower bound on the cost of a plan from ``state`` (INF = unsolvable)."""
+    def lmcut(self, state: int, cuts: list[list[int]] | None = None) -> float:
+        """The LM-cut lower bound on the cost of a plan from ``state`` (INF = unsolvable).
+
+        ``cuts``, when given, receives each cut: a disjunctive action landmark (every plan from ``state``
+        has one of its actions; the artificial goal action never is one, being free).
+        """
         cost = list(self.base_costs)
         true = self._true_facts(state)
         total = 0
@@ -166,6 +170,8 @@ class RelaxedTask:
             if not cut:
                 return total  # guard: cannot happen for a finite positive h
             cut = list(set(cut))
+            if cuts is not None:
+                cuts.append(cut)
             m = min(cost[ai] for ai in cut)
             total += m
             for ai in cut:

@@ -1,0 +1,5 @@
+(define (problem cameras-3)
+  (:domain cameras)
+  (:objects c1 c2 - camera t1 t2 t3 - target)
+  (:init (calibrated c1) (calibrated c2))
+  (:goal (and (have-image t1) (have-image t2) (have-image t3))))
