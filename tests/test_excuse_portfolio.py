@@ -22,8 +22,17 @@ from guided_lfd.excuse.space import Semantics
 from guided_lfd.pddl.reader import parse_task
 
 
+_LANDMARK_SEARCH = strategies.LandmarkSearch.search
+
+
 def _waiting_landmark(self, space, limits, progress=None, oracle=None, relaxed=None):
-    """A landmark search that never answers: it waits until the portfolio stops it (60 s at most)."""
+    """A landmark search that never answers: it waits until the portfolio stops it (60 s at most).
+
+    Called outside the portfolio's race (no ``stop``: the engine's own questions, such as whether a goal atom
+    any skill achieves is kept out of reach by the world's structure), it is the real search: no symbolic
+    member runs beside it there."""
+    if limits.stop is None:
+        return _LANDMARK_SEARCH(self, space, limits, progress, oracle, relaxed)
     end = time.monotonic() + 60
     while time.monotonic() < end:
         if limits.stop is not None and limits.stop():
