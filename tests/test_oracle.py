@@ -237,9 +237,12 @@ def test_the_lookahead_applies_relaxed_plan_actions_until_none_applies(tmp_path_
             assert before == s and act.applicable(s) and after == act.apply(s) & oracle.mask != s
             used.append(oracle.actions.index(act))
             s = after
+        chain = {state, *(after for _, _, after in steps)}
         assert end == s and len(set(used)) == len(used) and set(used) <= set(found[0])
-        assert not any(oracle.actions[ai].applicable(end) for ai in found[0] if ai not in used
-                       and oracle.actions[ai].apply(end) & oracle.mask != end)
+        assert len(chain) == len(steps) + 1  # no state twice: a plan through it would loop
+        if not oracle.space.task.satisfies_goal(end):  # it stops at a goal state
+            assert not any(oracle.actions[ai].applicable(end) for ai in found[0] if ai not in used
+                           and oracle.actions[ai].apply(end) & oracle.mask not in chain)
 
 
 def _ff_search_to_the_end(oracle: ReachabilityOracle, state: int):
@@ -272,3 +275,15 @@ def test_the_lookahead_takes_an_action_harmless_to_the_rest_of_the_plan_first():
     start = oracle.space.task.init & oracle.mask
     _end, steps = oracle._lookahead(start, oracle.relaxed_task().relaxed_plan(start)[0])
     assert [act.name for _, act, _ in steps] == ["(take p1 depot)", "(walk depot h1)", "(put p1 h1)"]
+
+
+def test_a_path_that_comes_back_to_a_state_is_remembered_without_the_loop():
+    """A lookahead may step back to where the search came from: the loop is cut before the states are remembered
+    as alive (kept, it made the remaining plan of every later call endless)."""
+    oracle = _oracle(*parse_task(DATA / "errands-domain.pddl", DATA / "errands-problem.pddl"))
+    a, b = oracle.actions[0], oracle.actions[1]
+    path = [(1, a, 2), (2, b, 1), (1, b, 3), (3, a, 4), (4, a, 3), (3, b, 5)]
+    assert reach._without_loops(path) == [(1, b, 3), (3, b, 5)]
+    assert oracle._record(path, 5) == [b, b]
+    assert oracle.alive == {1: (b, 3), 3: (b, 5), 5: None}
+    assert oracle._record([], 1) == [b, b]

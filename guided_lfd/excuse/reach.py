@@ -223,12 +223,12 @@ class ReachabilityOracle:
         ``end`` is a goal state or a state already known to be alive.
         """
         alive = self.alive
-        for prev, act, nxt in path:
+        for prev, act, nxt in _without_loops(path):
             if prev not in alive:
                 alive[prev] = (act, nxt)
         if end not in alive:
             alive[end] = None
-        plan = [act for _, act, _ in path]
+        plan = [act for _, act, _ in _without_loops(path)]
         s = end
         while alive.get(s) is not None:
             act, s = alive[s]  # type: ignore[misc]
@@ -414,10 +414,12 @@ class ReachabilityOracle:
         that state and the steps to it (none when nothing applies).  Where the relaxed plan is mostly a real
         one (transport, depot), its state is many steps ahead for one evaluation.
         """
-        actions, mask = self.actions, self.mask
+        actions, mask, alive = self.actions, self.mask, self.alive
+        goal_pos, goal_neg = self.goal_pos, self.goal_neg
         todo = [actions[ai] for ai in plan]
         steps: list[tuple[int, GroundAction, int]] = []
-        while todo:
+        visited = {s}  # a step back to a state of the chain is not taken (a plan must not loop)
+        while todo and s not in alive and (goal_pos & ~s or goal_neg & s):
             after = [0] * (len(todo) + 1)  # after[k]: what the actions after the k-th need
             for k in range(len(todo) - 1, -1, -1):
                 after[k] = after[k + 1] | todo[k].pre_pos
@@ -437,7 +439,8 @@ class ReachabilityOracle:
                 break
             act = todo.pop(k)
             t = (s & ~act.delete) | (act.add & mask)
-            if t != s:
+            if t not in visited:
+                visited.add(t)
                 steps.append((s, act, t))
                 s = t
         return s, tuple(steps)
@@ -532,6 +535,22 @@ class AlternatingQueues:
     def boost(self) -> None:
         """Give the preferred queue the next :data:`PREFERRED_BOOST` turns (progress was made)."""
         self.turns[1] -= PREFERRED_BOOST
+
+
+def _without_loops(path: list[tuple[int, GroundAction, int]]) -> list[tuple[int, GroundAction, int]]:
+    """``path`` with every stretch that comes back to a state it left cut out (a lookahead may step back to
+    where the search came from; remembered as alive, such a loop would make the remaining plan endless)."""
+    out: list[tuple[int, GroundAction, int]] = []
+    at: dict[int, int] = {}
+    for step in path:
+        at[step[0]] = len(out)
+        out.append(step)
+        back = at.get(step[2])
+        if back is not None:
+            for cut in out[back:]:
+                del at[cut[0]]
+            del out[back:]
+    return out
 
 
 def _path(parents: dict[int, tuple[int, GroundAction] | None], end: int) -> list[tuple[int, GroundAction, int]]:
