@@ -223,12 +223,13 @@ class ReachabilityOracle:
         ``end`` is a goal state or a state already known to be alive.
         """
         alive = self.alive
-        for prev, act, nxt in _without_loops(path):
+        path = _without_loops(path)
+        for prev, act, nxt in path:
             if prev not in alive:
                 alive[prev] = (act, nxt)
         if end not in alive:
             alive[end] = None
-        plan = [act for _, act, _ in _without_loops(path)]
+        plan = [act for _, act, _ in path]
         s = end
         while alive.get(s) is not None:
             act, s = alive[s]  # type: ignore[misc]

@@ -33,11 +33,9 @@ class OperatorCounting:
                 produced.setdefault(p, []).append(k)
             for p in bits(act.delete & act.pre_pos & ~act.add):
                 consumed.setdefault(p, []).append(k)
-        goal = goal_pos
+        self.goal = goal_pos
         # Atoms whose inequality can bind: those something consumes, and goal atoms.
-        self.atoms = sorted(set(consumed) | set(bits(goal)))
-        self.goal = goal
-        self.rows = [(p, produced.get(p, []), consumed.get(p, [])) for p in self.atoms]
+        self.rows = [(p, produced.get(p, []), consumed.get(p, [])) for p in sorted(set(consumed) | set(bits(goal_pos)))]
         self.n_actions = len(actions)
 
     def dead(self, state: int, time_limit: float = 1.0) -> bool:
@@ -75,4 +73,3 @@ class OperatorCounting:
         result = linprog(np.zeros(self.n_actions), A_ub=matrix, b_ub=np.array(bound, dtype=float),
                          bounds=(0, None), method="highs", options={"time_limit": max(time_limit, 0.01)})
         return result.status == 2  # 2: infeasible
-
