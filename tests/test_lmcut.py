@@ -147,3 +147,32 @@ def test_goal_zone_does_not_leak_through_an_achiever_with_a_precondition_in_it(s
     bound = relaxed._lmcut(true, cost, last=last)
     assert relaxed.unscale(bound.h) == 2 * space.min_weight
     assert [[str(task.atoms[i]) for i in lm] for lm in bound.landmarks] == [["(z)"], ["(b)"]]
+
+
+@pytest.mark.parametrize("small", [True, False])
+@pytest.mark.parametrize("case", CASES[:2] + [("depot", "task03", "drive", Semantics.CONSISTENT)],
+                         ids=lambda c: "-".join(map(str, c[:4])))
+def test_pinned_atoms_are_never_flipped_and_only_raise_the_bound(case, small, monkeypatch):
+    """An atom pinned at a node (its extensions leave it alone) costs INF, stays out of every landmark, pins
+    its mutex group when true, and the bound never drops; pinning a whole landmark's atoms shows up."""
+    from guided_lfd.excuse import lmcut
+
+    if not small:
+        monkeypatch.setattr(lmcut, "SMALL_TASK_ACTIONS", 0)
+    relaxed = relaxed_task(*case)
+    assert relaxed.small is small
+    rng = random.Random(3)
+    raised = 0
+    for state, changes in random_nodes(relaxed, 12, seed=2):
+        free = relaxed.space.changeable & ~changes
+        plain = relaxed.bound(state, changes)
+        if plain.h in (0, INF):
+            continue
+        pinned = 0
+        for i in rng.sample(sorted(relaxed._pos_id), 10) + list(plain.landmarks[0]):
+            pinned |= ((free >> i) & 1) << i
+        got = relaxed.bound(state, changes, pinned)
+        assert got.h >= plain.h
+        assert all(not (pinned >> i) & 1 for lm in got.landmarks for i in lm)
+        raised += got.h > plain.h
+    assert raised  # pinning the first landmark's atoms raises some bound

@@ -199,7 +199,7 @@ class RelaxedExcuseTask:
             self.group_facts = [np.array(f, dtype=np.int64) for f in self.group_fact_lists]
             self.fact_weight = np.array(self.fact_weight_list, dtype=np.float64)
 
-    def _initial_lists(self, state: int, changes: int) -> tuple[list[bool], list[float]]:
+    def _initial_lists(self, state: int, changes: int, pinned: int = 0) -> tuple[list[bool], list[float]]:
         """:meth:`_initial` on plain lists, for small tasks (no numpy call overhead).
 
         Walks the set bits of the masks instead of testing every fact.
@@ -213,23 +213,23 @@ class RelaxedExcuseTask:
             true[pos_id[a]] = True
         for a in bits(state & neg_mask):
             true[neg_id[a]] = False
-        flippable = self.space.changeable & ~changes
+        flippable = self.space.changeable & ~changes & ~pinned
         for a in bits(flippable & relevant & ~state):  # "p" can be made true
             f = pos_id[a]
             cost[f] = weight[f]
         for a in bits(flippable & neg_mask & state):  # "not p" can be made true
             f = neg_id[a]
             cost[f] = weight[f]
-        for k, charge in self._group_charges(state, changes):
+        for k, charge in self._group_charges(state, changes, pinned):
             for f in self.group_fact_lists[k]:
                 cost[f] = INF if charge is None else cost[f] + charge
         return true, cost
 
-    def _group_charges(self, state: int, changes: int):
+    def _group_charges(self, state: int, changes: int, pinned: int = 0):
         """Per mutex group with one true atom q: (group index, charge on making another atom true).
 
         ``None`` pins the group's other atoms (q was made true by the change
-        set and must stay).  Otherwise making one of them true forces q's
+        set, or is ``pinned``, and must stay).  Otherwise making one of them true forces q's
         removal, charged only when "not q" is no relaxed fact of its own: its
         change already costs w(q), and a relaxed plan may use both.
         """
@@ -240,21 +240,22 @@ class RelaxedExcuseTask:
             if present.bit_count() != 1:
                 continue
             q = present.bit_length() - 1
-            if (changes >> q) & 1 or q not in self.space.weights:
+            if ((changes | pinned) >> q) & 1 or q not in self.space.weights:
                 # q was made true by the change set, or may not change at all (fixed): it stays,
                 # so no other atom of its group can be made true.
                 yield k, None
             elif not (self.neg_mask >> q) & 1:
                 yield k, self.space.weights[q] * self.scale / self.membership[q]
 
-    def _initial(self, state: int, changes: int) -> tuple[np.ndarray, np.ndarray]:
-        """Facts true in ``state`` and the change cost of each other fact (INF = not changeable)."""
+    def _initial(self, state: int, changes: int, pinned: int = 0) -> tuple[np.ndarray, np.ndarray]:
+        """Facts true in ``state`` and the change cost of each other fact (INF = not changeable, or ``pinned``:
+        an atom the change sets in question leave as it is)."""
         state_bits = bitmask_to_array(state, self.n_atoms)[self.fact_atom]
         true = state_bits.copy()
         true[self.n_pos :] = ~state_bits[self.n_pos :]
-        flippable = (self.changeable & ~bitmask_to_array(changes, self.n_atoms))[self.fact_atom] & ~true
+        flippable = (self.changeable & ~bitmask_to_array(changes | pinned, self.n_atoms))[self.fact_atom] & ~true
         cost = np.where(flippable, self.fact_weight, INF)
-        for k, charge in self._group_charges(state, changes):
+        for k, charge in self._group_charges(state, changes, pinned):
             facts = self.group_facts[k]
             cost[facts] = INF if charge is None else cost[facts] + charge
         return true, cost
@@ -349,8 +350,9 @@ class RelaxedExcuseTask:
                                 return True
         return False
 
-    def bound(self, state: int, changes: int) -> Bound:
-        """LM-cut value and landmarks (as atom indices to flip) for excuses extending ``changes``.
+    def bound(self, state: int, changes: int, pinned: int = 0) -> Bound:
+        """LM-cut value and landmarks (as atom indices to flip) for excuses extending ``changes`` that flip no
+        atom of ``pinned``.
 
         At the root (no changes yet) LM-cut is computed with two tie-breaking
         rules for the precondition choice function; both are admissible and
@@ -362,12 +364,12 @@ class RelaxedExcuseTask:
         if not self.goal_list:
             return Bound(0, [], [])
         if self.small:
-            true, cost = self._initial_lists(state, changes)
+            true, cost = self._initial_lists(state, changes, pinned)
         else:
-            true, cost = self._initial(state, changes)
+            true, cost = self._initial(state, changes, pinned)
         self._first_hmax = None
         first = self._lmcut(true, cost.copy(), last=False)
-        if not changes and not (first.h == INF or first.h == 0):
+        if not changes and not pinned and not (first.h == INF or first.h == 0):
             # The second run starts from the same costs: its first h^max pass
             # is the first run's, only the tie-breaking differs.
             second = self._lmcut(true, cost, last=True, initial_h=self._first_hmax)

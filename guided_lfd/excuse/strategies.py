@@ -149,6 +149,12 @@ class LandmarkSearch:
     recomputed when a node has no landmark left.  One reachability oracle with
     dead/alive memory answers all candidates.
 
+    A node's children split its extensions: the k-th adds the k-th atom of the
+    branch and *pins* the atoms before it (its extensions never flip them).  So
+    no change set is queued twice, and a child's LM-cut knows which changes it
+    may no longer make: under the consistent semantics, a truck or hoist left
+    where it is can no longer be "at two places" in the relaxation.
+
     Nodes leave the open list in non-decreasing f, so the f of the last one
     taken is a proven lower bound on the weight of every excuse (within
     ``max_size``): a timed-out search reports it.  With ``limits.probe``, a
@@ -199,8 +205,8 @@ class _LandmarkRun:
         self.counter = 0
         self.heap: list[tuple[float, int, int, int]] = [(0, 0, 0, 0)]
         self.inherited: dict[int, list[tuple[int, int]] | None] = {0: None}
-        self.seen = {0}
-        linger(self.heap, self.inherited, self.seen)  # never freed after a deadline (see guided_lfd.deadline)
+        self.pins: dict[int, int] = {0: 0}
+        linger(self.heap, self.inherited, self.pins)  # never freed after a deadline (see guided_lfd.deadline)
         self.best: float | None = None
         self.g_limit: float = INF  # the heaviest node still worth expanding, once an excuse is found
         self.solutions: list[int] = []
@@ -208,10 +214,12 @@ class _LandmarkRun:
         self.candidates = self.expanded = self.evaluations = 0
         self.size_pruned = False
 
-    def push(self, f: float, g: int, changes: int, landmarks: list[tuple[int, int]] | None) -> None:
-        """Queue ``changes`` (cost ``g``) at priority ``f`` with the landmarks it inherits."""
+    def push(self, f: float, g: int, changes: int, landmarks: list[tuple[int, int]] | None, pinned: int) -> None:
+        """Queue ``changes`` (cost ``g``) at priority ``f`` with the landmarks it inherits and the atoms its
+        extensions leave alone (``pinned``)."""
         self.counter += 1
         self.inherited[changes] = landmarks
+        self.pins[changes] = pinned
         heapq.heappush(self.heap, (f - g if self.greedy else f, -g, self.counter, changes))
 
     def loop(self, progress: ProgressMeter | None) -> None:
@@ -236,20 +244,21 @@ class _LandmarkRun:
                 self.bound = f
             state = task.init ^ changes
             landmarks = self.inherited.pop(changes)
+            pinned = self.pins.pop(changes)
             if not landmarks:
-                landmarks = self.evaluate(f, g, state, changes, landmarks)
+                landmarks = self.evaluate(f, g, state, changes, landmarks, pinned)
                 if landmarks is None:
                     continue  # requeued with a better bound, or a dead end
             self.expanded += 1
             if progress is not None and progress.due():
                 progress.search(self.expanded, self.oracle.stats.calls, self.candidates,
                                 self.space.cost_bound(self.bound))
-            branch = self.branch(g, state, changes, landmarks)
+            branch = self.branch(g, state, changes, landmarks, pinned)
             if branch is None:
                 continue
             if branch == _DONE:
                 return
-            self.expand(f, g, state, changes, landmarks, branch)
+            self.expand(f, g, changes, landmarks, branch, pinned)
 
     def pause_for_probe(self, progress: ProgressMeter | None) -> None:
         """Search greedily for any excuse until ``probe.until`` (once), drop the changes it can do without, and
@@ -296,8 +305,8 @@ class _LandmarkRun:
                 changes, plan = smaller, shorter
         return changes, plan
 
-    def evaluate(self, f: float, g: int, state: int, changes: int,
-                 landmarks: list[tuple[int, int]] | None) -> list[tuple[int, int]] | None:
+    def evaluate(self, f: float, g: int, state: int, changes: int, landmarks: list[tuple[int, int]] | None,
+                 pinned: int) -> list[tuple[int, int]] | None:
         """A node without landmarks left: its fresh landmarks, or None when it was requeued or is dead."""
         self.evaluations += 1
         relaxed = self.relaxed
@@ -307,35 +316,36 @@ class _LandmarkRun:
             if not relaxed.reaches_goal_unchanged(state):
                 # h >= the cheapest change: requeue with that bound
                 # and pay for LM-cut only if the node comes up again.
-                self.push(max(f, g + self.cheapest), g, changes, None)
+                self.push(max(f, g + self.cheapest), g, changes, None, pinned)
                 return None
             bound = Bound(0, [], [])
         else:
-            bound = relaxed.bound(state, changes)
+            bound = relaxed.bound(state, changes, pinned)
         if bound.h == INF:
             return None
         fresh = [(_mask(l), m) for l, m in zip(bound.landmarks, bound.costs)]
         h = max(bound.h, self.space.consistency_bound(state))
         if g + h > f:
-            self.push(g + h, g, changes, fresh)
+            self.push(g + h, g, changes, fresh, pinned)
             return None
         return fresh
 
-    def branch(self, g: int, state: int, changes: int, landmarks: list[tuple[int, int]]) -> int | None:
-        """The atoms to branch on: a violated group's repairs, the smallest landmark, or, at a
-        relaxed-solvable consistent node, the oracle's verdict (an excuse, or all relevant changes).
+    def branch(self, g: int, state: int, changes: int, landmarks: list[tuple[int, int]], pinned: int) -> int | None:
+        """The atoms to branch on (none of ``pinned``): a violated group's repairs, the smallest landmark, or,
+        at a relaxed-solvable consistent node, the oracle's verdict (an excuse, or all relevant changes).
 
         None: nothing to expand here; ``_DONE``: the search is over.
         """
         space = self.space
         branch = 0
         violated = space.violated(state)
+        free = space.changeable & ~changes & ~pinned
         if violated:
             group = min(violated, key=lambda gr: gr.mask.bit_count())
             if (state & group.mask).bit_count() > 1:
-                branch = group.mask & state & ~changes & space.changeable
+                branch = group.mask & state & free
             else:
-                branch = group.mask & ~state & ~changes & space.changeable
+                branch = group.mask & ~state & free
             if not branch:
                 return None  # the group cannot be repaired any more
         if landmarks:
@@ -344,20 +354,21 @@ class _LandmarkRun:
                 branch = smallest
         elif not violated:
             if self.task.satisfies_goal(state):
-                branch = self.goal_atoms & ~changes
+                branch = self.goal_atoms & free
             else:
-                return self.check_candidate(g, state, changes)
+                return self.check_candidate(g, state, changes, free)
         return branch
 
-    def check_candidate(self, g: int, state: int, changes: int) -> int | None:
-        """Ask the oracle about a candidate excuse; the relevant changes to branch on if it is none."""
+    def check_candidate(self, g: int, state: int, changes: int, free: int) -> int | None:
+        """Ask the oracle about a candidate excuse; the relevant changes to branch on (of ``free``) if it is
+        none."""
         if self.solutions and (g > self.g_limit or any(changes & found == found for found in self.solutions)
                                or self.space.cost(changes) > self.space.cost(self.solutions[0]) + self.limits.slack):
             return None  # beyond the slack, or an excuse with changes added: no other choice
         self.candidates += 1
         plan = self.oracle.solve(state)
         if plan is None:
-            return self.relevant_changes & ~changes
+            return self.relevant_changes & free
         if self.best is None:
             self.best = g
             # Weights are cost x size_factor + size: all excuses up to the slack's cost weigh less than this.
@@ -369,29 +380,36 @@ class _LandmarkRun:
             return _DONE
         return None
 
-    def expand(self, f: float, g: int, state: int, changes: int, landmarks: list[tuple[int, int]],
-               branch: int) -> None:
-        """Queue each child that adds one atom of ``branch``, with the landmarks it inherits."""
+    def expand(self, f: float, g: int, changes: int, landmarks: list[tuple[int, int]], branch: int,
+               pinned: int) -> None:
+        """Queue each child that adds one atom of ``branch``, with the landmarks it inherits.
+
+        The children split the extensions of ``changes`` that hit ``branch`` (and flip no pinned atom)
+        between them: the k-th adds the k-th atom and pins the ones before it.  So no change set is queued
+        twice, and a child's bound knows what it may no longer flip (a landmark all pinned: a dead child).
+        """
         space, limits = self.space, self.limits
         size = changes.bit_count()
         if limits.max_size is not None and size + 1 > limits.max_size:
             self.size_pruned = self.size_pruned or bool(branch)
             return
-        init, weights, seen = self.task.init, space.weights, self.seen
+        init, weights = self.task.init, space.weights
+        earlier = 0
         for i in bits(branch):
             child = changes | (1 << i)
-            if child in seen:
-                continue
-            seen.add(child)
-            if (state >> i) & 1 and i in space.groups_of:
+            child_pins = pinned | earlier
+            earlier |= 1 << i
+            if (init >> i) & 1 and i in space.groups_of:
                 # Removing a group atom: the parent's shares may include a
                 # charge for exactly this removal; recompute instead.
                 kept = []
             else:
-                kept = [(lm, m) for lm, m in landmarks if not (lm >> i) & 1] if landmarks else []
+                kept = [(lm & ~child_pins, m) for lm, m in landmarks if not (lm >> i) & 1] if landmarks else []
+                if any(not lm for lm, _ in kept):
+                    continue  # a landmark left with pinned atoms only: no excuse extends the child
             cg = g + weights[i]
             h_child = max(self.relaxed.unscale(sum(m for _, m in kept)), space.consistency_bound(init ^ child))
-            self.push(max(f, cg + h_child), cg, child, kept)
+            self.push(max(f, cg + h_child), cg, child, kept, child_pins)
 
     def outcome(self, timed_out: bool = False) -> SearchOutcome:
         """What the search found, with its effort."""
