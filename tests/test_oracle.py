@@ -287,3 +287,60 @@ def test_a_path_that_comes_back_to_a_state_is_remembered_without_the_loop():
     assert oracle._record(path, 5) == [b, b]
     assert oracle.alive == {1: (b, 3), 3: (b, 5), 5: None}
     assert oracle._record([], 1) == [b, b]
+
+
+@settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow, HealthCheck.function_scoped_fixture])
+@given(pddl=small_tasks())
+def test_paused_checks_resume_and_decide_like_brute_force(tmp_path_factory, monkeypatch, pddl):
+    """Every check pauses after each turn (0 s slices, a pause time already past) and the checks of all the
+    states are resumed in rotation, more of them than are kept (a dropped one starts afresh): each still ends
+    in the right answer; the excuse search with 0 s candidate slices finds brute force's excuses."""
+    from guided_lfd.excuse import strategies
+
+    monkeypatch.setattr(reach, "PORTFOLIO_SLICE_S", 0.0)
+    monkeypatch.setattr(reach, "PAIR_CHECK_FIRST_S", 0.0)
+    monkeypatch.setattr(reach, "COUNTING_AFTER_S", 0.0)
+    monkeypatch.setattr(reach, "MAX_PAUSED", 2)
+    domain, problem = _parse_random(tmp_path_factory, "pz", pddl)
+    oracle = _oracle(domain, problem)
+    task = oracle.space.task
+    pending, pauses = list(_every_state(task))[:8], 0
+    while pending:
+        state = pending.pop(0)
+        try:
+            plan = oracle.solve(state, pause_at=0.0)
+        except reach.CheckPaused:
+            pauses += 1
+            pending.append(state)
+            continue
+        assert (plan is not None) == _bfs_reaches_goal(task, state)
+    assert len(oracle._paused) <= 2
+    monkeypatch.setattr(strategies, "CHECK_SLICE_S", 0.0)
+    for semantics in Semantics:
+        report = find_excuses(domain, problem, ExcuseOptions(semantics=semantics, strategy="landmark",
+                                                             all_minimal=True, verify=True, max_size=3))
+        size, expected = brute_force(domain, problem, checker_laws(domain, problem, report))
+        if size not in (None, 0):
+            assert sorted(sorted(str(c) for c in e.changes) for e in report.excuses) == expected
+
+
+def test_a_paused_check_keeps_its_members_time_and_resumes_them(monkeypatch):
+    """Two tokens, three slots (the goal unreachable; the pair check cannot see it): paused after every
+    turn, the check resumes the same searches until the h^FF search exhausts the states (the goal-count
+    search, which would exhaust them in its first turn, silenced)."""
+    monkeypatch.setattr(reach, "PORTFOLIO_SLICE_S", 0.0)
+    monkeypatch.setattr(ReachabilityOracle, "_goal_count_search", _never_decides)
+    domain, problem = parse_task(DATA / "tokens-domain.pddl", DATA / "tokens-problem.pddl")
+    oracle = _oracle(domain, problem)
+    start = oracle.space.task.init
+    pauses, members = 0, None
+    while True:
+        try:
+            assert oracle.solve(start, pause_at=0.0) is None
+            break
+        except reach.CheckPaused:
+            turns = oracle._paused[start & oracle.mask]
+            assert members is None or turns.members is members  # the same searches, resumed
+            members = turns.members
+            pauses += 1
+    assert pauses >= 2 and not oracle._paused and start & oracle.mask in oracle.dead

@@ -37,6 +37,10 @@ from guided_lfd.excuse.status import ExcuseStatus
 #: Seconds the landmark search runs alone before the symbolic search starts beside it.
 SYMBOLIC_AFTER_S = 0.5
 
+#: The symbolic worker's niceness: on a machine whose cores are all busy (``bench --jobs 2`` on two cores) it
+#: takes the time the landmark search leaves, instead of half of it; on an idle core it runs at full speed.
+WORKER_NICENESS = 10
+
 #: Share of the time left the portfolio gives its search without the invariants (consistent semantics; at least
 #: :data:`WITHOUT_INVARIANTS_LEAST_S` seconds).
 WITHOUT_INVARIANTS_SHARE = 0.05
@@ -157,7 +161,7 @@ class _Race:
                 return False
             from guided_lfd.symbolic.worker import Forked
 
-            self.worker = Forked(symbolic_outcome, self.space, self.limits)
+            self.worker = Forked(symbolic_outcome, self.space, self.limits, niceness=WORKER_NICENESS)
             return False
         if not self.worker.poll():
             return False

@@ -70,6 +70,27 @@ COUNTING_LIMIT_S = 1.0
 #: The program's own limit: above this many relevant actions it is not asked (its LM-cut pass alone takes a
 #: second at 5,000 actions and is not interruptible; the houses' checks are the hill-climb's anyway).
 COUNTING_MAX_ACTIONS = 20_000
+#: Checks paused undecided (``solve``'s ``pause_at``) kept to be resumed; when one more pauses, the one paused
+#: longest ago is dropped (its searches closed: asked again, it starts afresh).
+MAX_PAUSED = 3
+
+
+class CheckPaused(Exception):
+    """A reachability check reached its pause time undecided; asked again, it resumes where it stopped."""
+
+
+@dataclass
+class _Turns:
+    """A check's portfolio: its members and the time each has had (kept across a pause)."""
+
+    members: list[Generator]
+    start_after: dict[int, float]  # member -> portfolio time before its first turn
+    pairs_pending: bool  # the last member is the h^2 check's rest (it did not finish in its first slice)
+
+    def __post_init__(self) -> None:
+        self.spent = [0.0] * len(self.members)
+        self.live = set(range(len(self.members)))
+        self.waiting = dict(self.start_after)
 
 
 @dataclass
@@ -107,6 +128,7 @@ class ReachabilityOracle:
         self._relaxed: RelaxedTask | None = None
         self._pairs: PairReachability | None = None
         self._counting: OperatorCounting | None = None
+        self._paused: dict[int, _Turns] = {}
         # Index actions by one positive precondition so successor generation
         # skips most inapplicable actions; actions without one are always tried
         # (bucket 0, entries with pre_pos = 0).
@@ -236,8 +258,12 @@ class ReachabilityOracle:
             plan.append(act)
         return plan
 
-    def solve(self, state: int) -> list[GroundAction] | None:
-        """A plan from ``state`` to the goal, or None if the goal is unreachable."""
+    def solve(self, state: int, pause_at: float | None = None) -> list[GroundAction] | None:
+        """A plan from ``state`` to the goal, or None if the goal is unreachable.
+
+        With ``pause_at`` (a ``time.monotonic()`` value) a check still undecided then raises
+        :class:`CheckPaused`; the next call for the same state resumes it (up to :data:`MAX_PAUSED` kept).
+        """
         self.stats.calls += 1
         start = state & self.mask
         if start in self.alive:
@@ -246,36 +272,27 @@ class ReachabilityOracle:
         if start in self.dead:
             self.stats.memo_hits += 1
             return None
-        pairs = self.pairs().steps(start)
-        verdict = _run_for(pairs, PAIR_CHECK_FIRST_S)
-        if verdict is False:
-            return self._proved_dead(start)
-        if self.guided:
-            climbed = self._hill_climb(start)
-            if climbed is None:
-                self.dead.add(start)
-                return None
-            if climbed is not False and climbed:
-                self.stats.hill_climbs += 1
-                return self._record(climbed, climbed[-1][2])
-        members = [self._goal_count_search(start), self._ff_search(start)]
-        if verdict is None:  # the pair check did not finish in its first slice: it goes on beside the searches
-            members.append(pairs)
-        start_after = {}
-        if not self.space.task.is_adl and len(self.actions) <= COUNTING_MAX_ACTIONS:
-            start_after[len(members)] = COUNTING_AFTER_S
-            members.append(self._counting_check(start))
+        turns = self._paused.pop(start, None)
+        if turns is None:
+            decided, answer = self._first_checks(start)
+            if decided:
+                return answer
+            turns = answer
         # The last call's searches stay referenced until the next call: a
         # deadline that stops this one does not wait for them to be freed.
-        self._scratch = members
-        index, result = self._portfolio(members, start_after)
-        for member in members:
+        self._scratch = turns.members
+        try:
+            index, result = self._portfolio(turns, pause_at)
+        except CheckPaused:
+            self._pause(start, turns)
+            raise
+        for member in turns.members:
             member.close()  # decided: the others stop (their statistics are counted)
-        if index == 2 and verdict is None:
+        if index == 2 and turns.pairs_pending:
             return self._proved_dead(start)
         if index == 1:
             self.stats.ff_searches += 1
-        if index in start_after:
+        if index in turns.start_after:
             self.stats.counting_proofs += 1
         kind, found = result
         if kind == "dead":
@@ -283,6 +300,39 @@ class ReachabilityOracle:
             return None
         steps, end = found
         return self._record(steps, end)
+
+    def _first_checks(self, start: int) -> tuple[bool, Any]:
+        """(True, the answer) when the h^2 check's first slice or the hill-climb decides ``start``, else
+        (False, the portfolio that decides it)."""
+        pairs = self.pairs().steps(start)
+        verdict = _run_for(pairs, PAIR_CHECK_FIRST_S)
+        if verdict is False:
+            return True, self._proved_dead(start)
+        if self.guided:
+            climbed = self._hill_climb(start)
+            if climbed is None:
+                self.dead.add(start)
+                return True, None
+            if climbed is not False and climbed:
+                self.stats.hill_climbs += 1
+                return True, self._record(climbed, climbed[-1][2])
+        members = [self._goal_count_search(start), self._ff_search(start)]
+        if verdict is None:  # the pair check did not finish in its first slice: it goes on beside the searches
+            members.append(pairs)
+        start_after = {}
+        if not self.space.task.is_adl and len(self.actions) <= COUNTING_MAX_ACTIONS:
+            start_after[len(members)] = COUNTING_AFTER_S
+            members.append(self._counting_check(start))
+        return False, _Turns(members, start_after, verdict is None)
+
+    def _pause(self, start: int, turns: _Turns) -> None:
+        """Keep ``turns`` to resume ``start``'s check, dropping the check paused longest ago beyond
+        :data:`MAX_PAUSED`."""
+        self._paused[start] = turns
+        while len(self._paused) > MAX_PAUSED:
+            oldest = next(iter(self._paused))
+            for member in self._paused.pop(oldest).members:
+                member.close()
 
     def _proved_dead(self, start: int) -> None:
         self.stats.pair_proofs += 1
@@ -302,18 +352,17 @@ class ReachabilityOracle:
             return "dead", {start}
         return True
 
-    def _portfolio(self, members: list[Generator], start_after: dict[int, float] | None = None) -> tuple[int, Any]:
+    def _portfolio(self, turns: _Turns, pause_at: float | None = None) -> tuple[int, Any]:
         """Run the members in turns, each when it has had the least time, until one decides.
 
         Returns (member index, its verdict).  The goal-count search is cheap
         per state and refutes small spaces; the h^FF search confirms a plan
         in about plan-length evaluations; the pair check refutes with no
         search at all.  Interleaved, a call costs at most a few times what the
-        member suited to the candidate would have cost alone.
+        member suited to the candidate would have cost alone.  Past ``pause_at``
+        it raises :class:`CheckPaused` (``turns`` keeps where it stopped).
         """
-        spent = [0.0] * len(members)
-        live = set(range(len(members)))
-        waiting = dict(start_after or {})  # member -> portfolio time before its first turn
+        members, spent, live, waiting = turns.members, turns.spent, turns.live, turns.waiting
         deadline = self.deadline
         while True:
             if waiting:
@@ -341,6 +390,8 @@ class ReachabilityOracle:
                 from guided_lfd.planning.search import SearchStopped
 
                 raise SearchStopped()
+            if pause_at is not None and now > pause_at:
+                raise CheckPaused()
 
     def _successors(self, s: int) -> Iterator[tuple[GroundAction, int]]:
         """(action, next state) for every relevant action applicable in ``s``."""

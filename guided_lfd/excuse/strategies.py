@@ -19,7 +19,7 @@ from guided_lfd.deadline import linger
 from guided_lfd.errors import SearchTimeout
 from guided_lfd.excuse.lmcut import INF, Bound, RelaxedExcuseTask
 from guided_lfd.excuse.progress import ProgressMeter
-from guided_lfd.excuse.reach import ReachabilityOracle
+from guided_lfd.excuse.reach import CheckPaused, ReachabilityOracle
 from guided_lfd.excuse.space import ChangeSpace
 from guided_lfd.excuse.status import ExcuseStatus
 from guided_lfd.excuse.portfolio import PortfolioSearch
@@ -28,6 +28,10 @@ from guided_lfd.planning.grounding import GroundAction, bits
 from guided_lfd.planning.search import SearchStopped
 
 __all__ = ["STRATEGIES", "DEFAULT_STRATEGY", "SearchLimits", "SearchOutcome", "SearchStopped", "Strategy"]
+
+
+#: Seconds a candidate's reachability check runs before it pauses for the rest of its f (doubled each turn).
+CHECK_SLICE_S = 1.0
 
 
 def clock() -> float:
@@ -206,6 +210,7 @@ class _LandmarkRun:
         self.heap: list[tuple[float, int, int, int]] = [(0, 0, 0, 0)]
         self.inherited: dict[int, list[tuple[int, int]] | None] = {0: None}
         self.pins: dict[int, int] = {0: 0}
+        self.slices: dict[int, float] = {}  # a paused candidate's next check slice
         linger(self.heap, self.inherited, self.pins)  # never freed after a deadline (see guided_lfd.deadline)
         self.best: float | None = None
         self.g_limit: float = INF  # the heaviest node still worth expanding, once an excuse is found
@@ -253,7 +258,7 @@ class _LandmarkRun:
             if progress is not None and progress.due():
                 progress.search(self.expanded, self.oracle.stats.calls, self.candidates,
                                 self.space.cost_bound(self.bound))
-            branch = self.branch(g, state, changes, landmarks, pinned)
+            branch = self.branch(f, g, state, changes, landmarks, pinned)
             if branch is None:
                 continue
             if branch == _DONE:
@@ -330,7 +335,8 @@ class _LandmarkRun:
             return None
         return fresh
 
-    def branch(self, g: int, state: int, changes: int, landmarks: list[tuple[int, int]], pinned: int) -> int | None:
+    def branch(self, f: float, g: int, state: int, changes: int, landmarks: list[tuple[int, int]],
+               pinned: int) -> int | None:
         """The atoms to branch on (none of ``pinned``): a violated group's repairs, the smallest landmark, or,
         at a relaxed-solvable consistent node, the oracle's verdict (an excuse, or all relevant changes).
 
@@ -356,19 +362,33 @@ class _LandmarkRun:
             if self.task.satisfies_goal(state):
                 branch = self.goal_atoms & free
             else:
-                return self.check_candidate(g, state, changes, free)
+                return self.check_candidate(f, g, state, changes, pinned)
         return branch
 
-    def check_candidate(self, g: int, state: int, changes: int, free: int) -> int | None:
-        """Ask the oracle about a candidate excuse; the relevant changes to branch on (of ``free``) if it is
-        none."""
+    def check_candidate(self, f: float, g: int, state: int, changes: int, pinned: int) -> int | None:
+        """Ask the oracle about a candidate excuse; the relevant changes to branch on (none pinned) if it is
+        none.
+
+        A check still undecided after its slice (:data:`CHECK_SLICE_S`, doubled each time it comes back)
+        pauses: the candidate is queued again at the same f, after the nodes of that f queued before it, so
+        a lighter question (another candidate as light, say) is answered first; asked again, the check
+        resumes where it stopped.
+        """
         if self.solutions and (g > self.g_limit or any(changes & found == found for found in self.solutions)
                                or self.space.cost(changes) > self.space.cost(self.solutions[0]) + self.limits.slack):
             return None  # beyond the slack, or an excuse with changes added: no other choice
-        self.candidates += 1
-        plan = self.oracle.solve(state)
+        slice_s = self.slices.get(changes)
+        if slice_s is None:
+            self.candidates += 1
+            slice_s = CHECK_SLICE_S
+        try:
+            plan = self.oracle.solve(state, pause_at=time.monotonic() + slice_s)
+        except CheckPaused:
+            self.slices[changes] = 2 * slice_s
+            self.push(f, g, changes, [], pinned)
+            return None
         if plan is None:
-            return self.relevant_changes & free
+            return self.relevant_changes & self.space.changeable & ~changes & ~pinned
         if self.best is None:
             self.best = g
             # Weights are cost x size_factor + size: all excuses up to the slack's cost weigh less than this.

@@ -20,13 +20,14 @@ class Forked:
     """``target(*args)`` running in a forked process; :meth:`poll` for its answer, :meth:`stop` to end it.
 
     ``answer`` is ``("ok", value)`` or ``("error", message)`` once it has come (a worker that died without
-    answering, e.g. killed for memory, gives ``("error", ...)`` too).
+    answering, e.g. killed for memory, gives ``("error", ...)`` too).  ``niceness`` (0: none) lowers the
+    worker's scheduling priority: where cores are short it takes what the search here leaves.
     """
 
-    def __init__(self, target: Callable[..., Any], *args: Any) -> None:
+    def __init__(self, target: Callable[..., Any], *args: Any, niceness: int = 0) -> None:
         context = multiprocessing.get_context("fork")
         self._receive, send = context.Pipe(duplex=False)
-        self.process = context.Process(target=_run, args=(send, target, args), daemon=True)
+        self.process = context.Process(target=_run, args=(send, target, args, niceness), daemon=True)
         self.process.start()
         send.close()
         self.answer: tuple[str, Any] | None = None
@@ -70,12 +71,14 @@ def _die_with_parent() -> None:
         pass
 
 
-def _run(send: Any, target: Callable[..., Any], args: tuple) -> None:
+def _run(send: Any, target: Callable[..., Any], args: tuple, niceness: int = 0) -> None:
     # The parent's handlers (its watchdog's alarm, the command line's clean-up on SIGTERM) are not the worker's.
     for sig in (signal.SIGALRM, signal.SIGTERM, signal.SIGINT):
         signal.signal(sig, signal.SIG_DFL)
     signal.setitimer(signal.ITIMER_REAL, 0)
     _die_with_parent()
+    if niceness:
+        os.nice(niceness)
     # The answer goes through the pipe: holding the parent's stdout and stderr open would keep a caller that
     # reads them (a benchmark runner) waiting for a worker its run no longer needs.
     devnull = os.open(os.devnull, os.O_WRONLY)
