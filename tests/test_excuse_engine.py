@@ -463,3 +463,30 @@ def test_the_landmark_search_queues_no_change_set_twice_and_pins_what_its_branch
     assert len(children) > 10
     assert len({child for _, child, _ in children}) == len(children)
     assert all(parent & ~pins == 0 and not child & pins for parent, child, pins in children)
+
+
+def test_a_paused_candidate_resumes_when_its_turn_comes_and_always_before_a_higher_f(monkeypatch):
+    """paused_due: not before its time while the heap has nodes of its f; at its time if no node of a lower f
+    waits; at once when every node left has a higher f (or none is left); never ahead of a lower f."""
+    from types import SimpleNamespace
+
+    from guided_lfd.excuse import strategies as module
+
+    now = [0.0]
+    monkeypatch.setattr(module, "clock", lambda: now[0])
+    entry = (3, -1, 1, 0b1)
+    run = SimpleNamespace(heap=[(3, -2, 2, 0b10)], paused=[(5.0, entry)])
+    due = module._LandmarkRun.paused_due
+    assert due(run) is None  # a node of its f waits and its time has not come
+    now[0] = 5.0
+    assert due(run) == entry and run.paused == []
+    run.paused, now[0] = [(9.0, entry)], 0.0
+    run.heap = [(4, -2, 2, 0b10)]
+    assert due(run) == entry  # every node left has a higher f: decided first
+    run.paused, run.heap = [(9.0, entry)], []
+    assert due(run) == entry
+    later = (5, -1, 3, 0b100)
+    run.paused, run.heap, now[0] = [(1.0, later)], [(4, -2, 2, 0b10)], 2.0
+    assert due(run) is None  # its time has come, but a node of a lower f waits
+    run.paused = [(1.0, later), (7.0, entry)]
+    assert due(run) == entry and run.paused == [(1.0, later)]  # the lowest f first when the heap has no f as low

@@ -9,6 +9,7 @@ brute force, so a registration is all a new strategy needs to be checked.
 
 from __future__ import annotations
 
+import bisect
 import heapq
 import time
 from contextlib import contextmanager
@@ -211,6 +212,8 @@ class _LandmarkRun:
         self.inherited: dict[int, list[tuple[int, int]] | None] = {0: None}
         self.pins: dict[int, int] = {0: 0}
         self.slices: dict[int, float] = {}  # a paused candidate's next check slice
+        #: Candidates whose check paused: (when it resumes, its heap entry), the earliest first.
+        self.paused: list[tuple[float, tuple[float, int, int, int]]] = []
         linger(self.heap, self.inherited, self.pins)  # never freed after a deadline (see guided_lfd.deadline)
         self.best: float | None = None
         self.g_limit: float = INF  # the heaviest node still worth expanding, once an excuse is found
@@ -231,8 +234,8 @@ class _LandmarkRun:
         """Expand nodes in order of f until the minimal excuses are found or the open list is empty."""
         heap, task, greedy = self.heap, self.task, self.greedy
         # Hot loop: one pass per node; the steps it calls do the work.
-        while heap:
-            key, neg_g, tie, changes = heapq.heappop(heap)
+        while heap or self.paused:
+            key, neg_g, tie, changes = self.paused_due() or heapq.heappop(heap)
             g = -neg_g
             f = key + g if greedy else key
             if self.best is not None and f > self.g_limit:
@@ -264,6 +267,25 @@ class _LandmarkRun:
             if branch == _DONE:
                 return
             self.expand(f, g, changes, landmarks, branch, pinned)
+
+    def paused_due(self) -> tuple[float, int, int, int] | None:
+        """The heap entry of a paused candidate to resume now, if any: the first one that comes before every
+        node left in the heap (A* decides it before any node of a higher f), else the first whose turn has
+        come (the others have had as long as its last slice) and that comes no later than the heap's next."""
+        paused = self.paused
+        if not paused:
+            return None
+        top = self.heap[0][0] if self.heap else INF
+        first = min(range(len(paused)), key=lambda k: paused[k][1])
+        if paused[first][1][0] < top:
+            return paused.pop(first)[1]
+        now = clock()
+        for k, (due, entry) in enumerate(paused):
+            if due > now:
+                break
+            if entry[0] <= top:
+                return paused.pop(k)[1]
+        return None
 
     def pause_for_probe(self, progress: ProgressMeter | None) -> None:
         """Search greedily for any excuse until ``probe.until`` (once), drop the changes it can do without, and
@@ -370,9 +392,9 @@ class _LandmarkRun:
         none.
 
         A check still undecided after its slice (:data:`CHECK_SLICE_S`, doubled each time it comes back)
-        pauses: the candidate is queued again at the same f, after the nodes of that f queued before it, so
-        a lighter question (another candidate as light, say) is answered first; asked again, the check
-        resumes where it stopped.
+        pauses: the other nodes of its f go on for as long again (another candidate as light may be a
+        quicker question) before it resumes where it stopped (:meth:`paused_due`), and it always resumes
+        before any node of a higher f.
         """
         if self.solutions and (g > self.g_limit or any(changes & found == found for found in self.solutions)
                                or self.space.cost(changes) > self.space.cost(self.solutions[0]) + self.limits.slack):
@@ -385,7 +407,10 @@ class _LandmarkRun:
             plan = self.oracle.solve(state, pause_at=time.monotonic() + slice_s)
         except CheckPaused:
             self.slices[changes] = 2 * slice_s
-            self.push(f, g, changes, [], pinned)
+            self.inherited[changes], self.pins[changes] = [], pinned
+            self.counter += 1
+            entry = (f - g if self.greedy else f, -g, self.counter, changes)
+            bisect.insort(self.paused, (clock() + slice_s, entry))
             return None
         if plan is None:
             return self.relevant_changes & self.space.changeable & ~changes & ~pinned
