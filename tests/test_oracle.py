@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import itertools
+import time
 from pathlib import Path
 
 import pytest
@@ -344,3 +345,50 @@ def test_a_paused_check_keeps_its_members_time_and_resumes_them(monkeypatch):
             members = turns.members
             pauses += 1
     assert pauses >= 2 and not oracle._paused and start & oracle.mask in oracle.dead
+
+
+def test_interleaved_pair_check_builds_keep_the_masks_aligned(monkeypatch):
+    """Two checks whose lazy h^2 builds interleave (one paused mid-build and resumed after another built
+    more) leave every action's masks at its own index, and a check in rotation with another still decides
+    like the check built alone: before, the resumed build appended from where it had stopped, so the masks
+    slid, and gripper's solvable initial state was proved dead."""
+    from guided_lfd.planning import h2
+    from guided_lfd.planning.h2 import _mask
+
+    root = Path(__file__).parent.parent / "data" / "benchmarks" / "ipc" / "gripper"
+    domain, problem = parse_task(root / "domain.pddl", root / "task01.pddl")
+    monkeypatch.setattr(h2, "ACTIONS_PER_STEP", 1)
+    oracle = _oracle(domain, problem)
+    relaxed, start = oracle.relaxed_task(), oracle.space.task.init & oracle.mask
+    pairs = PairReachability(relaxed)
+    first, second = pairs.steps(start), pairs.steps(start)
+    for generator, turns in ((first, 4), (second, 4), (first, 3)):
+        for _ in range(turns):
+            next(generator)
+    assert all(pairs.pre_masks[i] == _mask(relaxed.pre[i]) for i in range(len(pairs.pre_masks)))
+    assert len(pairs.pre_masks) == len(pairs.add_masks) == len(pairs.del_masks) <= len(relaxed.pre)
+
+    monkeypatch.setattr(h2, "ACTIONS_PER_STEP", 64)
+    monkeypatch.setattr(reach, "PAIR_CHECK_EAGER_BYTES", -1)  # a wide task's lazy build
+    monkeypatch.setattr(reach, "PAIR_CHECK_FIRST_S", 0.0)
+    monkeypatch.setattr(reach, "PORTFOLIO_SLICE_S", 0.0)
+    monkeypatch.setattr(reach, "COUNTING_AFTER_S", 1e9)
+    for silenced in ("_goal_count_search", "_ff_search"):  # only the pair check decides
+        monkeypatch.setattr(ReachabilityOracle, silenced, _never_decides)
+    oracle = _oracle(domain, problem)
+    oracle.guided = False
+    task = oracle.space.task
+    index = {str(a): i for i, a in enumerate(task.atoms)}
+    refuted = task.init ^ 1 << index["(at ball1 rooma)"]  # ball1 nowhere: h^2 refutes it
+    pending, decided = [task.init, refuted], []
+    for _ in range(2000):  # the initial state's check never ends here (only the pair check can decide)
+        state = pending.pop(0)
+        try:
+            plan = oracle.solve(state, pause_at=time.monotonic() + 0.002)
+        except reach.CheckPaused:
+            pending.append(state)
+            continue
+        decided.append((state, plan))
+        if state == refuted:
+            break
+    assert decided == [(refuted, None)]

@@ -264,15 +264,15 @@ class ReachabilityOracle:
         With ``pause_at`` (a ``time.monotonic()`` value) a check still undecided then raises
         :class:`CheckPaused`; the next call for the same state resumes it (up to :data:`MAX_PAUSED` kept).
         """
-        self.stats.calls += 1
         start = state & self.mask
-        if start in self.alive:
-            self.stats.memo_hits += 1
-            return self._record([], start)
-        if start in self.dead:
-            self.stats.memo_hits += 1
-            return None
         turns = self._paused.pop(start, None)
+        if turns is None:
+            self.stats.calls += 1  # a resumed check is the same call
+        if start in self.alive or start in self.dead:
+            for member in turns.members if turns is not None else ():
+                member.close()  # decided meanwhile by another check
+            self.stats.memo_hits += 1
+            return self._record([], start) if start in self.alive else None
         if turns is None:
             decided, answer = self._first_checks(start)
             if decided:

@@ -257,7 +257,8 @@ class _LandmarkRun:
                 landmarks = self.evaluate(f, g, state, changes, landmarks, pinned)
                 if landmarks is None:
                     continue  # requeued with a better bound, or a dead end
-            self.expanded += 1
+            if changes not in self.slices:  # a candidate whose check resumes was counted once
+                self.expanded += 1
             if progress is not None and progress.due():
                 progress.search(self.expanded, self.oracle.stats.calls, self.candidates,
                                 self.space.cost_bound(self.bound))

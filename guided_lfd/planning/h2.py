@@ -53,14 +53,19 @@ class PairReachability:
         """Build the action masks, yielding now and then; a build stopped early goes on where it stopped.
 
         :meth:`steps` builds what is missing first, so the cost of a wide task is paid only when its
-        check runs (a candidate that a search confirms first never pays it).
+        check runs (a candidate that a search confirms first never pays it).  Several builds may be
+        under way at once (checks paused and resumed): each goes on from where the lists stand after its
+        yield, never from where it stood before it.
         """
         relaxed = self.relaxed
         pos_id, neg_id = relaxed.pos_id, relaxed.neg_id
         n_real = len(relaxed.actions)
-        for ai in range(len(self.del_masks), len(relaxed.pre)):
+        while len(self.del_masks) < len(relaxed.pre):
+            ai = len(self.del_masks)
             if not ai % ACTIONS_PER_STEP:
                 yield
+                if len(self.del_masks) != ai:
+                    continue  # another build went on meanwhile
             # The three lists grow together, between two yields.
             self.pre_masks.append(_mask(relaxed.pre[ai]))
             self.add_masks.append(_mask(relaxed.add[ai]))
