@@ -176,3 +176,23 @@ def test_pinned_atoms_are_never_flipped_and_only_raise_the_bound(case, small, mo
         assert all(not (pinned >> i) & 1 for lm in got.landmarks for i in lm)
         raised += got.h > plain.h
     assert raised  # pinning the first landmark's atoms raises some bound
+
+
+@pytest.mark.parametrize("small", [True, False])
+def test_the_root_takes_disjoint_goal_landmarks_where_lmcut_lets_one_truck_serve_every_goal(small, monkeypatch):
+    """Transport task06 without drive (literal): LM-cut's first cut takes in every truck's place, after which
+    every other package is free (1 change); one cut per package, packed where they share no change, gives 5
+    (each package needs its own change: the minimal excuse has 7)."""
+    from guided_lfd.excuse import lmcut
+
+    monkeypatch.setattr(lmcut, "SMALL_TASK_ACTIONS", 10**9 if small else 0)
+    relaxed = relaxed_task("transport", "task06", "drive", Semantics.LITERAL)
+    init, weight = relaxed.space.task.init, relaxed.space.min_weight
+    true, cost = relaxed._initial_lists(init, 0) if small else relaxed._initial(init, 0)
+    relaxed._first_hmax = None
+    assert relaxed.unscale(relaxed._lmcut(true, list(cost) if small else cost.copy(), last=False).h) == weight
+    bound = relaxed.bound(init, 0)
+    assert bound.h == 5 * weight and len(bound.landmarks) == 5
+    atoms = [a for lm in bound.landmarks for a in lm]
+    assert len(atoms) == len(set(atoms))  # no change in two of them
+    assert sum(bound.costs) == 5 * weight * relaxed.scale

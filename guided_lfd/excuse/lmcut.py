@@ -173,6 +173,7 @@ class RelaxedExcuseTask:
             self.pre_owner = np.repeat(np.arange(n_actions, dtype=np.int64), self.n_pre)
             self.prec_ptr, self.prec_flat = _csr(prec_of)
             self.ach_ptr, self.ach_flat = _csr(achievers)
+            self.pre_achievers = np.diff(self.ach_ptr)[self.pre_flat]  # per precondition entry
             self.free_actions = np.flatnonzero(self.n_pre == 0)
             self.nonempty = np.flatnonzero(self.n_pre > 0)
 
@@ -289,10 +290,11 @@ class RelaxedExcuseTask:
                 h[frontier] = c
         return h
 
-    def _pcf(self, h: np.ndarray, last: bool) -> np.ndarray:
+    def _pcf(self, h: np.ndarray, last: bool, fewest: bool = False) -> np.ndarray:
         """Precondition choice function: for each action, a precondition of maximal h (-1 if none).
 
-        Ties go to the first (or, with ``last``, the last) such precondition.
+        Ties go to the first (or, with ``last``, the last) such precondition; with ``fewest``, first to
+        those with the fewest achievers (see :meth:`_packed_goal_landmarks`).
         """
         pcf = np.full(self.n_actions, -1, dtype=np.int64)
         if self.pre_flat.size == 0:
@@ -303,6 +305,13 @@ class RelaxedExcuseTask:
         best = np.full(self.n_actions, INF)
         best[self.nonempty] = amax
         is_max = vals == best[self.pre_owner]
+        if fewest:
+            size = vals.size
+            order = np.arange(size) if not last else size - 1 - np.arange(size)
+            key = np.where(is_max, self.pre_achievers * (size + 1) + order, np.iinfo(np.int64).max)
+            chosen = np.minimum.reduceat(key, starts) % (size + 1)
+            pcf[self.nonempty] = self.pre_flat[chosen if not last else size - 1 - chosen]
+            return pcf
         if last:
             pos = np.where(is_max, np.arange(vals.size), -1)
             chosen = np.maximum.reduceat(pos, starts)
@@ -370,13 +379,47 @@ class RelaxedExcuseTask:
         self._first_hmax = None
         first = self._lmcut(true, cost.copy(), last=False)
         if not changes and not pinned and not (first.h == INF or first.h == 0):
+            packed = self._packed_goal_landmarks(self._first_hmax, cost.copy())
             # The second run starts from the same costs: its first h^max pass
             # is the first run's, only the tie-breaking differs.
             second = self._lmcut(true, cost, last=True, initial_h=self._first_hmax)
-            first = second if second.h > first.h else first
+            first = max((first, second, packed), key=lambda b: b.h)  # the first of equals
         if first.h != INF:
             first.h = self.unscale(first.h)
         return first
+
+    def _packed_goal_landmarks(self, h, cost) -> Bound:
+        """Disjoint landmarks of single goals, each its own share of the changes' costs.
+
+        LM-cut's first cut can take in changes every goal shares (a truck "moved" to every place serves
+        every package: transport's root bound is one change while each package needs its own), and its
+        costs then make the rest free.  Here each goal fact gets its own cut from the same h^max (the goal
+        zone choosing, among tied preconditions, those with the fewest achievers: a package's place
+        rather than a truck's); cuts sharing no change are packed, smallest first, each worth its
+        cheapest change (a cost partition: no change is counted twice).
+        """
+        pcf = None if self.small else self._pcf(h, last=False, fewest=True)
+        cuts = []
+        for goal_fact in dict.fromkeys(self.goal_list):
+            if h[goal_fact] == 0 or h[goal_fact] == INF:
+                continue
+            if self.small:
+                zone = self._goal_zone_lists(goal_fact, h, last=False, fewest=True)
+                cut = sorted(f for f in zone if 0 < cost[f] < INF)
+            else:
+                zone = self._goal_zone(goal_fact, h, pcf)
+                cut = np.flatnonzero(zone & (cost > 0) & np.isfinite(cost)).tolist()
+            if cut:
+                cuts.append(cut)
+        chosen: list[list[int]] = []
+        used: set[int] = set()
+        for cut in sorted(cuts, key=len):
+            if used.isdisjoint(cut):
+                chosen.append(cut)
+                used.update(cut)
+        shares = [min(float(cost[f]) for f in cut) for cut in chosen]
+        return Bound(sum(shares), [sorted(self.fact_atom_list[f] for f in cut) for cut in chosen],
+                     [int(m) for m in shares])
 
     def unscale(self, value: float) -> int:
         """A bound in scaled cost units as an admissible bound in weight units."""
@@ -514,7 +557,7 @@ class RelaxedExcuseTask:
             landmarks.append(sorted(self.fact_atom_list[f] for f in cut))
             shares.append(int(m))
 
-    def _goal_zone_lists(self, goal_fact: int, h: list[float], last: bool) -> set[int]:
+    def _goal_zone_lists(self, goal_fact: int, h: list[float], last: bool, fewest: bool = False) -> set[int]:
         """:meth:`_goal_zone` on lists, for small tasks: the precondition choice function only for the
         achievers the zone meets.
 
@@ -523,7 +566,7 @@ class RelaxedExcuseTask:
         pass can cover it: the zone may be smaller and the bound higher.  Both zones are closed (every
         zero-cost achiever has a precondition inside), so both cuts are landmarks.
         """
-        pre = self.pre_lists
+        pre, achievers = self.pre_lists, self.achiever_lists
         zone = {goal_fact}
         frontier = [goal_fact]
         while frontier:
@@ -538,6 +581,9 @@ class RelaxedExcuseTask:
                         continue
                     if len(p) == 1:
                         f = p[0]
+                    elif fewest:
+                        best = max(h[x] for x in p)
+                        f = min((x for x in p if h[x] == best), key=lambda x: len(achievers[x]))
                     else:
                         vals = [h[x] for x in p]
                         best = max(vals)
