@@ -305,12 +305,10 @@ class RelaxedExcuseTask:
         best = np.full(self.n_actions, INF)
         best[self.nonempty] = amax
         is_max = vals == best[self.pre_owner]
-        if fewest:
+        if fewest:  # then the first of the tied entries with the fewest achievers (``last`` is not used)
             size = vals.size
-            order = np.arange(size) if not last else size - 1 - np.arange(size)
-            key = np.where(is_max, self.pre_achievers * (size + 1) + order, np.iinfo(np.int64).max)
-            chosen = np.minimum.reduceat(key, starts) % (size + 1)
-            pcf[self.nonempty] = self.pre_flat[chosen if not last else size - 1 - chosen]
+            key = np.where(is_max, self.pre_achievers * (size + 1) + np.arange(size), np.iinfo(np.int64).max)
+            pcf[self.nonempty] = self.pre_flat[np.minimum.reduceat(key, starts) % (size + 1)]
             return pcf
         if last:
             pos = np.where(is_max, np.arange(vals.size), -1)
@@ -379,7 +377,7 @@ class RelaxedExcuseTask:
         self._first_hmax = None
         first = self._lmcut(true, cost.copy(), last=False)
         if not changes and not pinned and not (first.h == INF or first.h == 0):
-            packed = self._packed_goal_landmarks(self._first_hmax, cost.copy())
+            packed = self._packed_goal_landmarks(self._first_hmax, cost)  # reads cost; the run below consumes it
             # The second run starts from the same costs: its first h^max pass
             # is the first run's, only the tie-breaking differs.
             second = self._lmcut(true, cost, last=True, initial_h=self._first_hmax)
