@@ -221,6 +221,10 @@ class _LandmarkRun:
         self.plans: dict[int, list[GroundAction]] = {}
         self.candidates = self.expanded = self.evaluations = 0
         self.size_pruned = False
+        # Only A* splits on static groups: a moved group's child looks cheap to a greedy search (its other
+        # groups still "at two places"), which then goes deep into moves and rarely finds an excuse.
+        self.static_groups = [] if greedy else static_groups(space)
+        self.decisions = 0
 
     def push(self, f: float, g: int, changes: int, landmarks: list[tuple[int, int]] | None, pinned: int) -> None:
         """Queue ``changes`` (cost ``g``) at priority ``f`` with the landmarks it inherits and the atoms its
@@ -379,6 +383,9 @@ class _LandmarkRun:
                 return None  # the group cannot be repaired any more
         if landmarks:
             smallest = min((lm for lm, _ in landmarks), key=int.bit_count)
+            if not violated and self.static_groups and self.decide(f, g, state, changes, landmarks, pinned,
+                                                                   smallest):
+                return None
             if not branch or smallest.bit_count() < branch.bit_count():
                 branch = smallest
         elif not violated:
@@ -387,6 +394,41 @@ class _LandmarkRun:
             else:
                 return self.check_candidate(f, g, state, changes, pinned)
         return branch
+
+    def decide(self, f: float, g: int, state: int, changes: int, landmarks: list[tuple[int, int]], pinned: int,
+               landmark: int) -> bool:
+        """Split on a static group ``landmark`` meets, if any: its true atom stays, or it moves to another.
+
+        A static group's atoms are added by no robot action, so its atom in the excuse state is its atom
+        for good; but the delete relaxation keeps the initial atom beside one a change adds (a truck that
+        cannot drive "moved" to a second place serves both).  So before branching on such a landmark the
+        node splits: one child pins the group's true atom q (the relaxation is exact for the group and
+        LM-cut is recomputed), and each other child moves it (removes q, adds one other relevant atom of
+        the group).  Removing q alone is no child: with no negative precondition or goal on q (see
+        :func:`static_groups`) it only disables actions, so an excuse doing it is never minimal.
+        True when the children were queued.
+        """
+        space = self.space
+        free = space.changeable & ~changes & ~pinned
+        for mask in self.static_groups:
+            if not landmark & mask:
+                continue
+            present = state & mask
+            if present.bit_count() != 1 or not present & free:
+                continue  # decided already: its atom was changed, pinned or is fixed
+            self.decisions += 1
+            q = present.bit_length() - 1
+            init, weights = self.task.init, space.weights
+            for i in bits(mask & free & space.relevant_atoms & ~present):
+                moved = changes | present | (1 << i)
+                cg = g + weights[q] + weights[i]
+                self.push(max(f, cg + space.consistency_bound(init ^ moved)), cg, moved, [], pinned)
+            kept_pins = pinned | (mask & free)
+            if all(lm & ~kept_pins for lm, _ in landmarks):
+                # Fresh LM-cut when it comes up (None): the pins make its bound the stronger one.
+                self.push(f, g, changes, None, kept_pins)
+            return True
+        return False
 
     def check_candidate(self, f: float, g: int, state: int, changes: int, pinned: int) -> int | None:
         """Ask the oracle about a candidate excuse; the relevant changes to branch on (none pinned) if it is
@@ -476,6 +518,35 @@ class _LandmarkRun:
 
 #: ``_LandmarkRun.branch``'s answer when the search is over (enough minimal excuses found).
 _DONE = -1
+
+
+def static_groups(space: ChangeSpace) -> list[int]:
+    """The mutex groups (as masks) of the consistent semantics whose atom in the excuse state is there for good,
+    and whose true atom q an excuse only removes to put another in its place.
+
+    No relevant robot action adds an atom of the group; one atom q is true initially, in no other group,
+    no goal, no negative precondition or goal.  Without negative conditions on q, removing it only
+    disables actions (STRIPS is monotone), and q's only group stays consistent with q: an excuse that
+    removes q and adds no atom of the group weighs more than the same excuse keeping q.  Tasks with
+    conditional effects or derived atoms have none.
+    """
+    task = space.task
+    if task.is_adl:
+        return []
+    added = 0
+    for act in space.relevant_actions:
+        for i in act.add_ids:
+            added |= 1 << i
+    out = []
+    for group in space.groups:
+        present = task.init & group.mask
+        if group.mask & added or present.bit_count() != 1 or not group.mask & space.relevant_atoms:
+            continue
+        q = present.bit_length() - 1
+        if len(space.groups_of.get(q, ())) != 1 or present & (space.negation_needed | task.goal_pos):
+            continue
+        out.append(group.mask)
+    return out
 
 
 def colex_subsets(atoms: list[int], size: int, end: int | None = None) -> Iterator[int]:
