@@ -408,9 +408,9 @@ class _LandmarkRun:
         :func:`static_groups`) it only disables actions, so an excuse doing it is never minimal.
         True when the children were queued.
         """
-        space = self.space
+        space, max_size = self.space, self.limits.max_size
         free = space.changeable & ~changes & ~pinned
-        for mask in self.static_groups:
+        for mask, targets in self.static_groups:
             if not landmark & mask:
                 continue
             present = state & mask
@@ -419,7 +419,10 @@ class _LandmarkRun:
             self.decisions += 1
             q = present.bit_length() - 1
             init, weights = self.task.init, space.weights
-            for i in bits(mask & free & space.relevant_atoms & ~present):
+            moves = targets & free & ~present
+            if moves and max_size is not None and changes.bit_count() + 2 > max_size:
+                self.size_pruned, moves = True, 0
+            for i in bits(moves):
                 moved = changes | present | (1 << i)
                 cg = g + weights[q] + weights[i]
                 self.push(max(f, cg + space.consistency_bound(init ^ moved)), cg, moved, [], pinned)
@@ -520,15 +523,16 @@ class _LandmarkRun:
 _DONE = -1
 
 
-def static_groups(space: ChangeSpace) -> list[int]:
-    """The mutex groups (as masks) of the consistent semantics whose atom in the excuse state is there for good,
-    and whose true atom q an excuse only removes to put another in its place.
+def static_groups(space: ChangeSpace) -> list[tuple[int, int]]:
+    """The mutex groups of the consistent semantics whose atom in the excuse state is there for good, and whose
+    true atom q an excuse only removes to put another in its place: (group mask, the atoms worth moving to).
 
     No relevant robot action adds an atom of the group; one atom q is true initially, in no other group,
     no goal, no negative precondition or goal.  Without negative conditions on q, removing it only
     disables actions (STRIPS is monotone), and q's only group stays consistent with q: an excuse that
-    removes q and adds no atom of the group weighs more than the same excuse keeping q.  Tasks with
-    conditional effects or derived atoms have none.
+    removes q and adds no atom of the group weighs more than the same excuse keeping q.  Nor does adding
+    an irrelevant atom g in its place help, unless g also fills another exactly-one group (dropping both
+    changes then breaks that group).  Tasks with conditional effects or derived atoms have none.
     """
     task = space.task
     if task.is_adl:
@@ -538,15 +542,35 @@ def static_groups(space: ChangeSpace) -> list[int]:
         for i in act.add_ids:
             added |= 1 << i
     out = []
-    for group in space.groups:
+    for k, group in enumerate(space.groups):
         present = task.init & group.mask
         if group.mask & added or present.bit_count() != 1 or not group.mask & space.relevant_atoms:
             continue
         q = present.bit_length() - 1
         if len(space.groups_of.get(q, ())) != 1 or present & (space.negation_needed | task.goal_pos):
             continue
-        out.append(group.mask)
+        targets = group.mask & space.relevant_atoms
+        for i in bits(group.mask & ~space.relevant_atoms):
+            if any(_fills_usefully(space, j, k) for j in space.groups_of.get(i, ())):
+                targets |= 1 << i
+        out.append((group.mask, targets))
     return out
+
+
+def _fills_usefully(space: ChangeSpace, j: int, k: int) -> bool:
+    """Whether an atom of group ``j`` (not the static group ``k``) may be worth adding to fill that group: it is an
+    exactly-one group whose initial atom h0 an excuse may want gone (h0 under a negative condition, a goal, or
+    in another group where it makes room).  Otherwise an excuse removing h0 and adding the atom weighs more than
+    the same excuse with both undone (the other group then holds h0 alone)."""
+    group = space.groups[j]
+    if j == k or not group.exactly_one:
+        return False
+    initial = space.task.init & group.mask
+    if initial.bit_count() != 1:
+        return True  # not the case the argument covers: keep the atom
+    h0 = initial.bit_length() - 1
+    task = space.task
+    return bool(initial & (space.negation_needed | task.goal_pos | task.goal_neg)) or len(space.groups_of[h0]) > 1
 
 
 def colex_subsets(atoms: list[int], size: int, end: int | None = None) -> Iterator[int]:
