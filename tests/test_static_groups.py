@@ -167,6 +167,18 @@ def test_a_move_onto_an_irrelevant_atom_that_fills_another_exactly_one_group_is_
     assert sorted(changes_of(found)) == sorted(changes_of(reference))
 
 
+@pytest.mark.parametrize("strategy", ["landmark", "portfolio"])
+def test_a_failed_move_does_not_queue_the_other_move_again(strategy):
+    """A moved child pins the group's other atoms: the pillar moved to sa fails its check and branches on the
+    relevant changes, which must not include moving it to sb as well (the sb child does the same, and the one
+    change set queued twice crashed the search with a KeyError; found by a review)."""
+    domain, problem = parse_task(DATA / "relaxfail-domain.pddl", DATA / "relaxfail.pddl")
+    options = dict(semantics=Semantics.CONSISTENT, all_minimal=True, fixed=["done"])
+    found = find_excuses(domain, problem, ExcuseOptions(strategy=strategy, **options))
+    reference = find_excuses(domain, problem, ExcuseOptions(strategy="baseline", **options))
+    assert changes_of(found) == changes_of(reference) == [[f"+(m{k})" for k in range(1, 6)]]
+
+
 def test_a_move_beyond_max_size_is_no_excuse_within_the_size():
     """A move is two changes: with --max-size 1 the carts have no excuse within the size (found by a review: the
     split reported the size-2 move as an excuse)."""

@@ -283,9 +283,7 @@ class RelaxedExcuseTask:
                 new = new[~reached[new]]
                 if new.size == 0:
                     break
-                mark = np.zeros(self.n_facts, dtype=bool)
-                mark[new] = True
-                frontier = np.flatnonzero(mark)
+                frontier = np.unique(new)
                 reached[frontier] = True
                 h[frontier] = c
         return h

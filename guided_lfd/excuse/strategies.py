@@ -425,7 +425,9 @@ class _LandmarkRun:
             for i in bits(moves):
                 moved = changes | present | (1 << i)
                 cg = g + weights[q] + weights[i]
-                self.push(max(f, cg + space.consistency_bound(init ^ moved)), cg, moved, [], pinned)
+                # Its extensions add no other atom of the group (pinned: no change set is queued twice).
+                self.push(max(f, cg + space.consistency_bound(init ^ moved)), cg, moved, [],
+                          pinned | (mask & free & ~present & ~(1 << i)))
             kept_pins = pinned | (mask & free)
             if all(lm & ~kept_pins for lm, _ in landmarks):
                 # Fresh LM-cut when it comes up (None): the pins make its bound the stronger one.
