@@ -105,3 +105,15 @@ def record_figures(monkeypatch: pytest.MonkeyPatch, module: object) -> dict[str,
 
     monkeypatch.setattr(module, "save_figure", record)
     return drawn
+
+
+def assert_brute_force_outcome(report, size: int | None, expected: list[list[str]]) -> None:
+    """``report`` says what a brute force found: already solvable (size 0), no excuse within its size (None), or
+    exactly the ``expected`` minimal excuses (each a sorted list of change strings)."""
+    if size == 0:
+        assert report.status == "already-solvable"
+    elif size is None:
+        assert report.status in ("no-excuse", "no-excuse-within-size")
+    else:
+        assert report.status == "excuse-found"
+        assert sorted(sorted(str(c) for c in e.changes) for e in report.excuses) == expected

@@ -10,7 +10,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from conftest import ROOT
+from conftest import ROOT, assert_brute_force_outcome
 from guided_lfd.excuse import strategies as module
 from guided_lfd.excuse.engine import ExcuseOptions, find_excuses
 from guided_lfd.excuse.invariants import mutex_groups
@@ -214,14 +214,7 @@ def test_the_split_on_static_groups_finds_brute_forces_excuses(tmp_path_factory,
     domain, problem = parse_task(DATA / "domain.pddl", folder / "p.pddl")
     report = find_excuses(domain, problem, ExcuseOptions(semantics=Semantics.CONSISTENT, strategy="landmark",
                                                          all_minimal=True, max_size=4))
-    size, minimal = carts_brute_force(problem, checker_laws(domain, problem, report))
-    if size == 0:
-        assert report.status == "already-solvable"
-    elif size is None:
-        assert report.status in ("no-excuse", "no-excuse-within-size")
-    else:
-        assert report.status == "excuse-found"
-        assert sorted(sorted(e) for e in changes_of(report)) == minimal
+    assert_brute_force_outcome(report, *carts_brute_force(problem, checker_laws(domain, problem, report)))
 
 
 def test_depot_without_drive_is_answered_with_few_nodes():
