@@ -224,7 +224,6 @@ class _LandmarkRun:
         # Only A* splits on static groups: a moved group's child looks cheap to a greedy search (its other
         # groups still "at two places"), which then goes deep into moves and rarely finds an excuse.
         self.static_groups = [] if greedy else static_groups(space)
-        self.decisions = 0
 
     def push(self, f: float, g: int, changes: int, landmarks: list[tuple[int, int]] | None, pinned: int) -> None:
         """Queue ``changes`` (cost ``g``) at priority ``f`` with the landmarks it inherits and the atoms its
@@ -403,8 +402,8 @@ class _LandmarkRun:
         for good; but the delete relaxation keeps the initial atom beside one a change adds (a truck that
         cannot drive "moved" to a second place serves both).  So before branching on such a landmark the
         node splits: one child pins the group's true atom q (the relaxation is exact for the group and
-        LM-cut is recomputed), and each other child moves it (removes q, adds one other relevant atom of
-        the group).  Removing q alone is no child: with no negative precondition or goal on q (see
+        LM-cut is recomputed), and each other child moves it (removes q, adds one of the group's targets:
+        see :func:`static_groups`).  Removing q alone is no child: with no negative precondition or goal on q (see
         :func:`static_groups`) it only disables actions, so an excuse doing it is never minimal.
         True when the children were queued.
         """
@@ -416,7 +415,6 @@ class _LandmarkRun:
             present = state & mask
             if present.bit_count() != 1 or not present & free:
                 continue  # decided already: its atom was changed, pinned or is fixed
-            self.decisions += 1
             q = present.bit_length() - 1
             init, weights = self.task.init, space.weights
             moves = targets & free & ~present
@@ -537,19 +535,23 @@ def static_groups(space: ChangeSpace) -> list[tuple[int, int]]:
     changes then breaks that group).  Tasks with conditional effects or derived atoms have none.
     """
     task = space.task
-    if task.is_adl:
+    if task.is_adl or not space.groups:
         return []
-    added = 0
-    for act in space.relevant_actions:
-        for i in act.add_ids:
-            added |= 1 << i
-    out = []
+    candidates = []
     for k, group in enumerate(space.groups):
         present = task.init & group.mask
-        if group.mask & added or present.bit_count() != 1 or not group.mask & space.relevant_atoms:
+        if present.bit_count() != 1 or not group.mask & space.relevant_atoms:
             continue
         q = present.bit_length() - 1
-        if len(space.groups_of.get(q, ())) != 1 or present & (space.negation_needed | task.goal_pos):
+        if len(space.groups_of.get(q, ())) == 1 and not present & (space.negation_needed | task.goal_pos):
+            candidates.append((k, group))
+    if not candidates:
+        return []
+    # Indices, not a mask: OR-ing every action's atoms into one wide integer costs 0.1 s on a house.
+    added = {i for act in space.relevant_actions for i in act.add_ids}
+    out = []
+    for k, group in candidates:
+        if any(i in added for i in bits(group.mask)):
             continue
         targets = group.mask & space.relevant_atoms
         for i in bits(group.mask & ~space.relevant_atoms):
@@ -564,14 +566,13 @@ def _fills_usefully(space: ChangeSpace, j: int, k: int) -> bool:
     exactly-one group whose initial atom h0 an excuse may want gone (h0 under a negative condition, a goal, or
     in another group where it makes room).  Otherwise an excuse removing h0 and adding the atom weighs more than
     the same excuse with both undone (the other group then holds h0 alone)."""
-    group = space.groups[j]
+    group, task = space.groups[j], space.task
     if j == k or not group.exactly_one:
         return False
-    initial = space.task.init & group.mask
+    initial = task.init & group.mask
     if initial.bit_count() != 1:
         return True  # not the case the argument covers: keep the atom
     h0 = initial.bit_length() - 1
-    task = space.task
     return bool(initial & (space.negation_needed | task.goal_pos | task.goal_neg)) or len(space.groups_of[h0]) > 1
 
 
