@@ -21,12 +21,16 @@ from guided_lfd.errors import EXIT_TIME_LIMIT
 from guided_lfd.excuse import strategies
 from guided_lfd.excuse.check import check_excuse
 from guided_lfd.excuse.laws import derive_laws
+from guided_lfd.excuse.lmcut import RelaxedExcuseTask
+from guided_lfd.excuse.prepare import prepare
+from guided_lfd.excuse.space import Semantics
 from guided_lfd.excuse.engine import ExcuseOptions, ExcuseReport, find_excuses
 from guided_lfd.excuse.progress import Progress, ProgressMeter
 from guided_lfd.excuse.status import ExcuseStatus
 from guided_lfd.pddl.model import Domain, Problem
 from guided_lfd.pddl.reader import parse_domain, parse_task
 from guided_lfd.pddl.writer import domain_to_pddl
+from guided_lfd.planning.grounding import bits
 
 LOGISTICS = ROOT / "data" / "benchmarks" / "ipc" / "logistics"
 #: Far beyond any test: only the ticking clock ends the searches.
@@ -85,7 +89,7 @@ def blocks_without_unstack() -> tuple[Domain, Problem]:
 
 
 @pytest.mark.parametrize("strategy, task, opts, limit, steps", [
-    ("landmark", logistics_without_driving, options(), LIMIT, (0.5, 0.2, 0.1, 0.07)),
+    ("landmark", logistics_without_driving, options(), LIMIT, (0.5, 0.2, 0.1)),
     ("baseline", blocks_without_unstack, ExcuseOptions(strategy="baseline"), 20.0, (1.0, 0.1, 0.02)),
 ])
 def test_the_lower_bound_never_passes_the_minimum_and_grows_with_the_time(monkeypatch, strategy, task, opts,
@@ -135,6 +139,15 @@ def test_a_search_that_ends_in_time_drops_the_probes_excuse(monkeypatch):
     assert report.status is ExcuseStatus.FOUND and report.best_candidate is None
     assert report.statistics.lower_bound is None and report.statistics.counters["probe_expanded"] > 0
     assert report.to_dict()["best_candidate"] is None
+
+
+def test_a_minimal_excuse_from_the_probe_ends_the_run_when_the_bound_meets_it(monkeypatch):
+    # At 0.07 s per reading the probe (at 3/4 of the time) finds a 12-change excuse, then the bound reaches 12.
+    domain, problem = logistics_without_driving()
+    ticking_clock(monkeypatch, 0.07)
+    report = find_excuses(domain, problem, options(time_limit=LIMIT))
+    assert report.status is ExcuseStatus.FOUND and report.excuse.cost == 12 and report.best_candidate is None
+    assert report.statistics.counters["probe_adopted"] == 1
 
 
 def test_progress_reports_the_phases_then_a_growing_bound(monkeypatch):
@@ -225,3 +238,49 @@ def test_cli_progress_line_words():
     assert line == "searching: lower bound 4, 12,345 nodes, 67 reachability checks"
     line = progress_line(Progress("searching", 3.0, lower_bound=4, nodes=1, oracle_calls=2, best_cost=9))
     assert line.endswith(", best excuse so far costs 9")
+
+
+def landmark_run(incumbent_of=None, all_minimal: bool = False) -> strategies._LandmarkRun:
+    """The landmark search on logistics task11 without drive-truck, run to its end; ``incumbent_of(run)``, if
+    given, hands it a probe's excuse (change set, plan, weight) before it starts."""
+    domain, problem = logistics_without_driving()
+    prepared = prepare(domain, problem, Semantics.LITERAL, fixed=options().fixed_predicates(domain))
+    space = prepared.space
+    run = strategies._LandmarkRun(space, strategies.SearchLimits(all_minimal=all_minimal),
+                                  RelaxedExcuseTask(space), prepared.oracle)
+    if incumbent_of is not None:
+        run.incumbent = incumbent_of(run)
+    run.loop(None)
+    return run
+
+
+@pytest.fixture(scope="module")
+def full_run() -> strategies._LandmarkRun:
+    return landmark_run()
+
+
+def test_the_probes_excuse_ends_the_search_once_the_bound_meets_its_weight(full_run):
+    (minimal,) = full_run.solutions
+    weight = full_run.space.weight(minimal)
+    run = landmark_run(lambda r: (minimal, full_run.plans[minimal], weight))
+    assert run.solutions == [minimal] and run.adopted and run.bound >= weight
+    # The nodes of the minimal weight before the excuse, and the excuse itself, are never taken up.
+    assert run.expanded < full_run.expanded
+    assert run.outcome().extra["probe_adopted"] == 1
+
+
+def test_a_heavier_probe_excuse_is_not_taken_for_a_minimal_one(full_run):
+    (minimal,) = full_run.solutions
+    space = full_run.space
+    extra = next(i for i in bits(space.changeable & ~minimal))
+    heavier = minimal | 1 << extra
+    run = landmark_run(lambda r: (heavier, full_run.plans[minimal], space.weight(heavier)))
+    assert run.solutions == [minimal] and not run.adopted
+
+
+def test_every_minimal_excuse_wanted_the_probes_excuse_ends_nothing(full_run):
+    (minimal,) = full_run.solutions
+    weight = full_run.space.weight(minimal)
+    every = landmark_run(all_minimal=True)
+    run = landmark_run(lambda r: (minimal, full_run.plans[minimal], weight), all_minimal=True)
+    assert sorted(run.solutions) == sorted(every.solutions) and not run.adopted

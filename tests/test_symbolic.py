@@ -248,3 +248,35 @@ def test_the_excuse_variables_leave_out_atoms_no_minimal_excuse_changes(tmp_path
     names = {str(space.task.atoms[i]) for i in atoms}
     assert "(lifting hoist0 crate0)" in names and "(available crate0)" not in names
     assert len(atoms) < space.changeable.bit_count() / 2
+
+
+def _miconic_without_up(task: str):
+    from dataclasses import replace
+
+    miconic = ROOT / "data" / "benchmarks" / "ipc" / "miconic"
+    full, problem = parse_task(miconic / "domain.pddl", miconic / f"{task}.pddl")
+    return full, replace(full, actions=[a for a in full.actions if a.name != "up"]), problem
+
+
+@pytest.mark.parametrize("budget", [50_000, 1])
+def test_under_the_consistent_semantics_the_backward_search_stays_inside_the_invariants(monkeypatch, budget):
+    """The groups are inductive, so R's states that keep them are reached without leaving them (miconic
+    without up: no state with the lift at two floors is ever built); groups beyond the diagram budget are
+    applied afterwards.  Either way the answer is the landmark search's."""
+    from guided_lfd.excuse import symbolic
+    from guided_lfd.excuse.engine import ExcuseOptions, find_excuses
+    from guided_lfd.excuse.prepare import prepare
+    from guided_lfd.excuse.space import Semantics
+
+    monkeypatch.setattr(symbolic, "CONSTRAINT_NODES", budget)
+    full, domain, problem = _miconic_without_up("task03")
+    space = prepare(domain, problem, Semantics.CONSISTENT, fixed=["above", "destin", "origin"]).space
+    run = symbolic.SymbolicRun(space, None)
+    states = run.excuse_states()
+    dd = run.sym.dd
+    inside = run.sym.invariants([(g.mask, g.exactly_one) for g in space.groups])
+    assert space.groups and states != dd.false and states & ~inside == dd.false
+    assert (run.layers.reached & ~inside == dd.false) == (budget > 1)
+    answers = [find_excuses(domain, problem, ExcuseOptions(semantics="consistent", strategy=s, fixed_from=full))
+               for s in ("symbolic", "landmark")]
+    assert answers[0].excuse.cost == answers[1].excuse.cost

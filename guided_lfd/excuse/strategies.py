@@ -219,6 +219,9 @@ class _LandmarkRun:
         self.g_limit: float = INF  # the heaviest node still worth expanding, once an excuse is found
         self.solutions: list[int] = []
         self.plans: dict[int, list[GroundAction]] = {}
+        #: The probe's excuse (change set, plan, weight): minimal once the bound meets its weight.
+        self.incumbent: tuple[int, list[GroundAction], int] | None = None
+        self.adopted = False
         self.candidates = self.expanded = self.evaluations = 0
         self.size_pruned = False
         # Only A* splits on static groups: a moved group's child looks cheap to a greedy search (its other
@@ -242,6 +245,10 @@ class _LandmarkRun:
             g = -neg_g
             f = key + g if greedy else key
             if self.best is not None and f > self.g_limit:
+                return
+            if self.incumbent is not None and f >= self.incumbent[2] and not self.limits.all_minimal:
+                self.bound = f
+                self.adopt_incumbent()  # (--all wants every minimal excuse: the search goes on)
                 return
             if _timed_out(self.limits):
                 raise SearchTimeout("excuse search exceeded its time limit")
@@ -316,6 +323,14 @@ class _LandmarkRun:
             progress.phase("searching")
         if found is not None:
             probe.accept(*found)
+            self.incumbent = (*found, self.space.weight(found[0]))
+
+    def adopt_incumbent(self) -> None:
+        """The bound met the probe's excuse's weight: no lighter excuse exists, so it is a minimal one."""
+        assert self.incumbent is not None
+        changes, plan, _ = self.incumbent
+        self.solutions, self.plans = [changes], {changes: plan}
+        self.adopted = True
 
     def trimmed(self, changes: int, plan: list[GroundAction], until: float) -> tuple[int, list[GroundAction]]:
         """The excuse ``changes`` without each change it can do without (tried once each, the heaviest first),
@@ -506,6 +521,8 @@ class _LandmarkRun:
         """What the search found, with its effort."""
         stats = self.oracle.stats
         probed = {"probe_expanded": self.probe_expanded} if self.probe_expanded else {}
+        if self.adopted:
+            probed["probe_adopted"] = 1
         if timed_out:
             return SearchOutcome(self.solutions, self.plans, ExcuseStatus.TIMEOUT, self.candidates, stats.calls,
                                  self.expanded, {"evaluations": self.evaluations, "oracle_expanded": stats.expanded,
