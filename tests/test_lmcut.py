@@ -13,8 +13,9 @@ from conftest import ROOT
 from guided_lfd.excuse.engine import ExcuseOptions
 from guided_lfd.excuse.invariants import mutex_groups
 from guided_lfd.excuse.lmcut import INF, RelaxedExcuseTask
+from guided_lfd.excuse.prepare import prepare
 from guided_lfd.excuse.space import Semantics, build_space
-from guided_lfd.planning.grounding import ground
+from guided_lfd.planning.grounding import bits, ground
 from guided_lfd.pddl.reader import parse_domain, parse_task
 
 IPC = ROOT / "data" / "benchmarks" / "ipc"
@@ -196,3 +197,30 @@ def test_the_root_takes_disjoint_goal_landmarks_where_lmcut_lets_one_truck_serve
     atoms = [a for lm in bound.landmarks for a in lm]
     assert len(atoms) == len(set(atoms))  # no change in two of them
     assert sum(bound.costs) == 5 * weight * relaxed.scale
+
+
+DEPOT = ROOT / "data" / "benchmarks" / "ipc" / "depot"
+
+
+@pytest.mark.parametrize("semantics", [Semantics.LITERAL, Semantics.CONSISTENT])
+def test_the_closure_on_arrays_answers_as_the_one_on_lists(semantics):
+    full, problem = parse_task(DEPOT / "domain.pddl", DEPOT / "task04.pddl")
+    domain = replace(full, actions=[a for a in full.actions if a.name != "drive"])
+    fixed = ["crate", "depot", "distributor", "hoist", "locatable", "pallet", "place", "surface", "truck"]
+    space = prepare(domain, problem, semantics, fixed=fixed).space
+    relaxed = RelaxedExcuseTask(space)
+    assert not relaxed.small  # the arrays are built
+    task, rng = space.task, random.Random(7)
+    changeable = list(bits(space.changeable))
+    answers = set()
+    for k in range(300):
+        changes = sum(1 << i for i in rng.sample(changeable, rng.randint(0, 25)))
+        state = task.init ^ changes
+        if k % 3 == 1:
+            state |= task.goal_pos  # the goal's atoms added: often reached
+        relaxed.small = True
+        on_lists = relaxed.reaches_goal_unchanged(state)
+        relaxed.small = False
+        assert relaxed.reaches_goal_unchanged(state) == on_lists, k
+        answers.add(on_lists)
+    assert answers == {True, False}

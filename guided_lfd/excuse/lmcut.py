@@ -175,6 +175,7 @@ class RelaxedExcuseTask:
             self.ach_ptr, self.ach_flat = _csr(achievers)
             self.pre_achievers = np.diff(self.ach_ptr)[self.pre_flat]  # per precondition entry
             self.free_actions = np.flatnonzero(self.n_pre == 0)
+            self._free_add_array = np.array(self.free_adds, dtype=np.int64)
             self.nonempty = np.flatnonzero(self.n_pre > 0)
 
     def _group_charges_tables(self, space: ChangeSpace) -> None:
@@ -321,8 +322,11 @@ class RelaxedExcuseTask:
         """Whether the relaxed task reaches the goal from ``state`` with no change (LM-cut h = 0).
 
         A counter-based closure over the fact lists (linear in the relaxed
-        task), much cheaper than an h^max pass.
+        task), much cheaper than an h^max pass; on a large task the same
+        closure a layer at a time on arrays (depot: 1.4 ms a call on lists).
         """
+        if not self.small:
+            return self._reaches_goal_unchanged_arrays(state)
         pos_id, neg_id = self._pos_id, self._neg_id
         reached = bytearray(self.n_facts)
         queue = [pos_id[a] for a in bits(state & self._relevant)]
@@ -354,6 +358,30 @@ class RelaxedExcuseTask:
                             if not left:
                                 return True
         return False
+
+    def _reaches_goal_unchanged_arrays(self, state: int) -> bool:
+        state_bits = bitmask_to_array(state, self.n_atoms)[self.fact_atom]
+        reached = state_bits.copy()
+        reached[self.n_pos :] = ~state_bits[self.n_pos :]
+        frontier = np.flatnonzero(reached)
+        free = self._free_add_array
+        free = free[~reached[free]]
+        reached[free] = True
+        frontier = np.concatenate((frontier, free))
+        goal = self.goal
+        unsat = self.n_pre.copy()
+        while not reached[goal].all():
+            acts = _gather(self.prec_ptr, self.prec_flat, frontier)
+            if acts.size == 0:
+                return False
+            unsat -= np.bincount(acts, minlength=self.n_actions)
+            new = _gather(self.add_ptr, self.add_flat, acts[unsat[acts] == 0])
+            new = new[~reached[new]]
+            if new.size == 0:
+                return False
+            frontier = np.unique(new)
+            reached[frontier] = True
+        return True
 
     def bound(self, state: int, changes: int, pinned: int = 0) -> Bound:
         """LM-cut value and landmarks (as atom indices to flip) for excuses extending ``changes`` that flip no
