@@ -280,3 +280,39 @@ def test_under_the_consistent_semantics_the_backward_search_stays_inside_the_inv
     answers = [find_excuses(domain, problem, ExcuseOptions(semantics="consistent", strategy=s, fixed_from=full))
                for s in ("symbolic", "landmark")]
     assert answers[0].excuse.cost == answers[1].excuse.cost
+
+
+@pytest.mark.parametrize("model", ["model-moves", "model-static"])
+def test_groups_of_another_domain_the_robot_breaks_are_no_bound_on_its_backward_search(model):
+    """The robot teleports without leaving (a thing at two places on its way); the invariants come from a
+    model where things move, or never move (one place).  The robot's own plan breaks them, so the backward
+    search may not stay inside them: the one-change excuse +(flag), not three changes."""
+    from guided_lfd.excuse.engine import ExcuseOptions, find_excuses
+    from guided_lfd.pddl.reader import parse_domain
+
+    data = ROOT / "tests" / "data" / "borrowed-invariants"
+    domain, problem = parse_task(data / "robot.pddl", data / "problem.pddl")
+    opts = ExcuseOptions(semantics="consistent", strategy="symbolic", invariants_from=parse_domain(data / f"{model}.pddl"))
+    report = find_excuses(domain, problem, opts)
+    assert report.invariant_groups
+    assert [[str(c) for c in e.changes] for e in report.excuses] == [["+(flag)"]]
+
+
+def test_an_action_keeps_a_group_when_its_precondition_says_which_atom_was_true():
+    from guided_lfd.excuse.symbolic import keeps_group
+    from guided_lfd.planning.grounding import GroundAction
+
+    group = 0b111  # atoms 0, 1, 2: at most one true
+
+    def act(pre=0, neg=0, add=0, delete=0):
+        return GroundAction("a", "a", (), pre, neg, add, delete)
+
+    assert keeps_group(act(pre=0b001, add=0b010, delete=0b001), group, True)  # move: 0 -> 1
+    assert keeps_group(act(pre=0b010, add=0b010), group, False)  # adds what holds already
+    assert keeps_group(act(neg=0b100, add=0b010, delete=0b001), group, False)  # every other atom ends false
+    assert not keeps_group(act(pre=0b001, add=0b010), group, False)  # 0 stays true beside 1
+    assert not keeps_group(act(add=0b010), group, False)  # teleport: which atom held is unknown
+    assert not keeps_group(act(add=0b110), group, False)  # two at once
+    assert keeps_group(act(pre=0b001, delete=0b001), group, False)  # at most one: none is fine
+    assert not keeps_group(act(pre=0b001, delete=0b001), group, True)  # exactly one: not replaced
+    assert keeps_group(act(pre=0b1000, add=0b1000), group, True)  # touches no atom of the group

@@ -59,6 +59,25 @@ def excuse_atoms(space: ChangeSpace) -> set[int]:
     return atoms
 
 
+def keeps_group(action: GroundAction, mask: int, exactly_one: bool) -> bool:
+    """Whether ``action`` keeps the group ``mask`` (at most one atom true; ``exactly_one``: exactly one) in
+    every state that keeps it and meets its precondition (sufficient: False may be a group it keeps).
+
+    It may add one atom of the group, where the precondition says which atom was the true one (the added
+    atom itself, or one it deletes) or every other atom ends false; under exactly-one, one it deletes must
+    be replaced.
+    """
+    adds = action.add & mask
+    deletes = action.delete & mask & ~action.add  # an atom both added and deleted stays true (PDDL)
+    if not adds:
+        return not (exactly_one and deletes)
+    if adds & (adds - 1):
+        return False  # two atoms of the group at once
+    if action.pre_pos & adds or action.pre_pos & deletes:
+        return True  # the one true atom is known: the added one, or one the action removes
+    return not mask & ~adds & ~(action.delete | action.pre_neg)
+
+
 class SymbolicRun:
     """One symbolic excuse search: the diagrams of the task, the reached set R and its excuse states."""
 
@@ -85,12 +104,16 @@ class SymbolicRun:
         # at_most_one reads atoms that are no variables.
         variables = sum(1 << atom for atom in sym.atoms)
         kept = [(g.mask, g.exactly_one) for g in space.groups if g.mask & variables]
-        # Each group is inductive (every action keeps it), so the robot never leaves those it starts in:
-        # searching backward inside them reaches exactly R's states that keep them, and spares the diagram
-        # the states no excuse may have (miconic without up: a lift at many floors at once; 0.2 s, not
-        # minutes).  Groups whose conjunction outgrows the budget (depot's crates, hoists and surfaces)
-        # are applied to the reached set instead, one at a time.
-        inside, rest = self.constraint(kept)
+        # A group every robot action keeps (always so for groups synthesised from the robot's own domain;
+        # not for those of --invariants-from's model) the robot never leaves: searching backward inside
+        # such groups reaches exactly R's states that keep them, and spares the diagram the states no
+        # excuse may have (miconic without up: a lift at many floors at once; 0.2 s, not minutes).  The
+        # other groups, and those whose conjunction outgrows the budget (depot's crates, hoists and
+        # surfaces), are applied to the reached set instead, one at a time.
+        actions = [sa.action for sa in sym.actions]
+        inductive = [g for g in kept if all(keeps_group(a, *g) for a in actions)]
+        inside, rest = self.constraint(inductive)
+        rest += [g for g in kept if g not in inductive]
         self.layers = backward_layers(sym, constraint=inside, deadline=self.deadline)
         states = self.layers.reached & ~sym.goal()
         for mask, exactly in rest:
