@@ -316,3 +316,4 @@ def test_an_action_keeps_a_group_when_its_precondition_says_which_atom_was_true(
     assert keeps_group(act(pre=0b001, delete=0b001), group, False)  # at most one: none is fine
     assert not keeps_group(act(pre=0b001, delete=0b001), group, True)  # exactly one: not replaced
     assert keeps_group(act(pre=0b1000, add=0b1000), group, True)  # touches no atom of the group
+    assert keeps_group(act(pre=0b011, add=0b110, delete=0b001), group, True)  # needs two: never applies

@@ -67,6 +67,9 @@ def keeps_group(action: GroundAction, mask: int, exactly_one: bool) -> bool:
     atom itself, or one it deletes) or every other atom ends false; under exactly-one, one it deletes must
     be replaced.
     """
+    needed = action.pre_pos & mask
+    if needed & (needed - 1):
+        return True  # it needs two atoms of the group: it never applies in a state that keeps it
     adds = action.add & mask
     deletes = action.delete & mask & ~action.add  # an atom both added and deleted stays true (PDDL)
     if not adds:
