@@ -27,7 +27,7 @@ import copy
 from dataclasses import dataclass
 
 import math
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Iterator
 
 from guided_lfd.excuse.space import ChangeSpace
 from guided_lfd.planning.grounding import bits
@@ -174,8 +174,7 @@ class RelaxedExcuseTask:
             self.prec_ptr, self.prec_flat = _csr(prec_of)
             self.ach_ptr, self.ach_flat = _csr(achievers)
             self.pre_achievers = np.diff(self.ach_ptr)[self.pre_flat]  # per precondition entry
-            self.free_actions = np.flatnonzero(self.n_pre == 0)
-            self._free_add_array = np.array(self.free_adds, dtype=np.int64)
+            self.free_add_facts = np.array(self.free_adds, dtype=np.int64)
             self.nonempty = np.flatnonzero(self.n_pre > 0)
 
     def _group_charges_tables(self, space: ChangeSpace) -> None:
@@ -252,9 +251,7 @@ class RelaxedExcuseTask:
     def _initial(self, state: int, changes: int, pinned: int = 0) -> tuple[np.ndarray, np.ndarray]:
         """Facts true in ``state`` and the change cost of each other fact (INF = not changeable, or ``pinned``:
         an atom the change sets in question leave as it is)."""
-        state_bits = bitmask_to_array(state, self.n_atoms)[self.fact_atom]
-        true = state_bits.copy()
-        true[self.n_pos :] = ~state_bits[self.n_pos :]
+        true = self._true_facts(state)
         flippable = (self.changeable & ~bitmask_to_array(changes | pinned, self.n_atoms))[self.fact_atom] & ~true
         cost = np.where(flippable, self.fact_weight, INF)
         for k, charge in self._group_charges(state, changes, pinned):
@@ -262,31 +259,42 @@ class RelaxedExcuseTask:
             cost[facts] = INF if charge is None else cost[facts] + charge
         return true, cost
 
+    def _true_facts(self, state: int) -> np.ndarray:
+        """The facts true in ``state`` ("p" for its relevant atoms, "not p" for the negations needed)."""
+        true = bitmask_to_array(state, self.n_atoms)[self.fact_atom]
+        true[self.n_pos :] = ~true[self.n_pos :]
+        return true
+
+    def _closure(self, frontier: np.ndarray, reached: np.ndarray, unsat: np.ndarray) -> Iterator[np.ndarray]:
+        """From the newly reached facts ``frontier``, each further layer of facts the robot's actions reach with
+        no change (marked in ``reached``; ``unsat``: each action's preconditions not reached yet, updated)."""
+        while frontier.size:
+            acts = _gather(self.prec_ptr, self.prec_flat, frontier)
+            if acts.size == 0:
+                return
+            unsat -= np.bincount(acts, minlength=self.n_actions)
+            fired = acts[unsat[acts] == 0]  # may repeat an action; its adds dedupe below
+            new = _gather(self.add_ptr, self.add_flat, fired)
+            new = new[~reached[new]]
+            if new.size == 0:
+                return
+            frontier = np.unique(new)
+            reached[frontier] = True
+            yield frontier
+
     def _hmax(self, true: np.ndarray, cost: np.ndarray) -> np.ndarray:
         """h^max of every fact (bottleneck change cost), by thresholded closures."""
         h = np.full(self.n_facts, INF)
         unsat = self.n_pre.copy()
         reached = np.zeros(self.n_facts, dtype=bool)
         seed_cost = np.where(true, 0.0, cost)
-        free_adds = _gather(self.add_ptr, self.add_flat, self.free_actions)
-        seed_cost[free_adds] = 0.0
+        seed_cost[self.free_add_facts] = 0.0
         for c in np.unique(seed_cost[np.isfinite(seed_cost)]):
             frontier = np.flatnonzero((seed_cost <= c) & ~reached)
             reached[frontier] = True
             h[frontier] = c
-            while frontier.size:
-                acts = _gather(self.prec_ptr, self.prec_flat, frontier)
-                if acts.size == 0:
-                    break
-                unsat -= np.bincount(acts, minlength=self.n_actions)
-                fired = acts[unsat[acts] == 0]  # may repeat an action; its adds dedupe below
-                new = _gather(self.add_ptr, self.add_flat, fired)
-                new = new[~reached[new]]
-                if new.size == 0:
-                    break
-                frontier = np.unique(new)
-                reached[frontier] = True
-                h[frontier] = c
+            for layer in self._closure(frontier, reached, unsat):
+                h[layer] = c
         return h
 
     def _pcf(self, h: np.ndarray, last: bool, fewest: bool = False) -> np.ndarray:
@@ -360,28 +368,12 @@ class RelaxedExcuseTask:
         return False
 
     def _reaches_goal_unchanged_arrays(self, state: int) -> bool:
-        state_bits = bitmask_to_array(state, self.n_atoms)[self.fact_atom]
-        reached = state_bits.copy()
-        reached[self.n_pos :] = ~state_bits[self.n_pos :]
-        frontier = np.flatnonzero(reached)
-        free = self._free_add_array
-        free = free[~reached[free]]
-        reached[free] = True
-        frontier = np.concatenate((frontier, free))
+        reached = self._true_facts(state)
+        reached[self.free_add_facts] = True
         goal = self.goal
-        unsat = self.n_pre.copy()
-        while not reached[goal].all():
-            acts = _gather(self.prec_ptr, self.prec_flat, frontier)
-            if acts.size == 0:
-                return False
-            unsat -= np.bincount(acts, minlength=self.n_actions)
-            new = _gather(self.add_ptr, self.add_flat, acts[unsat[acts] == 0])
-            new = new[~reached[new]]
-            if new.size == 0:
-                return False
-            frontier = np.unique(new)
-            reached[frontier] = True
-        return True
+        if reached[goal].all():
+            return True
+        return any(reached[goal].all() for _ in self._closure(np.flatnonzero(reached), reached, self.n_pre.copy()))
 
     def bound(self, state: int, changes: int, pinned: int = 0) -> Bound:
         """LM-cut value and landmarks (as atom indices to flip) for excuses extending ``changes`` that flip no

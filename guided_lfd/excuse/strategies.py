@@ -247,8 +247,7 @@ class _LandmarkRun:
             if self.best is not None and f > self.g_limit:
                 return
             if self.incumbent is not None and f >= self.incumbent[2] and not self.limits.all_minimal:
-                self.bound = f
-                self.adopt_incumbent()  # (--all wants every minimal excuse: the search goes on)
+                self.adopt_incumbent(f)  # (--all wants every minimal excuse: the search goes on)
                 return
             if _timed_out(self.limits):
                 raise SearchTimeout("excuse search exceeded its time limit")
@@ -325,9 +324,10 @@ class _LandmarkRun:
             probe.accept(*found)
             self.incumbent = (*found, self.space.weight(found[0]))
 
-    def adopt_incumbent(self) -> None:
+    def adopt_incumbent(self, bound: float) -> None:
         """The bound met the probe's excuse's weight: no lighter excuse exists, so it is a minimal one."""
         assert self.incumbent is not None
+        self.bound = bound
         changes, plan, _ = self.incumbent
         self.solutions, self.plans = [changes], {changes: plan}
         self.adopted = True

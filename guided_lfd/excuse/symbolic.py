@@ -81,6 +81,23 @@ def keeps_group(action: GroundAction, mask: int, exactly_one: bool) -> bool:
     return not mask & ~adds & ~(action.delete | action.pre_neg)
 
 
+def split_by_actions(groups: list[tuple[int, bool]], actions: list[GroundAction]
+                     ) -> tuple[list[tuple[int, bool]], list[tuple[int, bool]]]:
+    """``groups`` (mask, exactly-one) as those every one of ``actions`` keeps (:func:`keeps_group`) and the
+    others.  Only the actions that add or delete an atom of a group are asked: the others keep it."""
+    touching: dict[int, list[GroundAction]] = {}
+    for act in actions:
+        for i in {*act.add_ids, *act.delete_ids}:
+            touching.setdefault(i, []).append(act)
+    kept: list[tuple[int, bool]] = []
+    other: list[tuple[int, bool]] = []
+    for mask, exactly_one in groups:
+        asked = {id(a): a for i in bits(mask) for a in touching.get(i, ())}
+        keeps = all(keeps_group(a, mask, exactly_one) for a in asked.values())
+        (kept if keeps else other).append((mask, exactly_one))
+    return kept, other
+
+
 class SymbolicRun:
     """One symbolic excuse search: the diagrams of the task, the reached set R and its excuse states."""
 
@@ -96,7 +113,6 @@ class SymbolicRun:
         atoms = excuse_atoms(space)
         order = variable_order(atoms, space.relevant_actions, first=goal, groups=[g.mask for g in space.groups])
         self.sym = SymbolicTask(task, order, space.relevant_actions)
-        self._touching: dict[int, list[GroundAction]] | None = None  # atom -> the actions that add or delete it
 
     def excuse_states(self) -> Any:
         """R minus the goal, inside the invariants, with every unchangeable variable at its initial value."""
@@ -114,10 +130,7 @@ class SymbolicRun:
         # excuse may have (miconic without up: a lift at many floors at once; 0.2 s, not minutes).  The
         # other groups, and those whose conjunction outgrows the budget (depot's crates, hoists and
         # surfaces), are applied to the reached set instead, one at a time.
-        inductive: list[tuple[int, bool]] = []
-        other: list[tuple[int, bool]] = []
-        for group in kept:
-            (inductive if self.kept_by_every_action(*group) else other).append(group)
+        inductive, other = split_by_actions(kept, [sa.action for sa in sym.actions])
         inside, rest = self.constraint(inductive)
         rest += other
         self.layers = backward_layers(sym, constraint=inside, deadline=self.deadline)
@@ -128,18 +141,6 @@ class SymbolicRun:
         fixed = {v: bool(task.init >> atom & 1) for v, atom in enumerate(sym.atoms)
                  if not space.changeable >> atom & 1}
         return states & sym.dd.cube(fixed)
-
-    def kept_by_every_action(self, mask: int, exactly_one: bool) -> bool:
-        """Whether every action of the search keeps the group (:func:`keeps_group`; only those that add or
-        delete one of its atoms are asked: the others keep it)."""
-        touching = self._touching
-        if touching is None:
-            touching = self._touching = {}
-            for sa in self.sym.actions:
-                for i in {*sa.action.add_ids, *sa.action.delete_ids}:
-                    touching.setdefault(i, []).append(sa.action)
-        asked = {id(a): a for i in bits(mask) for a in touching.get(i, ())}
-        return all(keeps_group(a, mask, exactly_one) for a in asked.values())
 
     def constraint(self, groups: list[tuple[int, bool]]) -> tuple[Any | None, list[tuple[int, bool]]]:
         """The conjunction of as many of ``groups`` as stay within :data:`CONSTRAINT_NODES` (in their order;
