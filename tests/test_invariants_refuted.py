@@ -26,9 +26,13 @@ PRESS = DATA / "in-the-way"
 
 @pytest.mark.parametrize("strategy", sorted(STRATEGIES))
 def test_an_invariant_the_goal_breaks_is_left_out_and_named(strategy):
-    report = find_excuses(*parse_task(str(NEWS / "robot.pddl"), str(NEWS / "problem.pddl")),
-                          ExcuseOptions(strategy=strategy))
-    assert [str(c) for c in report.excuse.changes] == ["+(carrying paper-0)", "+(carrying paper-1)"]
+    task = parse_task(str(NEWS / "robot.pddl"), str(NEWS / "problem.pddl"))
+    report = find_excuses(*task, ExcuseOptions(strategy=strategy))
+    # Strategies may break ties between minimal excuses differently (the hitting-set search takes its program's).
+    minimal = find_excuses(*task, ExcuseOptions(strategy=strategy, all_minimal=True))
+    listed = [[str(c) for c in e.changes] for e in minimal.excuses]
+    assert ["+(carrying paper-0)", "+(carrying paper-1)"] in listed
+    assert [str(c) for c in report.excuse.changes] in listed and report.excuse.size == 2
     assert report.statistics.invariants_refuted_by_goal == ["{(carrying *), (satisfied *)}"]
 
 

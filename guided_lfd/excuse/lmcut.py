@@ -110,6 +110,7 @@ class RelaxedExcuseTask:
         self._index_tables(pre, add)
         pos_id, neg_id = self._pos_id, self._neg_id
         self.goal_list = [pos_id[i] for i in bits(task.goal_pos)] + [neg_id[i] for i in bits(task.goal_neg)]
+        self.goal_set = frozenset(self.goal_list)
         self.neg_mask = space.negation_needed
         self._group_charges_tables(space)
         if not self.small:  # the numpy versions of the tables above

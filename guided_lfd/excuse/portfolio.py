@@ -1,4 +1,5 @@
-"""The default excuse search: the landmark search with the symbolic search beside it, first exact answer wins.
+"""The default excuse search: the landmark search, the hitting-set search in turns with it and the symbolic search
+beside them; the first exact answer wins.
 
 The landmark search answers small and most IPC tasks in well under a second;
 the symbolic search answers at once for every candidate where the landmark
@@ -12,6 +13,15 @@ whichever finishes first with an exact answer (an excuse set, or a proof of
 none) ends the other.  ``statistics.answered_by`` says which.  A task with
 more relevant atoms than :data:`guided_lfd.symbolic.encoding.DEFAULT_MAX_VARIABLES`
 never starts the worker.
+
+On a monotone task (:func:`guided_lfd.excuse.hitting.monotone`: STRIPS with
+positive conditions) the hitting-set search takes turns with the landmark
+search in the same process, first after :data:`HITTING_AFTER_S`: where LM-cut's
+bound stalls on a plateau of equally cheap change sets (a truck "at" both
+ends of a road, a crate put straight into a hoist), its program's bound rises
+to the delete-relaxed optimum in a few rounds; where candidates fail the
+robot's check one after another (depot under the consistent semantics), the
+landmark search's branching is the quicker.
 
 Under the consistent semantics the portfolio first asks the same question
 without the invariants, for a short while (:data:`WITHOUT_INVARIANTS_SHARE`
@@ -36,6 +46,9 @@ from guided_lfd.excuse.status import ExcuseStatus
 
 #: Seconds the landmark search runs alone before the symbolic search starts beside it.
 SYMBOLIC_AFTER_S = 0.5
+
+#: Seconds the landmark search runs alone before the hitting-set search's first turn (monotone tasks).
+HITTING_AFTER_S = 1.0
 
 #: The symbolic worker's niceness: on a machine whose cores are all busy (``bench --jobs 2`` on two cores) it
 #: takes the time the landmark search leaves, instead of half of it; on an idle core it runs at full speed.
@@ -67,18 +80,22 @@ def symbolic_outcome(space: ChangeSpace, limits: Any) -> tuple[str, list[int], d
 
 
 class PortfolioSearch:
-    """The landmark search, and after :data:`SYMBOLIC_AFTER_S` the symbolic search beside it."""
+    """The landmark search; after :data:`HITTING_AFTER_S` the hitting-set search in turns with it (monotone tasks),
+    after :data:`SYMBOLIC_AFTER_S` the symbolic search beside them."""
 
     name = "portfolio"
-    description = "the landmark search, with the symbolic search beside it once a run takes longer (default)"
+    description = ("the landmark search, with the hitting-set search in turns and the symbolic search beside it "
+                   "once a run takes longer (default)")
     lists_slack = True
 
     def search(self, space: ChangeSpace, limits: Any, progress: ProgressMeter | None = None,
                oracle: Any = None, relaxed: Any = None) -> Any:
-        """The first exact outcome of the two searches (the landmark search's alone on a task that is no STRIPS
-        task or is wider than the symbolic engine's default limit, :data:`~guided_lfd.symbolic.encoding.DEFAULT_MAX_VARIABLES`)."""
+        """The first exact outcome of the searches (no hitting-set turns on a task that is not monotone; no symbolic
+        worker on one that is no STRIPS task or is wider than the symbolic engine's default limit,
+        :data:`~guided_lfd.symbolic.encoding.DEFAULT_MAX_VARIABLES`)."""
         from guided_lfd.excuse.lmcut import RelaxedExcuseTask
         from guided_lfd.excuse.reach import ReachabilityOracle
+        from guided_lfd.excuse.hitting import monotone
         from guided_lfd.excuse.strategies import LandmarkSearch, SearchStopped
         from guided_lfd.symbolic.encoding import supports, worth_running
 
@@ -88,21 +105,87 @@ class PortfolioSearch:
         settled, first = without_invariants(space, limits, oracle, relaxed)
         if settled is not None:
             return settled
+        turns = _HittingTurns(space, limits, oracle, relaxed) if monotone(space) else None
         if not supports(space.task) or not worth_running(space.relevant_atoms.bit_count()):
-            outcome = LandmarkSearch().search(space, limits, progress, oracle, relaxed)
-            return _with_first(_answered(outcome, "landmark"), first)
-        race = _Race(space, limits)
+            race = None
+        else:
+            race = _Race(space, limits)
         try:
             try:
-                outcome = LandmarkSearch().search(space, replace(limits, stop=race.settled), progress, oracle,
-                                                  relaxed)
+                outcome = LandmarkSearch().search(space, _members(limits, race, turns), progress, oracle, relaxed)
             except SearchStopped:
-                return race.outcome()
-            if outcome.status is ExcuseStatus.TIMEOUT and race.settled(start=False):
+                return turns.answer if turns is not None and turns.answer is not None else race.outcome()
+            if outcome.status is ExcuseStatus.TIMEOUT and race is not None and race.settled(start=False):
                 return race.outcome()  # answered as the time ran out
+            if turns is not None and outcome.status is ExcuseStatus.TIMEOUT:
+                outcome.lower_bound = max(outcome.lower_bound, turns.bound)
+                outcome.extra.update(turns.counters())
             return _with_first(_answered(outcome, "landmark"), first)
         finally:
-            race.end()
+            if race is not None:
+                race.end()
+
+
+def _members(limits: Any, race: _Race | None, turns: _HittingTurns | None) -> Any:
+    """The landmark search's limits: stopped once the symbolic worker (``race``) or the hitting-set search
+    (``turns``) has answered, and giving the latter its turns."""
+    if race is None and turns is None:
+        return limits
+
+    def settled() -> bool:
+        return (turns is not None and turns.answer is not None) or (race is not None and race.settled())
+
+    return replace(limits, stop=settled, turn=turns.turn if turns is not None else None)
+
+
+class _HittingTurns:
+    """The hitting-set search (:mod:`guided_lfd.excuse.hitting`) in turns with the landmark search, in its
+    process and with its oracle: first after :data:`HITTING_AFTER_S`, then each turn as long as the landmark
+    search's turn before it, both doubling, so each has about half the time.  Its program, landmarks and bound
+    carry over from turn to turn."""
+
+    def __init__(self, space: ChangeSpace, limits: Any, oracle: Any, relaxed: Any) -> None:
+        from guided_lfd.excuse.strategies import clock
+
+        self.space, self.limits, self.oracle, self.relaxed = space, limits, oracle, relaxed
+        self.run: Any = None  # built at its first turn: a run that ends sooner never pays for it
+        self.slice = HITTING_AFTER_S
+        self.next_at = clock() + HITTING_AFTER_S
+        self.answer: Any = None
+
+    @property
+    def bound(self) -> int:
+        """Its proven lower bound on every excuse's weight (0 before its first turn)."""
+        return 0 if self.run is None else self.run.bound
+
+    def counters(self) -> dict[str, int]:
+        """Its effort, once it has had a turn."""
+        return {} if self.run is None else self.run.counters()
+
+    def turn(self) -> None:
+        """The hitting-set search's turn, if its time has come (its answer in :attr:`answer` once it has one)."""
+        from guided_lfd.errors import SearchTimeout
+        from guided_lfd.excuse.strategies import clock, oracle_until
+
+        now = clock()
+        if self.answer is not None or now < self.next_at:
+            return
+        if self.run is None:
+            from guided_lfd.excuse.hitting import HittingRun
+
+            self.run = HittingRun(self.space, replace(self.limits, probe=None, stop=None, turn=None), self.relaxed,
+                                  self.oracle)
+        deadline = self.limits.deadline
+        until = now + self.slice if deadline is None else min(deadline, now + self.slice)
+        self.run.limits = replace(self.run.limits, deadline=until)
+        try:
+            with oracle_until(self.oracle, until):
+                self.run.loop(None)
+            self.answer = _answered(self.run.outcome(), "hitting-set")
+        except SearchTimeout:
+            pass  # its turn is over: the next one goes on from its program
+        self.slice *= 2
+        self.next_at = clock() + self.slice
 
 
 def _with_first(outcome: Any, first: Any) -> Any:

@@ -18,6 +18,7 @@ from typing import Callable, Iterator, Protocol
 
 from guided_lfd.deadline import linger
 from guided_lfd.errors import SearchTimeout
+from guided_lfd.excuse.hitting import HittingSetSearch
 from guided_lfd.excuse.lmcut import INF, Bound, RelaxedExcuseTask
 from guided_lfd.excuse.progress import ProgressMeter
 from guided_lfd.excuse.reach import CheckPaused, ReachabilityOracle
@@ -87,6 +88,9 @@ class SearchLimits:
     probe: Probe | None = None
     #: Asked between steps: True ends the search with :class:`SearchStopped` (a portfolio's other member answered).
     stop: Callable[[], bool] | None = None
+    #: Called between the landmark search's steps (never inside a check): another search's turn in the same
+    #: process, when its time has come (the portfolio's hitting-set search); it ends this one through ``stop``.
+    turn: Callable[[], None] | None = None
 
 
 @dataclass
@@ -251,6 +255,8 @@ class _LandmarkRun:
                 return
             if _timed_out(self.limits):
                 raise SearchTimeout("excuse search exceeded its time limit")
+            if self.limits.turn is not None:
+                self.limits.turn()
             if self.limits.stop is not None and self.limits.stop():
                 raise SearchStopped()
             if self.probe is not None and not self.solutions and clock() > self.probe.start:
@@ -712,5 +718,5 @@ class BaselineSearch:
 
 #: Registered strategies by name; the first is the default.
 STRATEGIES: dict[str, Strategy] = {s.name: s for s in (PortfolioSearch(), LandmarkSearch(), BaselineSearch(),
-                                                        SymbolicSearch())}
+                                                        SymbolicSearch(), HittingSetSearch())}
 DEFAULT_STRATEGY = "portfolio"
