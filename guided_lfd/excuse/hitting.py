@@ -29,7 +29,7 @@ from __future__ import annotations
 from typing import Any
 
 from guided_lfd.errors import SearchTimeout
-from guided_lfd.excuse.lmcut import RelaxedExcuseTask
+from guided_lfd.excuse.lmcut import RelaxedClosure, RelaxedExcuseTask
 from guided_lfd.excuse.progress import ProgressMeter
 from guided_lfd.excuse.reach import ReachabilityOracle
 from guided_lfd.excuse.space import ChangeSpace
@@ -56,63 +56,13 @@ class HittingSetSearch:
     def search(self, space: ChangeSpace, limits: Any, progress: ProgressMeter | None = None,
                oracle: ReachabilityOracle | None = None, relaxed: RelaxedExcuseTask | None = None) -> Any:
         """Minimal change sets for ``space``; ``oracle`` and ``relaxed`` are reused when given."""
-        from guided_lfd.excuse.strategies import LandmarkSearch
+        from guided_lfd.excuse.strategies import LandmarkSearch, run_to_outcome
 
         if not monotone(space):
             return LandmarkSearch().search(space, limits, progress, oracle, relaxed)
         run = HittingRun(space, limits, relaxed or RelaxedExcuseTask(space),
                          oracle or ReachabilityOracle(space, limits.deadline))
-        run.oracle.interrupt = limits.stop
-        try:
-            run.loop(progress)
-        except SearchTimeout:
-            return run.outcome(timed_out=True)
-        finally:
-            run.oracle.interrupt = None
-        return run.outcome()
-
-
-class _Closure:
-    """The facts the relaxed robot reaches from a set of atoms, grown in place (undone by copying first)."""
-
-    __slots__ = ("relaxed", "reached", "unsat", "left")
-
-    def __init__(self, relaxed: RelaxedExcuseTask, state: int) -> None:
-        self.relaxed = relaxed
-        self.reached = bytearray(relaxed.n_facts)
-        self.unsat = list(relaxed.n_pre_list)
-        self.left = len(set(relaxed.goal_list))
-        pos_id = relaxed._pos_id
-        self.add([pos_id[a] for a in bits(state & relaxed._relevant)] + list(relaxed.free_adds))
-
-    def copy(self) -> _Closure:
-        """An independent copy."""
-        other = _Closure.__new__(_Closure)
-        other.relaxed, other.reached, other.unsat, other.left = self.relaxed, bytearray(self.reached), \
-            list(self.unsat), self.left
-        return other
-
-    def add(self, facts: list[int]) -> bool:
-        """Make ``facts`` true and close under the relaxed actions; whether the goal is reached."""
-        reached, unsat, relaxed = self.reached, self.unsat, self.relaxed
-        prec_of, adds, goal = relaxed.prec_of_lists, relaxed.add_lists, relaxed.goal_set
-        queue = []
-        for f in facts:
-            if not reached[f]:
-                reached[f] = 1
-                queue.append(f)
-                self.left -= f in goal
-        while queue:
-            for ai in prec_of[queue.pop()]:
-                unsat[ai] -= 1
-                if unsat[ai]:
-                    continue
-                for q in adds[ai]:
-                    if not reached[q]:
-                        reached[q] = 1
-                        queue.append(q)
-                        self.left -= q in goal
-        return self.left == 0
+        return run_to_outcome(run, limits, progress)
 
 
 class HittingRun:
@@ -194,7 +144,7 @@ class HittingRun:
         """``state`` with every atom added that keeps the relaxed goal unreachable, one after another (tried
         in halving blocks: most atoms join in a block that still fails); the atoms left out each reach it."""
         relaxed = self.relaxed
-        closure = _Closure(relaxed, state)
+        closure = RelaxedClosure(relaxed, state)
         pos_id = relaxed._pos_id
         reached = closure.reached
         blocks = [[pos_id[a] for a in self.program.relevant_atoms if not reached[pos_id[a]]]]

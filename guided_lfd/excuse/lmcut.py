@@ -336,37 +336,7 @@ class RelaxedExcuseTask:
         """
         if not self.small:
             return self._reaches_goal_unchanged_arrays(state)
-        pos_id, neg_id = self._pos_id, self._neg_id
-        reached = bytearray(self.n_facts)
-        queue = [pos_id[a] for a in bits(state & self._relevant)]
-        queue += [neg_id[a] for a in bits(self.neg_mask & ~state)]
-        for f in queue:
-            reached[f] = 1
-        for f in self.free_adds:
-            if not reached[f]:
-                reached[f] = 1
-                queue.append(f)
-        goal = self.goal_list
-        left = sum(1 for g in goal if not reached[g])
-        if not left:
-            return True
-        is_goal = set(goal)
-        unsat = list(self.n_pre_list)
-        prec_of, adds = self.prec_of_lists, self.add_lists
-        while queue:
-            for ai in prec_of[queue.pop()]:
-                unsat[ai] -= 1
-                if unsat[ai]:
-                    continue
-                for q in adds[ai]:
-                    if not reached[q]:
-                        reached[q] = 1
-                        queue.append(q)
-                        if q in is_goal:
-                            left -= 1
-                            if not left:
-                                return True
-        return False
+        return RelaxedClosure(self, state).left == 0
 
     def _reaches_goal_unchanged_arrays(self, state: int) -> bool:
         reached = self._true_facts(state)
@@ -612,3 +582,50 @@ class RelaxedExcuseTask:
                         zone.add(f)
                         frontier.append(f)
         return zone
+
+
+class RelaxedClosure:
+    """The facts the relaxed robot reaches from a state with no change, on the fact lists, grown in place by
+    :meth:`add` (copy it first to try a set of facts and keep the old closure)."""
+
+    __slots__ = ("relaxed", "reached", "unsat", "left")
+
+    def __init__(self, relaxed: RelaxedExcuseTask, state: int) -> None:
+        self.relaxed = relaxed
+        self.reached = bytearray(relaxed.n_facts)
+        self.unsat = list(relaxed.n_pre_list)
+        self.left = len(relaxed.goal_set)  # goal facts not reached yet
+        pos_id, neg_id = relaxed._pos_id, relaxed._neg_id
+        facts = [pos_id[a] for a in bits(state & relaxed._relevant)]
+        facts += [neg_id[a] for a in bits(relaxed.neg_mask & ~state)]
+        self.add(facts + relaxed.free_adds)
+
+    def copy(self) -> RelaxedClosure:
+        """An independent copy."""
+        other = RelaxedClosure.__new__(RelaxedClosure)
+        other.relaxed, other.left = self.relaxed, self.left
+        other.reached, other.unsat = bytearray(self.reached), list(self.unsat)
+        return other
+
+    def add(self, facts: list[int]) -> bool:
+        """Make ``facts`` true and close under the relaxed actions; whether the goal is reached.  Reaching it
+        stops the closure there: a closure that reaches the goal is only asked that, never grown further."""
+        reached, unsat, relaxed = self.reached, self.unsat, self.relaxed
+        prec_of, adds, goal = relaxed.prec_of_lists, relaxed.add_lists, relaxed.goal_set
+        queue = []
+        for f in facts:
+            if not reached[f]:
+                reached[f] = 1
+                queue.append(f)
+                self.left -= f in goal
+        while queue and self.left:
+            for ai in prec_of[queue.pop()]:
+                unsat[ai] -= 1
+                if unsat[ai]:
+                    continue
+                for q in adds[ai]:
+                    if not reached[q]:
+                        reached[q] = 1
+                        queue.append(q)
+                        self.left -= q in goal
+        return self.left == 0

@@ -14,7 +14,7 @@ import heapq
 import time
 from contextlib import contextmanager
 from dataclasses import dataclass, field, replace
-from typing import Callable, Iterator, Protocol
+from typing import Any, Callable, Iterator, Protocol
 
 from guided_lfd.deadline import linger
 from guided_lfd.errors import SearchTimeout
@@ -182,14 +182,20 @@ class LandmarkSearch:
         # solvable?" search found: most candidates' searches run into them.
         run = _LandmarkRun(space, limits, relaxed or RelaxedExcuseTask(space),
                            oracle or ReachabilityOracle(space, limits.deadline))
-        run.oracle.interrupt = limits.stop
-        try:
-            run.loop(progress)
-        except SearchTimeout:
-            return run.outcome(timed_out=True)
-        finally:
-            run.oracle.interrupt = None
-        return run.outcome()
+        return run_to_outcome(run, limits, progress)
+
+
+def run_to_outcome(run: Any, limits: SearchLimits, progress: ProgressMeter | None) -> SearchOutcome:
+    """Run a search's ``loop`` to its outcome (a timed-out one at the deadline); its oracle's checks stop when
+    ``limits.stop`` says so."""
+    run.oracle.interrupt = limits.stop
+    try:
+        run.loop(progress)
+    except SearchTimeout:
+        return run.outcome(timed_out=True)
+    finally:
+        run.oracle.interrupt = None
+    return run.outcome()
 
 
 class _LandmarkRun:
