@@ -59,7 +59,9 @@ class HittingSetSearch:
         from guided_lfd.excuse.strategies import LandmarkSearch, run_to_outcome
 
         if not monotone(space):
-            return LandmarkSearch().search(space, limits, progress, oracle, relaxed)
+            outcome = LandmarkSearch().search(space, limits, progress, oracle, relaxed)
+            outcome.answered_by = "landmark"  # the search that answered, not the one asked for
+            return outcome
         run = HittingRun(space, limits, relaxed or RelaxedExcuseTask(space),
                          oracle or ReachabilityOracle(space, limits.deadline))
         return run_to_outcome(run, limits, progress)
@@ -98,7 +100,8 @@ class HittingRun:
                 self.size_pruned = not self.solutions and self.program.feasible_without_size(self.time_left())
                 return
             weight, changes = solved
-            self.bound = max(self.bound, weight)
+            if not self.solutions:  # a bound on the lightest excuse (later programs list heavier ones: --slack)
+                self.bound = max(self.bound, weight)
             if self.limit is not None and weight > self.limit:
                 return
             if progress is not None and progress.due():

@@ -118,12 +118,24 @@ class PortfolioSearch:
             if outcome.status is ExcuseStatus.TIMEOUT and race is not None and race.settled(start=False):
                 return race.outcome()  # answered as the time ran out
             if turns is not None and outcome.status is ExcuseStatus.TIMEOUT:
-                outcome.lower_bound = max(outcome.lower_bound, turns.bound)
-                outcome.extra.update(turns.counters())
-            return _with_first(_answered(outcome, "landmark"), first)
+                outcome = with_turns(outcome, turns)
+            return _with_first(outcome if outcome.answered_by else _answered(outcome, "landmark"), first)
         finally:
             if race is not None:
                 race.end()
+
+
+def with_turns(outcome: Any, turns: _HittingTurns) -> Any:
+    """A timed-out landmark search's ``outcome`` with what the hitting-set search's turns proved: the excuses it
+    had found (each minimal: ``--all`` or ``--slack`` ran out of time listing them) where the landmark search has
+    fewer, else its bound where that is the higher (it bounds the same minimum while it has found none)."""
+    run = turns.run
+    if run is not None and len(run.solutions) > len(outcome.solutions):
+        return _answered(run.outcome(timed_out=True), "hitting-set")
+    if run is not None and not run.solutions:
+        outcome.lower_bound = max(outcome.lower_bound, run.bound)
+    outcome.extra.update(turns.counters())
+    return outcome
 
 
 def _members(limits: Any, race: _Race | None, turns: _HittingTurns | None) -> Any:
@@ -152,11 +164,6 @@ class _HittingTurns:
         self.slice = HITTING_AFTER_S
         self.next_at = clock() + HITTING_AFTER_S
         self.answer: Any = None
-
-    @property
-    def bound(self) -> int:
-        """Its proven lower bound on every excuse's weight (0 before its first turn)."""
-        return 0 if self.run is None else self.run.bound
 
     def counters(self) -> dict[str, int]:
         """Its effort, once it has had a turn."""
