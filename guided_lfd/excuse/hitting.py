@@ -9,10 +9,11 @@ a mixed-integer program (HiGHS, through scipy) for the lightest change set
 whose state meets every landmark, keeps the invariants (consistent semantics)
 and misses the goal, then checks it:
 
-* the delete relaxation cannot reach the goal from its state: the state is
-  grown, atom by atom, as far as the relaxation still fails (Haslum, Slaney
-  and Thiébaux's minimal landmarks for h+, 2012); the atoms left outside are
-  the new landmark;
+* the delete relaxation cannot reach the goal from its state: LM-cut's
+  landmarks there are added (each a set of atoms without all of which the
+  relaxation still fails), and the state is grown, atom by atom, as far as
+  the relaxation still fails (Haslum, Slaney and Thiébaux's minimal landmarks
+  for h+, 2012); the atoms left outside are one more landmark;
 * the relaxation reaches the goal but the robot cannot (the reachability
   oracle): the state itself bounds a landmark;
 * the robot can: no lighter change set is left, so it is a minimal excuse.
@@ -82,7 +83,6 @@ class HittingRun:
         self.limit: int | None = None  # the heaviest excuse still listed, once one is found
         self.candidates = self.relaxed_cuts = self.real_cuts = self.rounds = 0
         self.size_pruned = False
-        self.grow = True
 
     def loop(self, progress: ProgressMeter | None) -> None:
         """Solve, check, cut, until the minimal excuses are found or the program has no solution."""
@@ -140,8 +140,7 @@ class HittingRun:
         bound = self.relaxed.bound(state, 0)
         for atoms in bound.landmarks:
             self.program.require_one_of(atoms)
-        if self.grow:
-            self.program.exclude_within(self.grown(state))
+        self.program.exclude_within(self.grown(state))
 
     def grown(self, state: int) -> int:
         """``state`` with every atom added that keeps the relaxed goal unreachable, one after another (tried

@@ -51,13 +51,11 @@ class ChangeProgram:
         init, column = self.init, self.column
         for a in atoms:
             initially = (init >> a) & 1
+            constant += initially  # x flips it: true is x, or 1 - x when it is true initially
             k = column.get(a)
-            if k is None:
-                constant += initially
-            else:
+            if k is not None:
                 columns.append(k)
                 coefficients.append(-1.0 if initially else 1.0)
-                constant += initially
         lower, upper = lower - constant, upper - constant
         if not columns:
             self.infeasible = self.infeasible or lower > 0 or upper < 0
