@@ -201,7 +201,13 @@ def _run(benchmark, root: Path, suite_file: Path, results: Path, results_csv: Pa
     benchmark.check_removed_actions(suite, suite_file)
     done = [0]
     total = len(suite) * len(strategies.split(",")) * len(semantics.split(","))
-    log = benchmark.RowLog(results / "results.partial.csv")
+    # Each task's digest covers its files' content, the tool's version and the limits, so a resumed run
+    # reruns what an edit (or another limit) has made stale instead of reporting it.
+    limits = f"time_limit={time_limit:g} memory_limit={memory_limit or 0}"
+    inputs = {t.id: benchmark.input_digest(benchmark.task_digest(t), limits) for t in suite}
+    log = benchmark.RowLog(results / "results.partial.csv", inputs)
+    if log.stale:
+        ui.info(f"rerunning {log.stale} run(s) in {log.path} whose inputs changed since they ran")
     if log.done:
         ui.info(f"resuming: {len(log.done)} runs already in {log.path}")
 
@@ -223,4 +229,4 @@ def _run(benchmark, root: Path, suite_file: Path, results: Path, results_csv: Pa
         ui.info(f"{results_csv}: {subset} row(s) replaced or added, {len(rows)} in all")
     rows = sorted(rows, key=lambda r: (r.id, r.semantics, r.strategy))
     benchmark.write_results(rows, results_csv)
-    log.path.unlink()
+    log.remove()

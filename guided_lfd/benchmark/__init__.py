@@ -29,7 +29,8 @@ from guided_lfd.benchmark.runner import (
     run_one, run_suite,
 )
 from guided_lfd.benchmark.suite import (
-    SUITE_FIELDS, BenchTask, check_removed_actions, generate_suite, read_suite, robot_domain_file, write_suite,
+    SUITE_FIELDS, BenchTask, check_removed_actions, generate_suite, input_digest, read_suite, robot_domain_file,
+    task_digest, write_suite,
 )
 
 __all__ = [
@@ -38,5 +39,5 @@ __all__ = [
     "GAVE_UP", "RESULT_FIELDS", "SOLVED", "RowLog", "merge_rows", "read_results", "write_results", "KILL_GRACE_S",
     "STOP_AFTER_UNFINISHED", "Run", "chains", "cli_command", "command_line", "crashed", "not_run", "run_chain",
     "run_one", "run_suite", "SUITE_FIELDS", "BenchTask", "generate_suite", "read_suite", "check_removed_actions",
-    "robot_domain_file", "write_suite", "ResultRow",
+    "robot_domain_file", "write_suite", "ResultRow", "input_digest", "task_digest",
 ]

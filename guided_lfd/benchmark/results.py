@@ -77,25 +77,62 @@ _KINDS: dict[str, type] = {"size": int, "cost": int, "exit_code": int, "candidat
 class RowLog:
     """Appends result rows to a CSV as they arrive, so a long run survives a crash.
 
-    Rows already in the file are skipped when the run is started again (resume).
+    Rows already in the file are skipped when the run is started again (resume), but only those whose inputs
+    are unchanged: ``inputs`` maps each task id to the digest of what its runs read and how they run (files'
+    content, the tool's version, the limits; see :func:`~guided_lfd.benchmark.suite.input_digest`), kept in
+    a file beside the log.  A row whose task's digest differs, or that no digest vouches for (a log from an
+    older release), is dropped from the log and run again: a resumed run never reports a result computed
+    from a file that has since been edited.
     """
 
-    def __init__(self, path: Path) -> None:
+    def __init__(self, path: Path, inputs: dict[str, str] | None = None) -> None:
         self.path = path
+        self.inputs_path = path.with_name(path.name + ".inputs.json")
+        self.inputs = dict(inputs or {})
+        self.stale = 0  # rows dropped on resume because their inputs changed
         path.parent.mkdir(parents=True, exist_ok=True)
         self.rows: list[ResultRow] = []
         if path.exists():
-            self.rows = read_results(path)
+            recorded = self._recorded_inputs()
+            rows = read_results(path)
+            self.rows = [r for r in rows if r.id in self.inputs and recorded.get(r.id) == self.inputs[r.id]]
+            self.stale = len(rows) - len(self.rows)
+            if self.stale:
+                write_results(self.rows, path)
         else:
             with open(path, "w", newline="", encoding="utf-8") as fh:
                 csv.DictWriter(fh, fieldnames=RESULT_FIELDS, lineterminator="\n").writeheader()
+        self._write_inputs()
         self.done: set[tuple[str, str, str]] = {r.key for r in self.rows}
+
+    def _recorded_inputs(self) -> dict[str, str]:
+        """The digests the log's rows were computed from ({} where the file is missing or unreadable)."""
+        import json
+
+        try:
+            doc = json.loads(self.inputs_path.read_text(encoding="utf-8"))
+        except (OSError, ValueError):
+            return {}
+        inputs = doc.get("inputs") if isinstance(doc, dict) else None
+        return {str(k): str(v) for k, v in inputs.items()} if isinstance(inputs, dict) else {}
+
+    def _write_inputs(self) -> None:
+        import json
+
+        from guided_lfd.io import write_text
+
+        write_text(self.inputs_path, json.dumps({"format": 1, "inputs": self.inputs}, indent=1, sort_keys=True))
 
     def append(self, row: ResultRow) -> None:
         """Add ``row`` to the file (flushed: it survives the run)."""
         with open(self.path, "a", newline="", encoding="utf-8") as fh:
             csv.DictWriter(fh, fieldnames=RESULT_FIELDS, lineterminator="\n").writerow(row.to_csv())
             fh.flush()
+
+    def remove(self) -> None:
+        """Delete the log and its digests (the run is complete and its results written)."""
+        self.path.unlink(missing_ok=True)
+        self.inputs_path.unlink(missing_ok=True)
 
 
 def merge_rows(kept: list[ResultRow], new: list[ResultRow]) -> list[ResultRow]:

@@ -131,11 +131,51 @@ def check_removed_actions(suite: list[BenchTask], suite_file: Path) -> None:
                                  f"{task.domain_file}", Location(str(suite_file)))
 
 
+def input_digest(*parts: str | Path | None) -> str:
+    """A digest of the tool's version and the *content* of each file (a ``str`` part is taken as text, a
+    ``Path`` as the file's bytes, ``None`` as absent): the key of whatever is built or kept from them.
+
+    A key made of paths or names alone serves a stale result after a file is edited; this one changes with
+    every byte the result depends on.
+    """
+    import hashlib
+
+    from guided_lfd import __version__
+
+    digest = hashlib.sha256(f"guided-lfd {__version__}".encode())
+    for part in parts:
+        if part is None:
+            digest.update(b"\0none")
+        elif isinstance(part, Path):
+            data = part.read_bytes()
+            digest.update(b"\0file%d:" % len(data) + data)
+        else:
+            data = part.encode()
+            digest.update(b"\0text%d:" % len(data) + data)
+    return digest.hexdigest()
+
+
+def task_digest(task: BenchTask) -> str:
+    """:func:`input_digest` of everything a run of ``task`` reads: domain, problem, complete domain, the
+    removed action.  A file that cannot be read gives a digest of its own (the run then fails, and says why)."""
+    try:
+        return input_digest(Path(task.domain_file), Path(task.problem_file),
+                            Path(task.fixed_from) if task.fixed_from else None, task.removed_action)
+    except OSError as exc:
+        return input_digest(f"unreadable: {exc}")
+
+
 def robot_domain_file(task: BenchTask, folder: Path) -> Path:
-    """The robot's domain file for ``task`` (the domain without ``removed_action``), written once."""
+    """The robot's domain file for ``task`` (the domain without ``removed_action``), built once per content.
+
+    The file is named by the digest of the domain's content, the removed action and the tool's version
+    (:func:`input_digest`), so an edited domain or a new release builds a new file instead of reusing one
+    made from an older text.
+    """
     if not task.removed_action:
         return Path(task.domain_file)
-    path = folder / f"{task.domain}-without-{task.removed_action}.pddl"
+    key = input_digest(Path(task.domain_file), task.removed_action)[:16]
+    path = folder / f"{task.domain}-without-{task.removed_action}-{key}.pddl"
     if not path.exists():
         from guided_lfd.io import write_text
         from guided_lfd.pddl.reader import parse_domain
