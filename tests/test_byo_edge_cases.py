@@ -1,5 +1,7 @@
-"""Regressions found by the review and the adversarial hunt of issue #23's first slice, one test each; their PDDL
-and traces are in ``tests/data/regressions/issue23/``."""
+"""Robots in words other than the kitchens': hand facts read off odd domains and arm names, skills named after the
+human's actions or refused when they could never run, worlds without objects or with zero-argument facts, bad
+vocabularies and demonstrations of another world refused; one test each, their PDDL and traces in
+``tests/data/regressions/issue23/``."""
 
 from __future__ import annotations
 
@@ -146,9 +148,9 @@ def test_a_demonstration_of_another_world_is_refused_before_anything_is_learned(
 
 
 def test_a_skill_that_could_never_run_beside_the_robots_is_refused_not_learned(runner, app, tmp_path):
-    """Issue #23's first failure class through the command line: a trace without vocabulary rows, a robot whose
-    hand facts cannot be read off it; the skills learned in the kitchens' hand facts need (hand_free), which the
-    robot never makes true: exit 34 naming the skill and the predicate, nothing written."""
+    """Through the command line: a trace without vocabulary rows, a robot whose hand facts cannot be read off it;
+    the skills learned in the kitchens' hand facts need (hand_free), which the robot never makes true: exit 34
+    naming the skill and the predicate, nothing written."""
     trace = tmp_path / "demo.csv"
     shutil.copyfile(BYO / "blocksworld" / "demo-round-1.csv", trace)
     rows = (BYO / "blocksworld" / "demo-round-1.state.csv").read_text().splitlines(keepends=True)
