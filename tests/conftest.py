@@ -1,7 +1,16 @@
-"""Shared fixtures: paths to the PDDL corpus, a CLI runner, the --slow switch."""
+"""Shared fixtures: paths to the PDDL corpus, a CLI runner, the --slow switch, reproducible property tests.
+
+Property tests are reproducible: Hypothesis runs under the ``reproducible`` profile (``derandomize``: the
+examples are drawn from a seed fixed by each test, the same on every run and machine; no example database
+replays earlier failures first), and every other random generator in the tests is seeded.  ``--slow``
+also runs the long explorations: the property tests whose example counts the environment sets
+(``GUIDED_LFD_FUZZ_EXAMPLES``, ``GUIDED_LFD_ADL_EXAMPLES``) take 1,000 examples unless it says otherwise, as
+``make test-slow`` asks.  ``--hypothesis-profile NAME`` still chooses another profile.
+"""
 
 from __future__ import annotations
 
+import os
 import random
 import subprocess
 import sys
@@ -9,14 +18,29 @@ from pathlib import Path
 from typing import Iterator
 
 import pytest
+from hypothesis import settings
 
 ROOT = Path(__file__).resolve().parent.parent
 DATA = Path(__file__).resolve().parent / "data"
 DOMAINS = ROOT / "data" / "domains"
+#: The examples of a long exploration (--slow), where the environment does not say.
+SLOW_EXAMPLES = "1000"
+
+settings.register_profile("reproducible", derandomize=True, database=None)
+settings.load_profile("reproducible")
 
 
 def pytest_addoption(parser: pytest.Parser) -> None:
     parser.addoption("--slow", action="store_true", default=False, help="also run tests marked slow")
+
+
+def pytest_configure(config: pytest.Config) -> None:
+    # Before the test modules are imported: they read their example counts from the environment then.
+    if config.getoption("--slow"):
+        for name in ("GUIDED_LFD_FUZZ_EXAMPLES", "GUIDED_LFD_ADL_EXAMPLES"):
+            os.environ.setdefault(name, SLOW_EXAMPLES)
+    if config.getoption("hypothesis_profile", None) is None:
+        settings.load_profile("reproducible")
 
 
 def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item]) -> None:

@@ -8,7 +8,9 @@ plan, and so the render, depends on the interpreter's hash seed when several pla
 One JSON line per trace: its path (relative to the project) and every
 segment as ``guided-lfd segment`` finds it (hand, activity, times, objects,
 what the hand held, fluents added and deleted).  Regenerate only when a
-change to the segmenter is meant to change segments, and say why.
+change to the segmenter is meant to change segments, and say why.  The file
+is the segmenter's own output, so it catches a change, not an error: the
+segments read by hand in tests/test_segment_golden.py are the independent check.
 """
 
 from __future__ import annotations

@@ -180,3 +180,25 @@ def test_a_timed_out_portfolio_keeps_the_excuses_its_hitting_set_turns_found():
     bounded = with_turns(landmark_timeout(), turns([], 7))
     assert bounded.solutions == [] and bounded.lower_bound == 7 and bounded.extra["hitting_rounds"] == 3
     assert with_turns(landmark_timeout(), SimpleNamespace(run=None, counters=lambda: {})).lower_bound == 5
+
+
+ONE_KEY = ROOT / "tests" / "data" / "one-key"
+
+
+@pytest.mark.parametrize("semantics", list(Semantics))
+def test_a_candidate_the_relaxation_passes_and_the_robot_cannot_use_is_cut_by_the_robots_check(semantics):
+    """One key, two locked doors, no key yet; unlocking leaves the key in the lock.  The lightest candidate,
+    +(has-key), passes the delete relaxation (it keeps the key for the second door) but the robot opens one
+    door only: the robot's check must refute it, and the excuses are the key and one door already unlocked
+    (worked out by hand: +(unlocked front) +(unlocked back) is the goal itself, no excuse state)."""
+    domain, problem = parse_task(ONE_KEY / "domain.pddl", ONE_KEY / "problem.pddl")
+    space = build_space(ground(domain, problem), semantics)
+    key = 1 << atom(space, "(has-key)")
+    assert monotone(space) and RelaxedExcuseTask(space).reaches_goal_unchanged(space.task.init | key)
+    assert ReachabilityOracle(space).solve(space.task.init | key) is None
+    report = find_excuses(domain, problem, ExcuseOptions(semantics=semantics, strategy="hitting-set",
+                                                         all_minimal=True, verify=True))
+    assert report.statistics.answered_by == "hitting-set"
+    assert [[str(c) for c in e.changes] for e in report.excuses] == [["+(has-key)", "+(unlocked back)"],
+                                                                      ["+(has-key)", "+(unlocked front)"]]
+    assert report.statistics.counters["real_landmarks"] >= 1
