@@ -14,7 +14,8 @@ from cli.common import (
 from guided_lfd import errors
 from guided_lfd.deadline import deadline_after, watchdog
 from guided_lfd.excuse.document import candidate_text, cut_short, excuse_summary
-from guided_lfd.excuse.engine import ExcuseOptions, ExcuseReport, find_excuses
+from guided_lfd.excuse.engine import ExcuseOptions, find_excuses
+from guided_lfd.excuse.report import ExcuseReport
 from guided_lfd.excuse.progress import Progress as SearchProgress
 from guided_lfd.excuse.space import Semantics
 from guided_lfd.excuse.strategies import DEFAULT_STRATEGY, STRATEGIES
@@ -189,7 +190,7 @@ def _prefer(report: ExcuseReport, human, dom, prob, keep_all: bool, deadline: fl
     """Rank the minimal excuses by predicted demonstration (--prefer), within the run's time limit: past it,
     the excuses found are printed unranked (the first one alone without --all) and stderr says so."""
     from guided_lfd.errors import SearchTimeout
-    from guided_lfd.excuse.preference import apply_preference
+    from guided_lfd.preference import apply_preference
 
     try:
         with watchdog(deadline, "predicting the demonstrations"):

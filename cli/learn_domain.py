@@ -18,7 +18,7 @@ from guided_lfd.errors import Location, MismatchError, OptionError
 from guided_lfd.io import write_text
 from guided_lfd.pddl.model import pddl_name_defect
 from guided_lfd.pddl.reader import parse_domain, parse_problem_for
-from guided_lfd.pddl.source import read_text
+from guided_lfd.io import read_text
 from guided_lfd.pddl.writer import domain_to_pddl
 
 

@@ -28,8 +28,8 @@ _EXPORTS = {
     "PlanReport": "guided_lfd.api",
     "find_excuses": "guided_lfd.excuse.engine",
     "ExcuseOptions": "guided_lfd.excuse.engine",
-    "ExcuseReport": "guided_lfd.excuse.engine",
-    "Excuse": "guided_lfd.excuse.engine",
+    "ExcuseReport": "guided_lfd.excuse.report",
+    "Excuse": "guided_lfd.excuse.report",
     "Progress": "guided_lfd.excuse.progress",
     "Semantics": "guided_lfd.excuse.space",
     "Change": "guided_lfd.excuse.change",
@@ -46,7 +46,8 @@ if TYPE_CHECKING:  # for type checkers and IDEs; at run time __getattr__ loads t
     from guided_lfd.api import PlanReport, plan, read_task, validate
     from guided_lfd.errors import GuidedLfdError
     from guided_lfd.excuse.change import Change
-    from guided_lfd.excuse.engine import Excuse, ExcuseOptions, ExcuseReport, find_excuses
+    from guided_lfd.excuse.engine import ExcuseOptions, find_excuses
+    from guided_lfd.excuse.report import Excuse, ExcuseReport
     from guided_lfd.excuse.progress import Progress
     from guided_lfd.excuse.space import Semantics
     from guided_lfd.pddl.model import Domain, Problem

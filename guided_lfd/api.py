@@ -62,7 +62,7 @@ def _read_up_problem(up_problem: object, problem: Source | None) -> tuple[Domain
         raise OptionError("read_task: expected a domain and a problem (paths or PDDL text), or a unified-planning "
                         f"Problem alone; got {type(up_problem).__name__}"
                         + ("" if problem is None else f" and {type(problem).__name__}"))
-    from guided_lfd.up import to_task
+    from guided_lfd.up.task import to_task
 
     task = to_task(up_problem)  # type: ignore[arg-type]
     return task.domain, task.problem
@@ -113,23 +113,17 @@ def plan(domain: Domain, problem: Problem, search: str | None = None,
     seconds, and :class:`RuntimeError` if the planner's plan does not
     validate or its cost disagrees with the validator's (a bug, never hidden).
     """
-    from guided_lfd.planning import DEFAULT_SEARCH, plan_task
-    from guided_lfd.planning.validation import validated
-
-    from guided_lfd.planning import SEARCHES
+    from guided_lfd.planning import DEFAULT_SEARCH, SEARCHES
+    from guided_lfd.symbolic.portfolio import validated_plan
 
     _check_task("plan", domain, problem)
     search = search or DEFAULT_SEARCH
     if not isinstance(search, str) or search not in SEARCHES:
         raise OptionError(f"unknown search {search!r} (expected one of: {', '.join(SEARCHES)})")
-    _, result = plan_task(domain, problem, search, checked_time_limit(time_limit, "time_limit"))
-    if result.plan is None:
+    result, steps, cost = validated_plan(domain, problem, search, checked_time_limit(time_limit, "time_limit"))
+    if steps is None:
         return PlanReport(domain.path, problem.path, None, None, None, search, result.time_s, result.answered_by)
-    steps = [PlanStep(a.schema, a.args) for a in result.plan]
-    report = validated(domain, problem, steps, "the planner's plan")
-    if report.cost != sum(a.cost for a in result.plan):
-        raise RuntimeError("planner and validator disagree on the plan's cost")
-    return PlanReport(domain.path, problem.path, steps, report.cost, result.optimal, search, result.time_s,
+    return PlanReport(domain.path, problem.path, steps, cost, result.optimal, search, result.time_s,
                       result.answered_by)
 
 

@@ -27,9 +27,10 @@ from typing import Any
 from guided_lfd.demonstration.learn import DemonstratedAction
 from guided_lfd.excuse.change import Change, excuse_state
 from guided_lfd.excuse.prepare import prepare
-from guided_lfd.planning.grounding import GroundTask, ground
+from guided_lfd.planning.grounding import ground
+from guided_lfd.planning.task import GroundTask
 from guided_lfd.pddl.model import Atom, Domain, Literal, Problem
-from guided_lfd.planning import plan_task
+from guided_lfd.symbolic.portfolio import plan_task
 from guided_lfd.reporting import round_fraction
 from guided_lfd.planning.validation import PlanStep, validate_plan, validated
 from guided_lfd.planning.validation import holds as literal_holds

@@ -1,4 +1,4 @@
-"""Writing outputs safely, and the JSON conventions of guided-lfd."""
+"""Reading inputs and writing outputs safely, and the JSON conventions of guided-lfd."""
 
 from __future__ import annotations
 
@@ -9,13 +9,57 @@ from contextlib import contextmanager
 from pathlib import Path
 from typing import Any, Iterator
 
-from guided_lfd.errors import Location, OutputError
-from guided_lfd.pddl.source import read_text
+from guided_lfd.errors import InputFileError, Location, OutputError
 
 #: Version of every JSON document guided-lfd writes; bumped on incompatible change.
 FORMAT_VERSION = 1
 #: Document versions this release reads.
 READABLE_VERSIONS = (1,)
+
+#: Inputs larger than this are refused (a device like /dev/zero never ends).
+MAX_INPUT_BYTES = 64 * 1024 * 1024
+
+
+def read_text(path: str | Path, expected: str = "PDDL") -> str:
+    """Return the text of ``path`` (``-`` reads stdin), tolerating a BOM.
+
+    ``expected`` names what the file should hold, for error messages.
+
+    Raises :class:`InputFileError` for missing, unreadable, binary or empty
+    files, so that no caller ever sees an ``OSError``.
+    """
+    name = str(path)
+    try:
+        if name == "-":
+            if sys.stdin is None:
+                raise InputFileError("standard input is closed", Location(name))
+            if hasattr(sys.stdin, "buffer"):
+                data = sys.stdin.buffer.read(MAX_INPUT_BYTES + 1)
+            else:
+                data = sys.stdin.read(MAX_INPUT_BYTES + 1).encode()
+        else:
+            with open(name, "rb") as fh:
+                data = fh.read(MAX_INPUT_BYTES + 1)
+    except FileNotFoundError:
+        raise InputFileError("file not found", Location(name)) from None
+    except IsADirectoryError:
+        raise InputFileError("is a directory, expected a file", Location(name)) from None
+    except OSError as exc:
+        raise InputFileError(f"cannot read file ({exc.strerror})", Location(name)) from None
+    except ValueError:  # a NUL in the name: no file can be called so
+        raise InputFileError("file not found (the name contains a NUL character)", Location(name.replace("\0", "\\0"))) from None
+    if len(data) > MAX_INPUT_BYTES:
+        raise InputFileError(f"larger than {MAX_INPUT_BYTES // (1024 * 1024)} MiB, expected {expected}", Location(name))
+    if b"\x00" in data:
+        raise InputFileError("binary file, expected text", Location(name))
+    try:
+        text = data.decode("utf-8-sig")
+    except UnicodeDecodeError as exc:
+        line = data[: exc.start].count(b"\n") + 1
+        raise InputFileError("not UTF-8 text", Location(name, line)) from None
+    if not text.strip():
+        raise InputFileError(f"empty file, expected {expected}", Location(name))
+    return text
 
 
 def write_text(path: str | Path, text: str) -> None:

@@ -26,7 +26,8 @@ from typing import Any, Callable, Iterator, Protocol
 from guided_lfd.deadline import seconds_left
 from guided_lfd.demonstration.vocabulary import KITCHEN, HandVocabulary, infer_vocabulary
 from guided_lfd.excuse.change import Change, excuse_state
-from guided_lfd.excuse.engine import ExcuseOptions, check_option_names, describe_change, find_excuses
+from guided_lfd.excuse.engine import ExcuseOptions, check_option_names, find_excuses
+from guided_lfd.excuse.change import describe_change
 from guided_lfd.excuse.status import ExcuseStatus
 from guided_lfd.io import json_document, write_text
 from guided_lfd.pddl.fit import check_model_fits, refuse_adl
@@ -717,7 +718,7 @@ def _request(k: int, robot: Domain, task: Problem, report, prefer_by: Domain | N
              reduce_by: Domain | None, human: Domain | None = None, deadline: float | None = None) -> Round:
     """The round's request: the (preferred) minimal excuse or its smallest sufficient part, why the robot
     needs it, what to leave as it is."""
-    from guided_lfd.excuse.preference import prefer_demonstration, sufficient_part
+    from guided_lfd.preference import prefer_demonstration, sufficient_part
     from guided_lfd.pddl.model import pretty_atom
 
     spellings = report.spellings
@@ -793,7 +794,8 @@ def _why_not_original(taught: Domain, problem: Problem, learned: list[str], opti
 def _what_it_lacks(taught: Domain, problem: Problem, learned: list[str], options: ExcuseOptions,
                    deadline: float | None) -> str | None:
     """See :func:`_why_not_original`: the detail, or None when nothing more can be said."""
-    from guided_lfd.planning.grounding import bits, ground
+    from guided_lfd.planning.grounding import ground
+    from guided_lfd.planning.task import bits
 
     ground_task = ground(taught, problem, deadline=deadline)
     reached, _ = _relaxed_reach(ground_task)
@@ -929,6 +931,7 @@ def _replan(robot: Domain, task: Problem, deadline: float | None = None,
             search: str | None = None) -> list[PlanStep] | None:
     """The robot's validated plan for ``task`` (optimal unless another ``search`` is named), or None when it has
     none (SearchTimeout past ``deadline``)."""
-    from guided_lfd.api import plan
+    from guided_lfd.planning import DEFAULT_SEARCH
+    from guided_lfd.symbolic.portfolio import validated_plan
 
-    return plan(robot, task, search=search, time_limit=seconds_left(deadline)).plan
+    return validated_plan(robot, task, search or DEFAULT_SEARCH, seconds_left(deadline))[1]

@@ -22,7 +22,8 @@ from guided_lfd.pddl import fast_reader, reader
 from guided_lfd.pddl.model import Atom
 from guided_lfd.pddl.reader import parse_domain, parse_task
 from guided_lfd.pddl.writer import domain_to_pddl, problem_to_pddl
-from guided_lfd.planning import find_plan, plan_task
+from guided_lfd.planning import find_plan
+from guided_lfd.symbolic.portfolio import plan_task
 
 COSTS = DATA / "costs"
 DOMAIN, PROBLEM = str(COSTS / "domain.pddl"), str(COSTS / "problem.pddl")

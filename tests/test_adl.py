@@ -16,13 +16,14 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from conftest import assert_brute_force_outcome
-from guided_lfd.planning.grounding import AxiomClosure, GroundAxiom, ground
+from guided_lfd.planning.grounding import ground
+from guided_lfd.planning.task import AxiomClosure, GroundAxiom
 from guided_lfd.pddl.formula import Junction, Quantified, holds
 from guided_lfd.pddl.model import Atom, Literal, objects_by_type
 from guided_lfd.pddl.reader import parse_domain, parse_task
 from guided_lfd.pddl.semantics import derived_atoms, effect_atoms, failed_conditions, strata
 from guided_lfd.pddl.writer import domain_to_pddl, problem_to_pddl
-from guided_lfd.planning import plan_task
+from guided_lfd.symbolic.portfolio import plan_task
 from guided_lfd.planning.validation import PlanStep, validate_plan
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -353,7 +354,7 @@ def _adl_brute_force(domain, problem, groups, max_size: int = 2) -> tuple[int | 
     from dataclasses import replace
 
     from guided_lfd.excuse.change import Change
-    from guided_lfd.planning.grounding import ground_atoms
+    from guided_lfd.planning.task import ground_atoms
 
     from guided_lfd.excuse.engine import ExcuseOptions
 

@@ -1,6 +1,6 @@
 """A timed-out excuse search still answers: its proven lower bound, the cheapest excuse it found, and progress.
 
-The searches read their clock through ``guided_lfd.excuse.strategies.clock``;
+The searches read their clock through ``guided_lfd.excuse.outcome.clock``;
 these tests replace it with one that moves a set step per reading, so a
 search times out after the same number of checks on any machine (the real
 deadline, 1,000 s away, never comes).
@@ -18,19 +18,20 @@ import pytest
 
 from conftest import BLOCKS, ROOT
 from guided_lfd.errors import EXIT_TIME_LIMIT
-from guided_lfd.excuse import strategies
+from guided_lfd.excuse import landmark, outcome
 from guided_lfd.excuse.check import check_excuse
 from guided_lfd.excuse.laws import derive_laws
 from guided_lfd.excuse.lmcut import RelaxedExcuseTask
 from guided_lfd.excuse.prepare import prepare
 from guided_lfd.excuse.space import Semantics
-from guided_lfd.excuse.engine import ExcuseOptions, ExcuseReport, find_excuses
+from guided_lfd.excuse.engine import ExcuseOptions, find_excuses
+from guided_lfd.excuse.report import ExcuseReport
 from guided_lfd.excuse.progress import Progress, ProgressMeter
 from guided_lfd.excuse.status import ExcuseStatus
 from guided_lfd.pddl.model import Domain, Problem
 from guided_lfd.pddl.reader import parse_domain, parse_task
 from guided_lfd.pddl.writer import domain_to_pddl
-from guided_lfd.planning.grounding import bits
+from guided_lfd.planning.task import bits
 
 LOGISTICS = ROOT / "data" / "benchmarks" / "ipc" / "logistics"
 #: Far beyond any test: only the ticking clock ends the searches.
@@ -43,7 +44,7 @@ STEP = 0.1
 def ticking_clock(monkeypatch: pytest.MonkeyPatch, step: float) -> None:
     """Make the searches' clock move ``step`` seconds per reading, from now."""
     base, ticks = time.monotonic(), itertools.count()
-    monkeypatch.setattr(strategies, "clock", lambda: base + step * next(ticks))
+    monkeypatch.setattr(outcome, "clock", lambda: base + step * next(ticks))
 
 
 def logistics_without_driving() -> tuple[Domain, Problem]:
@@ -241,13 +242,13 @@ def test_cli_progress_line_words():
     assert line.endswith(", best excuse so far costs 9")
 
 
-def landmark_run(incumbent_of=None, all_minimal: bool = False) -> strategies._LandmarkRun:
+def landmark_run(incumbent_of=None, all_minimal: bool = False) -> landmark._LandmarkRun:
     """The landmark search on logistics task11 without drive-truck, run to its end; ``incumbent_of(run)``, if
     given, hands it a probe's excuse (change set, plan, weight) before it starts."""
     domain, problem = logistics_without_driving()
     prepared = prepare(domain, problem, Semantics.LITERAL, fixed=options().fixed_predicates(domain))
     space = prepared.space
-    run = strategies._LandmarkRun(space, strategies.SearchLimits(all_minimal=all_minimal),
+    run = landmark._LandmarkRun(space, outcome.SearchLimits(all_minimal=all_minimal),
                                   RelaxedExcuseTask(space), prepared.oracle)
     if incumbent_of is not None:
         run.incumbent = incumbent_of(run)
@@ -256,7 +257,7 @@ def landmark_run(incumbent_of=None, all_minimal: bool = False) -> strategies._La
 
 
 @pytest.fixture(scope="module")
-def full_run() -> strategies._LandmarkRun:
+def full_run() -> landmark._LandmarkRun:
     return landmark_run()
 
 

@@ -11,7 +11,9 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from guided_lfd.excuse.space import Semantics, build_space
-from guided_lfd.excuse.strategies import STRATEGIES, SearchLimits, by_weight, colex_subsets
+from guided_lfd.excuse.strategies import STRATEGIES
+from guided_lfd.excuse.baseline import by_weight, colex_subsets
+from guided_lfd.excuse.outcome import SearchLimits
 from guided_lfd.planning.grounding import ground
 from guided_lfd.pddl.reader import parse_task
 

@@ -190,7 +190,7 @@ def _parse_random(tmp_path_factory, name: str, pddl: tuple[str, str]):
 
 def excuse_checker(domain, problem, groups):
     """(ground atoms, is_excuse(change atoms)): an independent BFS and consistency check on each excuse state."""
-    from guided_lfd.planning.grounding import ground_atoms
+    from guided_lfd.planning.task import ground_atoms
 
     # What the default options hold fixed (the world's structure) is no change set the search may try.
     atoms = ground_atoms(domain, problem, skip=set(ExcuseOptions().fixed_predicates(domain, problem)))
@@ -434,7 +434,7 @@ def test_the_landmark_search_queues_no_change_set_twice_and_pins_what_its_branch
     Depot task03 without drive under the consistent semantics took 2,618 nodes before this split, 372 with it."""
     from dataclasses import replace as replace_
 
-    from guided_lfd.excuse import strategies as module
+    from guided_lfd.excuse import landmark as module
 
     ipc = ROOT / "data" / "benchmarks" / "ipc" / "depot"
     full, problem = parse_task(ipc / "domain.pddl", ipc / "task03.pddl")
@@ -470,10 +470,11 @@ def test_a_paused_candidate_resumes_when_its_turn_comes_and_always_before_a_high
     waits; at once when every node left has a higher f (or none is left); never ahead of a lower f."""
     from types import SimpleNamespace
 
-    from guided_lfd.excuse import strategies as module
+    from guided_lfd.excuse import landmark as module
+    from guided_lfd.excuse import outcome
 
     now = [0.0]
-    monkeypatch.setattr(module, "clock", lambda: now[0])
+    monkeypatch.setattr(outcome, "clock", lambda: now[0])
     entry = (3, -1, 1, 0b1)
     run = SimpleNamespace(heap=[(3, -2, 2, 0b10)], paused=[(5.0, entry)])
     due = module._LandmarkRun.paused_due

@@ -16,13 +16,13 @@ from hypothesis import strategies as st
 from conftest import BLOCKS, ROOT, kitchen
 from test_excuse_engine import _parse_random, small_tasks
 from guided_lfd.excuse import portfolio
-from guided_lfd.excuse import strategies
+from guided_lfd.excuse import landmark, outcome
 from guided_lfd.excuse.engine import ExcuseOptions, find_excuses
 from guided_lfd.excuse.space import Semantics
 from guided_lfd.pddl.reader import parse_task
 
 
-_LANDMARK_SEARCH = strategies.LandmarkSearch.search
+_LANDMARK_SEARCH = landmark.LandmarkSearch.search
 
 
 def _waiting_landmark(self, space, limits, progress=None, oracle=None, relaxed=None):
@@ -36,7 +36,7 @@ def _waiting_landmark(self, space, limits, progress=None, oracle=None, relaxed=N
     end = time.monotonic() + 60
     while time.monotonic() < end:
         if limits.stop is not None and limits.stop():
-            raise strategies.SearchStopped()
+            raise outcome.SearchStopped()
         time.sleep(0.005)
     raise AssertionError("the symbolic search never answered")
 
@@ -52,7 +52,7 @@ def _excuses(report):
 def symbolic_answers(monkeypatch):
     """The symbolic member starts at once and the landmark member cannot answer."""
     monkeypatch.setattr(portfolio, "SYMBOLIC_AFTER_S", 0.0)
-    monkeypatch.setattr(strategies.LandmarkSearch, "search", _waiting_landmark)
+    monkeypatch.setattr(landmark.LandmarkSearch, "search", _waiting_landmark)
 
 
 #: Blocks task03 without unstack (C on B; goal A on B on C on D), worked out by hand: literally, B must be
@@ -168,7 +168,7 @@ def test_either_member_gives_the_landmark_strategys_answer(tmp_path_factory, mon
     expected = _excuses(find_excuses(domain, problem, ExcuseOptions(strategy="landmark", **options)))
     with monkeypatch.context() as patch:
         patch.setattr(portfolio, "SYMBOLIC_AFTER_S", 0.0)
-        patch.setattr(strategies.LandmarkSearch, "search", _waiting_landmark)
+        patch.setattr(landmark.LandmarkSearch, "search", _waiting_landmark)
         got = find_excuses(domain, problem, ExcuseOptions(**options))
     assert _excuses(got) == expected
 
@@ -195,13 +195,13 @@ def test_without_a_time_limit_the_search_without_invariants_still_has_one(monkey
     # It may never finish (depot's literal candidates) where the consistent search would: it gets a share of
     # WITHOUT_INVARIANTS_UNLIMITED_S, and the oracle's own deadline is restored after it.
     seen = []
-    real = strategies.LandmarkSearch.search
+    real = landmark.LandmarkSearch.search
 
     def recording(self, space, limits, progress=None, oracle=None, relaxed=None):
         seen.append((space.semantics, limits.deadline, oracle.deadline if oracle is not None else None))
         return real(self, space, limits, progress, oracle, relaxed)
 
-    monkeypatch.setattr(strategies.LandmarkSearch, "search", recording)
+    monkeypatch.setattr(landmark.LandmarkSearch, "search", recording)
     monkeypatch.setattr(portfolio, "SYMBOLIC_AFTER_S", 3600.0)
     domain, problem = parse_task(BLOCKS / "domain-no-unstack.pddl", BLOCKS / "task03.pddl")
     report = find_excuses(domain, problem, ExcuseOptions())

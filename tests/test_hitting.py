@@ -19,10 +19,11 @@ from guided_lfd.excuse.lmcut import RelaxedClosure, RelaxedExcuseTask
 from guided_lfd.excuse.milp import ChangeProgram
 from guided_lfd.excuse.reach import ReachabilityOracle
 from guided_lfd.excuse.space import ChangeSpace, Semantics, build_space
-from guided_lfd.excuse.strategies import SearchLimits
+from guided_lfd.excuse.outcome import SearchLimits
 from guided_lfd.pddl.model import Atom
 from guided_lfd.pddl.reader import parse_domain, parse_task
-from guided_lfd.planning.grounding import bits, ground
+from guided_lfd.planning.grounding import ground
+from guided_lfd.planning.task import bits
 
 IPC = ROOT / "data" / "benchmarks" / "ipc"
 
@@ -164,7 +165,7 @@ def test_a_timed_out_portfolio_keeps_the_excuses_its_hitting_set_turns_found():
 
     from guided_lfd.excuse.portfolio import with_turns
     from guided_lfd.excuse.status import ExcuseStatus
-    from guided_lfd.excuse.strategies import SearchOutcome
+    from guided_lfd.excuse.outcome import SearchOutcome
 
     def landmark_timeout() -> SearchOutcome:
         return SearchOutcome([], {}, ExcuseStatus.TIMEOUT, lower_bound=5)

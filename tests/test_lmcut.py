@@ -15,7 +15,8 @@ from guided_lfd.excuse.invariants import mutex_groups
 from guided_lfd.excuse.lmcut import INF, RelaxedExcuseTask
 from guided_lfd.excuse.prepare import prepare
 from guided_lfd.excuse.space import Semantics, build_space
-from guided_lfd.planning.grounding import bits, ground
+from guided_lfd.planning.grounding import ground
+from guided_lfd.planning.task import bits
 from guided_lfd.pddl.reader import parse_domain, parse_task
 
 IPC = ROOT / "data" / "benchmarks" / "ipc"

@@ -13,7 +13,7 @@ from guided_lfd.errors import EXIT_MISMATCH, MergeError
 from guided_lfd.merge import merge_domains, same_up_to_renaming
 from guided_lfd.pddl.reader import parse_domain, parse_task
 from guided_lfd.pddl.writer import domain_to_pddl
-from guided_lfd.planning import plan_task
+from guided_lfd.symbolic.portfolio import plan_task
 from test_golden import check_golden
 
 MERGE = DATA / "merge"

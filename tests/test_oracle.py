@@ -296,7 +296,7 @@ def test_paused_checks_resume_and_decide_like_brute_force(tmp_path_factory, monk
     """Every check pauses after each turn (0 s slices, a pause time already past) and the checks of all the
     states are resumed in rotation, more of them than are kept (a dropped one starts afresh): each still ends
     in the right answer; the excuse search with 0 s candidate slices finds brute force's excuses."""
-    from guided_lfd.excuse import strategies
+    from guided_lfd.excuse import landmark
 
     monkeypatch.setattr(reach, "PORTFOLIO_SLICE_S", 0.0)
     monkeypatch.setattr(reach, "PAIR_CHECK_FIRST_S", 0.0)
@@ -316,7 +316,7 @@ def test_paused_checks_resume_and_decide_like_brute_force(tmp_path_factory, monk
             continue
         assert (plan is not None) == _bfs_reaches_goal(task, state)
     assert len(oracle._paused) <= 2
-    monkeypatch.setattr(strategies, "CHECK_SLICE_S", 0.0)
+    monkeypatch.setattr(landmark, "CHECK_SLICE_S", 0.0)
     for semantics in Semantics:
         report = find_excuses(domain, problem, ExcuseOptions(semantics=semantics, strategy="landmark",
                                                              all_minimal=True, verify=True, max_size=3))

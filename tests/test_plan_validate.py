@@ -30,9 +30,9 @@ def test_atoms_of_the_smallest_predicates_come_first_so_action_masks_stay_narrow
     """A bit set is as wide as its highest atom: on a large task (here: any task), (handempty) and (clear ?x)
     before (on ?x ?y) keeps each action's masks as narrow as its widest atom allows; a smaller one keeps the
     order by name."""
-    from guided_lfd.planning import grounding
+    from guided_lfd.planning import task as ground_task
 
-    monkeypatch.setattr(grounding, "ATOMS_BY_COUNT_FROM", by_count_from)
+    monkeypatch.setattr(ground_task, "ATOMS_BY_COUNT_FROM", by_count_from)
     domain, problem = parse_task(BLOCKS / "domain.pddl", BLOCKS / "task03.pddl")
     task = ground(domain, problem)
     order = list(dict.fromkeys(a.predicate for a in task.atoms))

@@ -10,8 +10,8 @@ from pathlib import Path
 import pytest
 
 from conftest import BLOCKS
-from guided_lfd.planning import plan_task
-from guided_lfd.planning import search as search_module
+from guided_lfd.symbolic.portfolio import plan_task
+from guided_lfd.symbolic import portfolio
 from guided_lfd.pddl.reader import parse_task
 from guided_lfd.symbolic.worker import Forked
 
@@ -23,23 +23,23 @@ def _slow_astar(actions, init, goal_pos, goal_neg, deadline=None, stop=None, **_
     end = time.monotonic() + 60
     while time.monotonic() < end:
         if stop is not None and stop():
-            raise search_module.SearchStopped()
+            raise portfolio.SearchStopped()
         time.sleep(0.01)
     raise AssertionError("the prover never answered")
 
 
 def test_the_prover_answers_when_astar_cannot(monkeypatch):
-    monkeypatch.setattr(search_module, "astar", _slow_astar)
+    monkeypatch.setattr(portfolio, "astar", _slow_astar)
     domain, problem = parse_task(TRACK / "bottleneck" / "domain.pddl", TRACK / "bottleneck" / "prob01.pddl")
     _, result = plan_task(domain, problem)
     assert result.plan is None and result.answered_by == "symbolic"
 
 
 def test_a_task_wider_than_the_engines_limit_starts_no_prover(monkeypatch):
-    from guided_lfd.symbolic import encoding, worker
+    from guided_lfd.symbolic import encoding
 
     monkeypatch.setattr(encoding, "DEFAULT_MAX_VARIABLES", 10)  # bottleneck prob01's actions touch 49 atoms
-    monkeypatch.setattr(worker, "Forked", _never_forked)  # no second process at all
+    monkeypatch.setattr(portfolio, "Forked", _never_forked)  # no second process at all
     domain, problem = parse_task(TRACK / "bottleneck" / "domain.pddl", TRACK / "bottleneck" / "prob01.pddl")
     _, result = plan_task(domain, problem)
     assert result.plan is None and result.answered_by == "astar-lmcut"  # A* alone proved it

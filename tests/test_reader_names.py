@@ -13,7 +13,8 @@ import pytest
 from conftest import DATA, ROOT
 from guided_lfd import errors
 from guided_lfd.excuse.document import read_excuse
-from guided_lfd.planning.grounding import ground, ground_atoms
+from guided_lfd.planning.grounding import ground
+from guided_lfd.planning.task import ground_atoms
 from guided_lfd.merge import merge_domains
 from guided_lfd.pddl.model import Atom, common_supertype, objects_by_type, type_members
 from guided_lfd.pddl.reader import parse_domain, parse_task

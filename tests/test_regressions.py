@@ -7,7 +7,8 @@ import pytest
 from conftest import DATA
 from guided_lfd.excuse.engine import ExcuseOptions, find_excuses
 from guided_lfd.excuse.space import MutexGroup, Semantics, build_space
-from guided_lfd.excuse.strategies import STRATEGIES, SearchLimits
+from guided_lfd.excuse.strategies import STRATEGIES
+from guided_lfd.excuse.outcome import SearchLimits
 from guided_lfd.planning.grounding import ground
 from guided_lfd.pddl.reader import parse_task
 

@@ -11,13 +11,14 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from conftest import ROOT, assert_brute_force_outcome
-from guided_lfd.excuse import strategies as module
+from guided_lfd.excuse import landmark as module
 from guided_lfd.excuse.engine import ExcuseOptions, find_excuses
 from guided_lfd.excuse.invariants import mutex_groups
 from guided_lfd.excuse.space import Semantics, build_space
 from guided_lfd.pddl.model import Atom
 from guided_lfd.pddl.reader import parse_task
-from guided_lfd.planning.grounding import bits, ground
+from guided_lfd.planning.grounding import ground
+from guided_lfd.planning.task import bits
 from test_excuse_engine import changes_of, checker_laws
 
 DATA = ROOT / "tests" / "data" / "static-groups"

@@ -18,7 +18,8 @@ from hypothesis import HealthCheck, given, settings
 
 from conftest import BLOCKS, kitchen
 from test_excuse_engine import _parse_random, small_tasks
-from guided_lfd.planning.grounding import bits, ground
+from guided_lfd.planning.grounding import ground
+from guided_lfd.planning.task import bits
 from guided_lfd.planning.search import astar, planning_actions
 from guided_lfd.pddl.reader import parse_task
 from guided_lfd.symbolic.diagrams import open_diagrams
@@ -198,13 +199,14 @@ def _held_in_c(space, limits):
 
 
 def test_the_symbolic_strategy_ends_at_its_deadline_even_inside_a_long_call(monkeypatch):
-    from guided_lfd.excuse import portfolio
+    from guided_lfd.excuse import symbolic as symbolic_strategy
     from guided_lfd.excuse.prepare import prepare
     from guided_lfd.excuse.space import Semantics
     from guided_lfd.excuse.status import ExcuseStatus
-    from guided_lfd.excuse.strategies import STRATEGIES, SearchLimits
+    from guided_lfd.excuse.strategies import STRATEGIES
+    from guided_lfd.excuse.outcome import SearchLimits
 
-    monkeypatch.setattr(portfolio, "symbolic_outcome", _held_in_c)
+    monkeypatch.setattr(symbolic_strategy, "symbolic_outcome", _held_in_c)
     space = prepare(*parse_task(BLOCKS / "domain-no-unstack.pddl", BLOCKS / "task03.pddl"), Semantics.LITERAL).space
     began = time.monotonic()
     outcome = STRATEGIES["symbolic"].search(space, SearchLimits(deadline=time.monotonic() + 0.5))
@@ -300,7 +302,7 @@ def test_groups_of_another_domain_the_robot_breaks_are_no_bound_on_its_backward_
 
 def test_an_action_keeps_a_group_when_its_precondition_says_which_atom_was_true():
     from guided_lfd.excuse.symbolic import keeps_group
-    from guided_lfd.planning.grounding import GroundAction
+    from guided_lfd.planning.task import GroundAction
 
     group = 0b111  # atoms 0, 1, 2: at most one true
 

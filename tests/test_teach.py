@@ -305,7 +305,7 @@ def test_predicting_demonstrations_for_prefer_stays_within_the_time_limit(runner
     unranked and stderr says why (a prediction made slow on purpose stands for a large human model)."""
     import time
 
-    from guided_lfd.excuse import preference
+    from guided_lfd import preference
 
     def slow(*args, **kwargs):
         time.sleep(30)

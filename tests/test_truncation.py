@@ -8,7 +8,7 @@ import json
 import pytest
 
 from conftest import DATA
-from guided_lfd.excuse import engine
+from guided_lfd.excuse import outcome
 from guided_lfd.excuse.engine import ExcuseOptions, find_excuses
 from guided_lfd.excuse.strategies import STRATEGIES
 from guided_lfd.pddl.reader import parse_task
@@ -18,7 +18,7 @@ TASK = [str(DATA / "many-excuses" / "domain.pddl"), str(DATA / "many-excuses" / 
 
 @pytest.mark.parametrize("strategy", sorted(STRATEGIES))
 def test_all_stops_at_the_cap_and_says_so(monkeypatch, strategy):
-    monkeypatch.setattr(engine, "MAX_EXCUSES", 5)
+    monkeypatch.setattr(outcome, "MAX_EXCUSES", 5)
     report = find_excuses(*parse_task(*TASK), ExcuseOptions(all_minimal=True, strategy=strategy))
     assert len(report.excuses) == 5
     assert report.statistics.truncated is True and report.statistics.max_excuses == 5
@@ -31,7 +31,7 @@ def test_all_below_the_cap_is_not_truncated(strategy):
 
 
 def test_the_text_and_the_json_say_it_and_stderr_warns_beside_json(runner, app, monkeypatch):
-    monkeypatch.setattr(engine, "MAX_EXCUSES", 5)
+    monkeypatch.setattr(outcome, "MAX_EXCUSES", 5)
     text = runner.invoke(app, ["excuse", *TASK, "--all"])
     assert text.exit_code == 0
     assert text.stdout.rstrip().endswith("(--all stopped at 5 excuses: more minimal excuses may exist)")
@@ -61,7 +61,7 @@ def test_slack_without_a_time_limit_stops_at_the_cap_and_says_so(runner, app, mo
     the warning speaks of the slack, not of minimal excuses."""
     report = find_excuses(*parse_task(*SLACK_TASK), ExcuseOptions(all_minimal=True, slack=1))
     assert sorted(e.size for e in report.excuses) == [1] * 3 + [2] * 15 and report.statistics.truncated is None
-    monkeypatch.setattr(engine, "MAX_EXCUSES", 10)
+    monkeypatch.setattr(outcome, "MAX_EXCUSES", 10)
     doc = runner.invoke(app, ["excuse", *SLACK_TASK, "--all", "--slack", "1", "--json"])
     assert doc.exit_code == 0
     assert len(json.loads(doc.stdout)["alternatives"]) == 9
@@ -71,9 +71,9 @@ def test_slack_without_a_time_limit_stops_at_the_cap_and_says_so(runner, app, mo
 @pytest.mark.parametrize("strategy", sorted(STRATEGIES))
 def test_a_list_of_exactly_the_cap_is_not_called_cut(monkeypatch, strategy):
     """#25 second round: 1,000 excuses of a task with exactly 1,000 were reported as 'stopped at 1,000'."""
-    monkeypatch.setattr(engine, "MAX_EXCUSES", 8)
+    monkeypatch.setattr(outcome, "MAX_EXCUSES", 8)
     report = find_excuses(*parse_task(*TASK), ExcuseOptions(all_minimal=True, strategy=strategy))
     assert len(report.excuses) == 8 and report.statistics.truncated is None
-    monkeypatch.setattr(engine, "MAX_EXCUSES", 7)
+    monkeypatch.setattr(outcome, "MAX_EXCUSES", 7)
     report = find_excuses(*parse_task(*TASK), ExcuseOptions(all_minimal=True, strategy=strategy))
     assert len(report.excuses) == 7 and report.statistics.truncated is True

@@ -164,7 +164,7 @@ class _GrowingState:
     def read(self, settled: float = float("-inf")):
         """``load_state`` of the file's complete lines; a TraceError at the first line added since the last
         read whose change is at or before ``settled`` (the segments of its time are written already)."""
-        from guided_lfd.pddl.source import read_text
+        from guided_lfd.io import read_text
 
         text = read_text(self.path, "an environment state CSV (time,fluent,value)")
         self.size = len(text.encode("utf-8"))

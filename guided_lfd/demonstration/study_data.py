@@ -20,7 +20,7 @@ from pathlib import Path
 from guided_lfd.demonstration.render import Noise, Scene, Step, render, schedule, script_for_plan
 from guided_lfd.pddl.model import Atom, Literal
 from guided_lfd.pddl.reader import parse_task
-from guided_lfd.planning import plan_task
+from guided_lfd.symbolic.portfolio import plan_task
 from guided_lfd.planning.validation import PlanStep, validate_plan
 
 DEMONSTRATORS = ("P1", "P2", "P3", "P4", "P5")

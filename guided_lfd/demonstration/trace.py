@@ -53,7 +53,7 @@ import pandas as pd
 
 from guided_lfd.errors import Location, TraceError
 from guided_lfd.pddl.model import PDDL_NAME, PDDL_RESERVED, Atom, pddl_name_defect
-from guided_lfd.pddl.source import read_text
+from guided_lfd.io import read_text
 from guided_lfd.demonstration.vocabulary import HandVocabulary, parse_vocabulary_row, vocabulary_of
 from guided_lfd.demonstration import default_state_path  # noqa: F401  (re-exported: where callers look for it)
 

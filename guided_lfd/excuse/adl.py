@@ -21,10 +21,14 @@ from typing import TYPE_CHECKING
 from guided_lfd.errors import OptionError
 from guided_lfd.excuse.space import ChangeSpace
 from guided_lfd.excuse.status import ExcuseStatus
-from guided_lfd.excuse.strategies import BaselineSearch, SearchLimits
+from guided_lfd.excuse.baseline import BaselineSearch
+from guided_lfd.excuse.outcome import MAX_EXCUSES, SearchLimits, cap_excuses
+from guided_lfd.excuse.verify import verify_excuse
+from guided_lfd.planning.validation import plan_steps
 
 if TYPE_CHECKING:
-    from guided_lfd.excuse.engine import ExcuseOptions, ExcuseReport, _Run
+    from guided_lfd.excuse.engine import ExcuseOptions, _Run
+    from guided_lfd.excuse.report import ExcuseReport
 
 #: The strategy every ADL task is searched with (see the module's docstring).
 ADL_STRATEGY = "baseline"
@@ -41,16 +45,15 @@ def adl_options(options: "ExcuseOptions") -> "ExcuseOptions":
 def search_adl(run: "_Run", space: ChangeSpace) -> "ExcuseReport":
     """Check solvability and search the minimal excuses of an ADL task prepared by the engine."""
     from guided_lfd.deadline import seconds_left
-    from guided_lfd.excuse.engine import MAX_EXCUSES, _steps, _verify, cap_excuses
     from guided_lfd.planning import find_plan
 
     options, task, stats = run.options, space.task, run.stats
     run._enter("already solvable?")
     plan0 = find_plan(task, search="astar-lmcut", time_limit_s=seconds_left(run.deadline, "already solvable?")).plan
     if plan0 is not None:
-        _verify(run.domain, run.problem, [], plan0)
+        verify_excuse(run.domain, run.problem, [], plan0)
         run.robot_plan_cost = sum(a.cost for a in plan0)
-        return run.report(ExcuseStatus.ALREADY_SOLVABLE, _steps(plan0), candidates=0, planner_calls=1)
+        return run.report(ExcuseStatus.ALREADY_SOLVABLE, plan_steps(plan0), candidates=0, planner_calls=1)
     run._enter("searching")
     limits = SearchLimits(all_minimal=options.all_minimal, max_size=options.max_size, deadline=run.deadline,
                           max_solutions=MAX_EXCUSES + 1)

@@ -4,9 +4,9 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from guided_lfd.pddl.model import Atom
+from guided_lfd.pddl.model import Atom, pretty_atom
 
-__all__ = ["Change", "excuse_state"]
+__all__ = ["Change", "describe_change", "excuse_state"]
 
 
 @dataclass(frozen=True)
@@ -29,3 +29,9 @@ def excuse_state(init: frozenset[Atom], changes: list[Change]) -> frozenset[Atom
         else:
             state.discard(change.atom)
     return frozenset(state)
+
+
+def describe_change(change: Change, spellings: dict[str, str]) -> str:
+    """``+(open pinkdrawer)`` -> ``Open PinkDrawer``; deletions read ``Not ...``."""
+    text = pretty_atom(change.atom, spellings)
+    return text if change.added else f"Not {text[:1].lower()}{text[1:]}"

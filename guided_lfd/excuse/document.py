@@ -7,14 +7,16 @@ document, the command line uses these functions to write it, and
 
 from __future__ import annotations
 
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from guided_lfd.errors import InputFileError, Location
-from guided_lfd.excuse.change import Change
-from guided_lfd.excuse.engine import Excuse, ExcuseReport, describe_change
+from guided_lfd.excuse.change import Change, describe_change
 from guided_lfd.io import read_json_document
 from guided_lfd.excuse.status import ExcuseStatus
 from guided_lfd.pddl.model import Atom, Domain, Problem
+
+if TYPE_CHECKING:  # the report's types, for annotations: the report calls these renderers
+    from guided_lfd.excuse.report import Excuse, ExcuseReport
 
 __all__ = ["candidate_text", "excuse_document", "excuse_summary", "excuse_text", "read_excuse", "cut_short"]
 

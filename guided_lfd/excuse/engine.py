@@ -12,7 +12,6 @@ from __future__ import annotations
 import gc
 import math
 import time
-from collections.abc import Sequence
 from dataclasses import dataclass, field, replace
 from typing import Any
 
@@ -20,29 +19,28 @@ from guided_lfd.deadline import check as check_deadline
 from guided_lfd.deadline import checked_time_limit, deadline_after, linger, lingering, watchdog
 from guided_lfd.errors import SearchTimeout
 from guided_lfd.excuse.change import Change, excuse_state
-from guided_lfd.excuse.check import check_excuse
 from guided_lfd.excuse.laws import WorldLaws, derive_laws
-from guided_lfd.excuse import strategies
+from guided_lfd.excuse import outcome as search_outcome
 from guided_lfd.excuse.lmcut import RelaxedExcuseTask
 from guided_lfd.excuse.portfolio import WITHOUT_INVARIANTS
 from guided_lfd.excuse.prepare import prepare
 from guided_lfd.excuse.progress import ProgressCallback, ProgressMeter
 from guided_lfd.excuse.reach import ReachabilityOracle
+from guided_lfd.excuse.verify import verify_excuse
 from guided_lfd.excuse.space import (
-    ChangeSpace, MutexGroup, Semantics, check_cost_predicates, check_fixed, cost_predicates,
+    ChangeSpace, Semantics, check_cost_predicates, check_fixed, cost_predicates,
 )
+from guided_lfd.excuse.report import Excuse, ExcuseReport
 from guided_lfd.excuse.statistics import ExcuseStatistics
 from guided_lfd.excuse.status import ExcuseStatus
-from guided_lfd.excuse.strategies import DEFAULT_STRATEGY, STRATEGIES, Probe, SearchLimits
-from guided_lfd.planning.grounding import GroundAction, GroundTask, bits, mask_of
+from guided_lfd.excuse.strategies import DEFAULT_STRATEGY, STRATEGIES
+from guided_lfd.excuse.outcome import Probe, SearchLimits
+from guided_lfd.planning.task import GroundAction, GroundTask, bits, mask_of
 from guided_lfd.planning.optimal import certified_optimal, shorten_plan
 from guided_lfd.pddl.fit import check_model_fits
-from guided_lfd.pddl.model import Atom, Domain, Literal, Problem, pretty_atom
-from guided_lfd.planning.validation import PlanStep, validated
+from guided_lfd.pddl.model import Domain, Literal, Problem
+from guided_lfd.planning.validation import PlanStep, plan_steps
 
-
-#: ``--all`` lists at most this many excuses (and says so in ``statistics.truncated`` when it stops there).
-MAX_EXCUSES = 1000
 
 #: With a time limit, a search that has found no excuse when this share of its time is used pauses once for a
 #: greedy search for any excuse (reported, not proven minimal, if the time runs out), for at most
@@ -136,109 +134,6 @@ class ExcuseOptions:
         priced = cost_predicates(self.costs)
         models = [self.invariants_from] if self.invariants_from is not None else []
         return {p: why for p, why in structural_predicates(domain, problem, models).items() if p not in priced}
-
-
-@dataclass
-class Excuse:
-    """A minimal excuse: the changes, the excuse state and the robot's plan from it."""
-
-    changes: list[Change]
-    cost: int
-    state: frozenset[Atom]
-    #: The robot's plan from the excuse state (validated), step by step.
-    plan: list[PlanStep]
-    plan_optimal: bool
-    #: The plan's cost: its length, or its total-cost under the problem's metric (:action-costs).
-    plan_cost: int | None = None
-    #: False for a timed-out run's best candidate (``ExcuseReport.best_candidate``) whose cost does not meet
-    #: the proven lower bound.
-    proven_minimal: bool = True
-
-    @property
-    def size(self) -> int:
-        return len(self.changes)
-
-
-def describe_change(change: Change, spellings: dict[str, str]) -> str:
-    """``+(open pinkdrawer)`` -> ``Open PinkDrawer``; deletions read ``Not ...``."""
-    text = pretty_atom(change.atom, spellings)
-    return text if change.added else f"Not {text[:1].lower()}{text[1:]}"
-
-
-@dataclass
-class ExcuseReport:
-    """Result of :func:`find_excuses`."""
-
-    status: ExcuseStatus
-    excuses: list[Excuse]
-    semantics: Semantics
-    strategy: str
-    statistics: ExcuseStatistics
-    unachievable_goals: list[Literal]
-    invariant_groups: list[MutexGroup]
-    robot_plan: list[PlanStep] | None = None  # when the task is already solvable
-    robot_plan_cost: int | None = None  # the cost of ``robot_plan`` (see Excuse.plan_cost)
-    #: Why the first excuse was chosen among the minimal ones (:func:`guided_lfd.excuse.preference.apply_preference`).
-    preference: str | None = None
-    #: The task asked about (its paths and spellings go into the document).
-    domain: Domain | None = field(default=None, repr=False)
-    problem: Problem | None = field(default=None, repr=False)
-    #: A timed-out run: the cheapest excuse found (checked like every excuse), usually not proven minimal.
-    best_candidate: Excuse | None = None
-    #: Every change costs 1 (no ``--cost``): a cost is a number of changes.
-    unit_costs: bool = True
-    #: The run's ``max_size`` (a lower bound speaks of the excuses within it).
-    max_size: int | None = None
-    #: ``--slack`` the run had (its list holds excuses up to this much costlier than the minimum).
-    slack: int = 0
-
-    @property
-    def excuse(self) -> Excuse | None:
-        """The first minimal excuse, or None."""
-        return self.excuses[0] if self.excuses else None
-
-    @property
-    def spellings(self) -> dict[str, str]:
-        """Names as the files write them (the domain's spelling of a predicate wins)."""
-        if self.domain is None or self.problem is None:
-            return {}
-        return {**self.problem.spellings, **self.domain.spellings}
-
-    def to_dict(self) -> dict[str, Any]:
-        """The body of the ``guided-lfd/excuse`` document, as ``guided-lfd excuse --json`` writes it."""
-        from guided_lfd.excuse.document import excuse_document
-
-        domain = self.domain.path if self.domain is not None else "<domain>"
-        problem = self.problem.path if self.problem is not None else "<problem>"
-        return excuse_document(self, domain, problem, self.spellings)
-
-    def to_json(self) -> str:
-        """Exactly the document ``guided-lfd excuse --json`` prints (format and version included)."""
-        from guided_lfd.io import json_document
-
-        return json_document("excuse", self.to_dict())
-
-    def to_text(self) -> str:
-        """The report as ``guided-lfd excuse`` prints it for people."""
-        from guided_lfd.excuse.document import excuse_text
-
-        if self.problem is None:
-            raise ValueError("a report made without its problem has no text form")
-        return excuse_text(self, self.problem, self.spellings)
-
-    def to_svg(self) -> str:
-        """The first excuse as a picture, SVG: the initial state and the excuse state side by side, the changed
-        facts marked (what ``guided-lfd excuse --svg`` writes; see :mod:`guided_lfd.excuse.picture`)."""
-        from guided_lfd.excuse.picture import excuse_scene
-        from guided_lfd.excuse.svg import scene_svg
-
-        return scene_svg(excuse_scene(self))
-
-    def to_dot(self) -> str:
-        """The same picture as Graphviz DOT text (what ``guided-lfd excuse --dot`` writes)."""
-        from guided_lfd.excuse.picture import excuse_scene, scene_dot
-
-        return scene_dot(excuse_scene(self))
 
 
 def check_option_names(domain: Domain, options: ExcuseOptions) -> None:
@@ -440,7 +335,7 @@ class _Run:
         """When and how long the search may pause for a greedy search for any excuse (with a time limit)."""
         if self.deadline is None:
             return None
-        now = strategies.clock()
+        now = search_outcome.clock()
         span = max(0.0, self.deadline - now)
         return Probe(now + PROBE_AT * span, now + (PROBE_AT + PROBE_SHARE) * span, self.keep_candidate)
 
@@ -461,9 +356,9 @@ class _Run:
         space = self.space
         assert space is not None
         change_list = _changes_of(space.task, changes)
-        _verify(self.domain, self.problem, change_list, plan, self.laws(), self.fixed, self.options.costs,
+        verify_excuse(self.domain, self.problem, change_list, plan, self.laws(), self.fixed, self.options.costs,
                 space.cost(changes))
-        return Excuse(change_list, space.cost(changes), excuse_state(self.problem.init, change_list), _steps(plan),
+        return Excuse(change_list, space.cost(changes), excuse_state(self.problem.init, change_list), plan_steps(plan),
                       optimal, sum(a.cost for a in plan))
 
     def laws(self) -> WorldLaws | None:
@@ -538,9 +433,9 @@ class _Run:
             self._enter("robot plan")
             plan, _ = _robot_plan(task, space, oracle, task.init, plan0, options.optimal_plans, self.deadline,
                                   robot_plan_deadline(self.start))
-            _verify(self.domain, self.problem, [], plan)
+            verify_excuse(self.domain, self.problem, [], plan)
             self.robot_plan_cost = sum(a.cost for a in plan)
-            return self.report(ExcuseStatus.ALREADY_SOLVABLE, _steps(plan), candidates=0, planner_calls=1)
+            return self.report(ExcuseStatus.ALREADY_SOLVABLE, plan_steps(plan), candidates=0, planner_calls=1)
         return self.search(task, space, oracle, relaxed)
 
     def search(self, task: GroundTask, space: ChangeSpace, oracle: ReachabilityOracle,
@@ -549,7 +444,7 @@ class _Run:
         options = self.options
         self._enter("searching")
         limits = SearchLimits(all_minimal=options.all_minimal, max_size=options.max_size, deadline=self.deadline,
-                              slack=options.slack, max_solutions=MAX_EXCUSES + 1, probe=self.probe())
+                              slack=options.slack, max_solutions=search_outcome.MAX_EXCUSES + 1, probe=self.probe())
         search_start = time.monotonic()
         self.stats.setup_time_s = round(search_start - self.start, 6)
         outcome = STRATEGIES[options.strategy].search(space, limits, self.progress, oracle=oracle, relaxed=relaxed)
@@ -557,7 +452,7 @@ class _Run:
         self.stats.candidates, self.stats.planner_calls = outcome.candidates, outcome.planner_calls + 1
         self.stats.nodes_expanded, self.stats.counters = outcome.expanded, dict(outcome.extra)
         self.stats.answered_by = outcome.answered_by or options.strategy
-        cap_excuses(outcome, self.stats)
+        search_outcome.cap_excuses(outcome, self.stats)
         self.phase = "robot plan"
         plans_until = robot_plan_deadline(self.start)
         for changes in outcome.solutions:
@@ -627,31 +522,5 @@ def _check_arguments(domain: object, problem: object, options: object, on_progre
         raise OptionError(f"on_progress: expected a function of one Progress (or None), got {type(on_progress).__name__}")
 
 
-def cap_excuses(outcome: strategies.SearchOutcome, stats: ExcuseStatistics) -> None:
-    """At most :data:`MAX_EXCUSES`: the search looks for one more, so that a list of exactly that many is not
-    called cut; one beyond it is dropped and the statistics say the list was cut there."""
-    if len(outcome.solutions) > MAX_EXCUSES:
-        del outcome.solutions[MAX_EXCUSES:]
-        stats.truncated, stats.max_excuses = True, MAX_EXCUSES
-
-
-def _steps(plan: list[GroundAction]) -> list[PlanStep]:
-    return [PlanStep(a.schema, a.args) for a in plan]
-
-
 def _excuse_order(e: Excuse) -> tuple:
     return (e.cost, e.size, [str(c) for c in e.changes])
-
-
-def _verify(domain: Domain, problem: Problem, changes: list[Change], plan: list[GroundAction],
-            laws: WorldLaws | None = None, fixed: Sequence[str] = (), costs: Sequence[str] | None = None,
-            cost: int | None = None) -> None:
-    """Refuse to return an excuse the independent checker rejects (a bug); ``cost`` is the search's, which the
-    checker recomputes from the ``--cost`` specifications ``costs``, ``laws`` the checker's own invariants."""
-    steps = [PlanStep(a.schema, a.args) for a in plan]
-    if not changes:
-        validated(domain, problem, steps, "the robot plan")
-        return
-    problems = check_excuse(domain, problem, changes, steps, laws, fixed, costs, cost)
-    if problems:
-        raise RuntimeError("internal check failed for excuse " + " ".join(map(str, changes)) + ": " + "; ".join(problems))

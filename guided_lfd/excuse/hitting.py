@@ -35,7 +35,7 @@ from guided_lfd.excuse.progress import ProgressMeter
 from guided_lfd.excuse.reach import ReachabilityOracle
 from guided_lfd.excuse.space import ChangeSpace
 from guided_lfd.excuse.status import ExcuseStatus
-from guided_lfd.planning.grounding import GroundAction, bits
+from guided_lfd.planning.task import GroundAction
 
 __all__ = ["HittingSetSearch", "monotone"]
 
@@ -57,7 +57,8 @@ class HittingSetSearch:
     def search(self, space: ChangeSpace, limits: Any, progress: ProgressMeter | None = None,
                oracle: ReachabilityOracle | None = None, relaxed: RelaxedExcuseTask | None = None) -> Any:
         """Minimal change sets for ``space``; ``oracle`` and ``relaxed`` are reused when given."""
-        from guided_lfd.excuse.strategies import LandmarkSearch, run_to_outcome
+        from guided_lfd.excuse.landmark import LandmarkSearch
+        from guided_lfd.excuse.outcome import run_to_outcome
 
         if not monotone(space):
             outcome = LandmarkSearch().search(space, limits, progress, oracle, relaxed)
@@ -86,11 +87,11 @@ class HittingRun:
 
     def loop(self, progress: ProgressMeter | None) -> None:
         """Solve, check, cut, until the minimal excuses are found or the program has no solution."""
-        from guided_lfd.excuse.strategies import SearchStopped, _timed_out
+        from guided_lfd.excuse.outcome import SearchStopped, timed_out
 
         space, task = self.space, self.space.task
         while True:
-            if _timed_out(self.limits):
+            if timed_out(self.limits):
                 raise SearchTimeout("excuse search exceeded its time limit")
             if self.limits.stop is not None and self.limits.stop():
                 raise SearchStopped()
@@ -169,7 +170,7 @@ class HittingRun:
 
     def time_left(self) -> float | None:
         """Seconds to the deadline (None: none)."""
-        from guided_lfd.excuse.strategies import clock
+        from guided_lfd.excuse.outcome import clock
 
         return None if self.limits.deadline is None else max(0.0, self.limits.deadline - clock())
 
@@ -179,7 +180,7 @@ class HittingRun:
 
     def outcome(self, timed_out: bool = False) -> Any:
         """What the search found, with its effort."""
-        from guided_lfd.excuse.strategies import SearchOutcome
+        from guided_lfd.excuse.outcome import SearchOutcome
 
         stats = self.oracle.stats
         extra = self.counters()

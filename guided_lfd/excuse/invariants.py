@@ -27,7 +27,8 @@ from dataclasses import replace
 
 from guided_lfd.errors import Location, MismatchError, SearchTimeout
 from guided_lfd.excuse.space import MutexGroup
-from guided_lfd.planning.grounding import GroundTask, bits, ground
+from guided_lfd.planning.grounding import ground
+from guided_lfd.planning.task import GroundTask, bits
 from guided_lfd.pddl.model import Atom, Domain, Literal, Predicate, Problem
 from guided_lfd.pddl.writer import domain_to_pddl, problem_to_pddl
 

@@ -30,7 +30,7 @@ import math
 from typing import TYPE_CHECKING, Iterator
 
 from guided_lfd.excuse.space import ChangeSpace
-from guided_lfd.planning.grounding import bits
+from guided_lfd.planning.task import bits
 
 if TYPE_CHECKING:
     import numpy as np
@@ -185,7 +185,7 @@ class RelaxedExcuseTask:
         # change, split over the k groups q belongs to (so it is never charged
         # more than once in total): costs are scaled by lcm(k) to stay integral.
         # Landmark cost shares then include these charges, so a child whose
-        # change removes such a q must not inherit them (see strategies.py).
+        # change removes such a q must not inherit them (see static_groups.py).
         pos_id = self._pos_id
         self.groups = [g.mask for g in space.groups]
         membership: dict[int, int] = {}

@@ -14,7 +14,7 @@ from typing import Any
 
 from guided_lfd.errors import SearchTimeout
 from guided_lfd.excuse.space import ChangeSpace
-from guided_lfd.planning.grounding import bits
+from guided_lfd.planning.task import bits
 
 __all__ = ["ChangeProgram"]
 

@@ -19,12 +19,11 @@ import html
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
-from guided_lfd.excuse.change import Change
-from guided_lfd.excuse.engine import describe_change
+from guided_lfd.excuse.change import Change, describe_change
 from guided_lfd.pddl.model import Atom, Domain, Problem
 
 if TYPE_CHECKING:
-    from guided_lfd.excuse.engine import ExcuseReport
+    from guided_lfd.excuse.report import ExcuseReport
 
 __all__ = ["ADDED", "REMOVED", "SAME", "COLOURS", "MAX_OBJECTS", "Fact", "Panel", "Scene", "excuse_scene",
            "scene_dot"]
@@ -206,7 +205,6 @@ def _layout_order(every: list[str], seeds: list[str], links: dict[str, set[str]]
 def _headline(report: ExcuseReport, problem: Problem) -> str:
     """What the picture is about, in one line."""
     from guided_lfd.excuse.document import excuse_summary
-    from guided_lfd.excuse.engine import describe_change
     from guided_lfd.excuse.status import ExcuseStatus
 
     spellings = report.spellings

@@ -40,6 +40,7 @@ import time
 from dataclasses import replace
 from typing import Any
 
+from guided_lfd.excuse import symbolic
 from guided_lfd.excuse.progress import ProgressMeter
 from guided_lfd.excuse.space import ChangeSpace, Semantics
 from guided_lfd.excuse.status import ExcuseStatus
@@ -68,17 +69,6 @@ WITHOUT_INVARIANTS = "landmark-literal"
 _EXACT = (ExcuseStatus.FOUND, ExcuseStatus.NONE, ExcuseStatus.NONE_WITHIN_SIZE)
 
 
-def symbolic_outcome(space: ChangeSpace, limits: Any) -> tuple[str, list[int], dict[int, list[int]], dict[str, int]]:
-    """In the worker: the symbolic search's outcome, its plans as indices into the task's actions (a small,
-    picklable answer)."""
-    from guided_lfd.excuse.symbolic import SymbolicSearch
-
-    outcome = SymbolicSearch().search_here(space, limits)
-    index = {id(a): k for k, a in enumerate(space.task.actions)}
-    plans = {c: [index[id(a)] for a in plan] for c, plan in outcome.plans.items()}
-    return outcome.status.value, outcome.solutions, plans, outcome.extra
-
-
 class PortfolioSearch:
     """The landmark search; after :data:`HITTING_AFTER_S` the hitting-set search in turns with it (monotone tasks),
     after :data:`SYMBOLIC_AFTER_S` the symbolic search beside them."""
@@ -96,7 +86,8 @@ class PortfolioSearch:
         from guided_lfd.excuse.lmcut import RelaxedExcuseTask
         from guided_lfd.excuse.reach import ReachabilityOracle
         from guided_lfd.excuse.hitting import monotone
-        from guided_lfd.excuse.strategies import LandmarkSearch, SearchStopped
+        from guided_lfd.excuse.landmark import LandmarkSearch
+        from guided_lfd.excuse.outcome import SearchStopped
         from guided_lfd.symbolic.encoding import supports, worth_running
 
         # One oracle (and its memory of dead states) and one compiled relaxed task for every search here.
@@ -157,7 +148,7 @@ class _HittingTurns:
     carry over from turn to turn."""
 
     def __init__(self, space: ChangeSpace, limits: Any, oracle: Any, relaxed: Any) -> None:
-        from guided_lfd.excuse.strategies import clock
+        from guided_lfd.excuse.outcome import clock
 
         self.space, self.limits, self.oracle, self.relaxed = space, limits, oracle, relaxed
         self.run: Any = None  # built at its first turn: a run that ends sooner never pays for it
@@ -172,7 +163,7 @@ class _HittingTurns:
     def turn(self) -> None:
         """The hitting-set search's turn, if its time has come (its answer in :attr:`answer` once it has one)."""
         from guided_lfd.errors import SearchTimeout
-        from guided_lfd.excuse.strategies import clock, oracle_until
+        from guided_lfd.excuse.outcome import clock, oracle_until
 
         now = clock()
         if self.answer is not None or now < self.next_at:
@@ -215,7 +206,8 @@ def without_invariants(space: ChangeSpace, limits: Any, oracle: Any, relaxed: An
     It settles it by proving that no excuse exists at all (none within ``--max-size`` would answer less than
     the consistent search may) or by a lightest excuse that keeps every invariant.
     """
-    from guided_lfd.excuse.strategies import LandmarkSearch, clock, oracle_until
+    from guided_lfd.excuse.landmark import LandmarkSearch
+    from guided_lfd.excuse.outcome import clock, oracle_until
 
     if not space.groups or limits.all_minimal or limits.slack:
         return None, None
@@ -251,7 +243,7 @@ class _Race:
                 return False
             from guided_lfd.symbolic.worker import Forked
 
-            self.worker = Forked(symbolic_outcome, self.space, self.limits, niceness=WORKER_NICENESS)
+            self.worker = Forked(symbolic.symbolic_outcome, self.space, self.limits, niceness=WORKER_NICENESS)
             return False
         if not self.worker.poll():
             return False
@@ -260,22 +252,12 @@ class _Race:
 
     def outcome(self) -> Any:
         """The worker's answer as the searches' outcome."""
-        return outcome_of(self.space, self.worker.value(), "symbolic")
+        return symbolic.outcome_of(self.space, self.worker.value(), "symbolic")
 
     def end(self) -> None:
         """Stop the worker, if it was started."""
         if self.worker is not None:
             self.worker.stop()
-
-
-def outcome_of(space: ChangeSpace, value: tuple, answered_by: str) -> Any:
-    """A :func:`symbolic_outcome` value as the searches' outcome (plans back to the task's actions)."""
-    from guided_lfd.excuse.strategies import SearchOutcome
-
-    status, solutions, plans, extra = value
-    actions = space.task.actions
-    return SearchOutcome(solutions, {c: [actions[k] for k in p] for c, p in plans.items()},
-                         ExcuseStatus(status), 0, 0, 0, dict(extra), answered_by=answered_by)
 
 
 def _answered(outcome: Any, by: str) -> Any:

@@ -12,7 +12,8 @@ from typing import Callable, Sequence
 
 from guided_lfd.excuse.reach import ReachabilityOracle
 from guided_lfd.excuse.space import ChangeSpace, MutexGroup, Semantics, build_space
-from guided_lfd.planning.grounding import GroundTask, ground
+from guided_lfd.planning.grounding import ground
+from guided_lfd.planning.task import GroundTask
 from guided_lfd.pddl.model import Domain, Problem
 
 __all__ = ["PreparedTask", "prepare"]

@@ -40,7 +40,7 @@ from typing import Any, Callable, Generator, Iterator
 from guided_lfd.errors import SearchTimeout
 from guided_lfd.excuse.space import ChangeSpace
 from guided_lfd.planning.counting import OperatorCounting
-from guided_lfd.planning.grounding import GroundAction, bits
+from guided_lfd.planning.task import GroundAction, bits
 from guided_lfd.planning.h2 import PairReachability
 from guided_lfd.planning.relaxation import RelaxedTask
 

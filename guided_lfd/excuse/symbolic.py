@@ -22,10 +22,11 @@ from typing import Any
 
 from guided_lfd.deadline import check
 from guided_lfd.errors import SearchTimeout, UnsupportedFeatureError
+from guided_lfd.excuse.outcome import SearchOutcome
 from guided_lfd.excuse.progress import ProgressMeter
 from guided_lfd.excuse.space import ChangeSpace
 from guided_lfd.excuse.status import ExcuseStatus
-from guided_lfd.planning.grounding import GroundAction, bits
+from guided_lfd.planning.task import GroundAction, bits
 
 #: The most nodes of the invariants' diagram the backward search keeps inside (each image step is
 #: intersected with it); groups beyond it are applied to the reached set afterwards.
@@ -182,8 +183,6 @@ class SymbolicSearch:
         """
         if limits.deadline is None:
             return self.search_here(space, limits)
-        from guided_lfd.excuse.portfolio import outcome_of, symbolic_outcome
-        from guided_lfd.excuse.strategies import SearchOutcome
         from guided_lfd.symbolic.worker import Forked
 
         worker = Forked(symbolic_outcome, space, limits)
@@ -203,7 +202,6 @@ class SymbolicSearch:
 
     def search_here(self, space: ChangeSpace, limits: Any) -> Any:
         """:meth:`search` in this process."""
-        from guided_lfd.excuse.strategies import SearchOutcome
         from guided_lfd.symbolic.diagrams import memory_as_memout
 
         try:
@@ -213,7 +211,6 @@ class SymbolicSearch:
             return SearchOutcome([], {}, ExcuseStatus.TIMEOUT)
 
     def _search(self, space: ChangeSpace, limits: Any) -> Any:
-        from guided_lfd.excuse.strategies import SearchOutcome
         from guided_lfd.symbolic.nearest import nearest
 
         run = SymbolicRun(space, limits.deadline)
@@ -242,3 +239,20 @@ class SymbolicSearch:
         extra = {"symbolic_layers": len(run.layers.layers), "symbolic_nodes": run.sym.dd.size(run.layers.reached),
                  "symbolic_variables": len(run.sym.atoms)}
         return SearchOutcome(sorted(solutions), plans, status, 0, 0, 0, extra)
+
+
+def symbolic_outcome(space: ChangeSpace, limits: Any) -> tuple[str, list[int], dict[int, list[int]], dict[str, int]]:
+    """In the worker: the symbolic search's outcome, its plans as indices into the task's actions (a small,
+    picklable answer)."""
+    outcome = SymbolicSearch().search_here(space, limits)
+    index = {id(a): k for k, a in enumerate(space.task.actions)}
+    plans = {c: [index[id(a)] for a in plan] for c, plan in outcome.plans.items()}
+    return outcome.status.value, outcome.solutions, plans, outcome.extra
+
+
+def outcome_of(space: ChangeSpace, value: tuple, answered_by: str) -> Any:
+    """A :func:`symbolic_outcome` value as the searches' outcome (plans back to the task's actions)."""
+    status, solutions, plans, extra = value
+    actions = space.task.actions
+    return SearchOutcome(solutions, {c: [actions[k] for k in p] for c, p in plans.items()},
+                         ExcuseStatus(status), 0, 0, 0, dict(extra), answered_by=answered_by)

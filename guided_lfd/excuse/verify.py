@@ -17,9 +17,11 @@ from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
 
 from guided_lfd.excuse.change import Change
-from guided_lfd.excuse.check import change_cost
+from guided_lfd.excuse.check import change_cost, check_excuse
 from guided_lfd.excuse.laws import WorldLaws
 from guided_lfd.pddl.model import Atom, Domain, Problem
+from guided_lfd.planning.task import GroundAction
+from guided_lfd.planning.validation import plan_steps, validated
 
 __all__ = ["MAX_VERIFIED_SETS", "MinimalityCheck", "verify_minimal"]
 
@@ -41,7 +43,8 @@ def verify_minimal(domain: Domain, problem: Problem, cost: int, laws: WorldLaws 
                    costs: Sequence[str], max_size: int | None = None, deadline: float | None = None,
                    cap: int = MAX_VERIFIED_SETS) -> MinimalityCheck:
     """Whether no change set cheaper than ``cost`` is an excuse (see the module's description)."""
-    from guided_lfd.planning.grounding import ground, ground_atoms
+    from guided_lfd.planning.grounding import ground
+    from guided_lfd.planning.task import ground_atoms
 
     skip = set(fixed) | domain.derived_predicates()
     atoms = ground_atoms(domain, problem, skip=skip)
@@ -97,3 +100,17 @@ def _is_excuse(task, problem: Problem, changes: list[Change], laws: WorldLaws | 
         return False
     left = None if deadline is None else max(0.001, deadline - time.monotonic())
     return find_plan(task, init=mask, search=search, time_limit_s=left).plan is not None
+
+
+def verify_excuse(domain: Domain, problem: Problem, changes: list[Change], plan: list[GroundAction],
+            laws: WorldLaws | None = None, fixed: Sequence[str] = (), costs: Sequence[str] | None = None,
+            cost: int | None = None) -> None:
+    """Refuse to return an excuse the independent checker rejects (a bug); ``cost`` is the search's, which the
+    checker recomputes from the ``--cost`` specifications ``costs``, ``laws`` the checker's own invariants."""
+    steps = plan_steps(plan)
+    if not changes:
+        validated(domain, problem, steps, "the robot plan")
+        return
+    problems = check_excuse(domain, problem, changes, steps, laws, fixed, costs, cost)
+    if problems:
+        raise RuntimeError("internal check failed for excuse " + " ".join(map(str, changes)) + ": " + "; ".join(problems))

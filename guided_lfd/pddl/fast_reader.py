@@ -37,14 +37,6 @@ from guided_lfd.pddl.source import SExpr, SourceMap, Token
 
 #: A name as tarski's grammar reads it (NAME: a letter, then letters, digits, '-', '_').
 _NAME = re.compile(r"[a-zA-Z][a-zA-Z0-9_-]*\Z")
-#: Words tarski's lexer reads as keywords: never names on the fast path.
-RESERVED_WORDS = {
-    "define", "domain", "problem", "and", "not", "or", "imply", "exists", "forall", "when", "either", "object",
-    "number", "int", "float", "assign", "increase", "decrease", "scale-up", "scale-down", "max", "min", "sin",
-    "cos", "sqrt", "tan", "acos", "asin", "atan", "exp", "abs", "preference", "minimize", "maximize",
-    "is-violated", "at-end", "always", "sometime", "within", "at-most-once", "sometime-after", "sometime-before",
-    "always-within", "hold-during", "hold-after",
-}
 _DOMAIN_SECTIONS = (":requirements", ":types", ":constants", ":predicates", ":functions")
 _PROBLEM_SECTIONS = (":requirements", ":objects")
 
@@ -92,7 +84,7 @@ def _nested(node: SExpr) -> list[Any]:
 
 def _name(word: Any) -> str:
     """A declared name tarski reads as a name."""
-    if not isinstance(word, str) or not _NAME.match(word) or word in RESERVED_WORDS:
+    if not isinstance(word, str) or not _NAME.match(word) or word in names.RESERVED_WORDS:
         raise _NotPlain(str(word))
     return word
 

@@ -17,7 +17,7 @@ from dataclasses import dataclass
 from itertools import product
 from typing import Iterable, Iterator, Union
 
-from guided_lfd.pddl.model import EQUALITY, Atom, Literal
+from guided_lfd.pddl.atoms import EQUALITY, Atom, Literal
 
 #: Variables of a quantifier or a universal effect: (name, type) pairs.
 Variables = tuple[tuple[str, str], ...]

@@ -17,12 +17,11 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 from guided_lfd.errors import Location
-
-if TYPE_CHECKING:
-    from guided_lfd.pddl.formula import ConditionalEffect, DerivedRule, Formula
+from guided_lfd.pddl.atoms import EQUALITY, Atom, Literal
+from guided_lfd.pddl.formula import ConditionalEffect, DerivedRule, Formula
 
 #: The PDDL requirements guided-lfd accepts: STRIPS with typing, negative preconditions, equality and
 #: action costs, and the ADL ones (read with Fast Downward's translator, see :mod:`guided_lfd.pddl.formula`).
@@ -33,8 +32,6 @@ SUPPORTED_REQUIREMENTS = STRIPS_REQUIREMENTS + ADL_REQUIREMENTS
 
 #: The one numeric fluent guided-lfd supports: the accumulated action cost of :action-costs.
 TOTAL_COST = "total-cost"
-
-EQUALITY = "="
 
 #: What a name (domain, predicate, type) must look like to be written as PDDL.
 PDDL_NAME = re.compile(r"[A-Za-z][A-Za-z0-9_-]*")
@@ -68,36 +65,6 @@ def pddl_name_defect(name: str) -> str | None:
     if name in PDDL_RESERVED:
         return "a name that is not a PDDL keyword"
     return None
-
-
-@dataclass(frozen=True, order=True)
-class Atom:
-    """``(predicate arg ...)``; arguments are objects or ``?variables``."""
-
-    predicate: str
-    args: tuple[str, ...] = ()
-
-    def __str__(self) -> str:
-        return "(" + " ".join((self.predicate, *self.args)) + ")"
-
-    def substitute(self, binding: dict[str, str]) -> "Atom":
-        """The atom with variables replaced according to ``binding``."""
-        return Atom(self.predicate, tuple(binding.get(a, a) for a in self.args))
-
-
-@dataclass(frozen=True, order=True)
-class Literal:
-    """An atom or its negation."""
-
-    atom: Atom
-    positive: bool = True
-
-    def __str__(self) -> str:
-        return str(self.atom) if self.positive else f"(not {self.atom})"
-
-    def substitute(self, binding: dict[str, str]) -> "Literal":
-        """The literal with variables replaced according to ``binding``."""
-        return Literal(self.atom.substitute(binding), self.positive)
 
 
 @dataclass(frozen=True)

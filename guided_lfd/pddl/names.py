@@ -37,6 +37,15 @@ _NOT_A_SUBSTITUTE = {
     "sqrt", "real", "integer", "natural", "at", "over", "all", "start", "end", "total-time", "is-violated",
 }
 
+#: Words tarski's lexer reads as keywords: never names on the fast path.
+RESERVED_WORDS = {
+    "define", "domain", "problem", "and", "not", "or", "imply", "exists", "forall", "when", "either", "object",
+    "number", "int", "float", "assign", "increase", "decrease", "scale-up", "scale-down", "max", "min", "sin",
+    "cos", "sqrt", "tan", "acos", "asin", "atan", "exp", "abs", "preference", "minimize", "maximize",
+    "is-violated", "at-end", "always", "sometime", "within", "at-most-once", "sometime-after", "sometime-before",
+    "always-within", "hold-during", "hold-after",
+}
+
 
 def typed_names(items: list[SExpr | Token]) -> list[tuple[Token, SExpr | Token | None]]:
     """(name, type) of a typed list's names, the type as written (a token, an ``either`` list) or None.
@@ -262,8 +271,6 @@ def fresh_names(wanted: list[str], *sources: SourceMap | None) -> list[str]:
     """
     if not wanted:
         return []  # (no walk over a large problem's tokens)
-    from guided_lfd.pddl.fast_reader import RESERVED_WORDS  # (it imports this module)
-
     taken = set(_NOT_A_SUBSTITUTE) | RESERVED_WORDS
     for src in sources:
         if src is not None:

@@ -36,7 +36,8 @@ from guided_lfd.pddl.model import (
     type_members,
 )
 from guided_lfd.pddl import adl_reader, costs, fast_reader, names
-from guided_lfd.pddl.source import SExpr, SourceMap, Token, read_text
+from guided_lfd.pddl.source import SExpr, SourceMap, Token
+from guided_lfd.io import read_text
 
 # Keywords of PDDL features beyond STRIPS and ADL, with the requirement they belong to.
 _UNSUPPORTED_KEYWORDS = {
@@ -208,7 +209,7 @@ def keywords_lowered(text: str) -> str:
             return word  # already lower case, or a word whose lower case is not the same length
         if low.startswith(":"):
             return low
-        if before == "(" and low in fast_reader.RESERVED_WORDS or before == "-" and low in _KEYWORD_TYPES:
+        if before == "(" and low in names.RESERVED_WORDS or before == "-" and low in _KEYWORD_TYPES:
             return low
         if before.lower() == ":metric" and low in ("minimize", "maximize"):
             return low

@@ -18,7 +18,7 @@ from dataclasses import dataclass, replace
 from typing import Callable, Iterator
 
 from guided_lfd.deadline import deadline_after, watchdog
-from guided_lfd.planning.grounding import GroundAction, GroundTask, bits
+from guided_lfd.planning.task import GroundAction, GroundTask, bits
 
 #: Registered configurations: name -> (search, heuristic or None, optimal?).  ``guided`` is
 #: guided-lfd's own A*; the other searches are pyperplan's (imported when used).
@@ -170,18 +170,3 @@ def _guided_astar(task: GroundTask, init: int | None, actions: list[GroundAction
     with time_limit(time_limit_s, "planner"):  # LM-cut of one state can be long on a big task
         plan = astar(usable, init, task.goal_pos, task.goal_neg, deadline=deadline)
     return PlanResult(plan, search, True, time.perf_counter() - start)
-
-
-def plan_task(domain, problem, search: str = DEFAULT_SEARCH, time_limit_s: float | None = None) -> tuple[GroundTask, PlanResult]:
-    """Ground ``problem`` for planning (static atoms pruned) and plan for it; ``time_limit_s`` bounds both (the
-    grounding checks it cooperatively, so the limit holds in a thread too, where no watchdog can run)."""
-    from guided_lfd.deadline import deadline_after, seconds_left
-    from guided_lfd.planning.grounding import ground
-
-    deadline = deadline_after(time_limit_s)
-    task = ground(domain, problem, fixed=domain.predicates, deadline=deadline)
-    if search == DEFAULT_SEARCH and not task.is_adl:
-        from guided_lfd.planning.portfolio import plan_with_prover
-
-        return task, plan_with_prover(task, deadline)
-    return task, find_plan(task, search=search, time_limit_s=seconds_left(deadline, "grounding"))

@@ -4,7 +4,7 @@
 Downward's translator normalise them (quantifiers and disjunctions compiled
 into axioms and split actions, complicated goals into a derived atom) and
 ground them by its relaxed reachability analysis, and turns the result into
-a :class:`~guided_lfd.planning.grounding.GroundTask` whose actions carry conditional
+a :class:`~guided_lfd.planning.task.GroundTask` whose actions carry conditional
 effects and whose states are closed under the axioms.
 
 :func:`astar` is guided-lfd's A* for such tasks, with LM-cut on a relaxation
@@ -22,10 +22,10 @@ from typing import Any
 
 from guided_lfd.deadline import linger
 from guided_lfd.errors import Location, SearchTimeout, TaskTooLarge
-from guided_lfd.planning.grounding import (MAX_GROUND_ACTIONS, AxiomClosure, GroundAction, GroundAxiom, GroundEffect,
-                                  GroundTask, mask_of)
 from guided_lfd.pddl.model import Atom, Domain, Problem
 from guided_lfd.planning.relaxation import RelaxedTask
+from guided_lfd.planning.task import (MAX_GROUND_ACTIONS, AxiomClosure, GroundAction, GroundAxiom, GroundEffect,
+                                      GroundTask, ground_atoms, mask_of)
 
 
 def _translator_task(domain: Domain, problem: Problem) -> Any:
@@ -53,8 +53,6 @@ def _changeable(task: Any, domain: Domain, problem: Problem, predicates: set[str
     exploration starts from every type-correct atom of theirs.
     """
     from fast_downward.translate import pddl
-
-    from guided_lfd.planning.grounding import ground_atoms
 
     never = pddl.Atom(NEVER, [])
     for name in sorted(predicates):

@@ -16,7 +16,7 @@ from __future__ import annotations
 
 from typing import Sequence
 
-from guided_lfd.planning.grounding import GroundAction, bits
+from guided_lfd.planning.task import GroundAction, bits
 from guided_lfd.planning.relaxation import INF, RelaxedTask
 
 

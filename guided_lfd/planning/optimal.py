@@ -17,7 +17,7 @@ from __future__ import annotations
 
 from typing import Sequence
 
-from guided_lfd.planning.grounding import GroundAction
+from guided_lfd.planning.task import GroundAction
 from guided_lfd.planning.relaxation import RelaxedTask
 
 __all__ = ["certified_optimal", "is_plan", "shorten_plan"]

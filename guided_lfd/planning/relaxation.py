@@ -24,7 +24,7 @@ from __future__ import annotations
 import heapq
 from typing import Sequence
 
-from guided_lfd.planning.grounding import GroundAction, bits, mask_of
+from guided_lfd.planning.task import GroundAction, bits, mask_of
 
 INF = float("inf")
 

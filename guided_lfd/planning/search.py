@@ -21,8 +21,9 @@ import time
 from typing import Callable, Sequence
 
 from guided_lfd.errors import SearchTimeout
-from guided_lfd.planning.grounding import GroundAction, GroundTask, bits
+from guided_lfd.planning.task import GroundAction, GroundTask, bits
 from guided_lfd.planning.relaxation import INF, RelaxedTask
+from guided_lfd.planning.relevance import relevance
 
 
 def reachable_actions(actions: Sequence[GroundAction], state: int) -> list[GroundAction]:
@@ -61,9 +62,7 @@ def reachable_actions(actions: Sequence[GroundAction], state: int) -> list[Groun
 
 
 def relevant_actions(task: GroundTask, actions: Sequence[GroundAction]) -> list[GroundAction]:
-    """The actions backward relevance from the goal keeps (see ``excuse.space.relevance``)."""
-    from guided_lfd.excuse.space import relevance
-
+    """The actions backward relevance from the goal keeps (see :func:`~guided_lfd.planning.relevance.relevance`)."""
     return relevance(task, list(actions))[1]
 
 
@@ -120,7 +119,7 @@ def astar(
     ``relaxed`` is the LM-cut table over the same actions and goal (built
     here if not given; its first actions are ``actions``); action costs are its ``base_costs``.
     ``successor``: the state an applicable action leads to, when it is more than adds and deletes
-    (an ADL task's :meth:`~guided_lfd.planning.grounding.GroundTask.successor`).
+    (an ADL task's :meth:`~guided_lfd.planning.task.GroundTask.successor`).
     Raises :class:`SearchTimeout` past ``deadline`` (a ``time.monotonic()`` value), and
     :class:`SearchStopped` when ``stop()`` (asked every 16 expansions) says another search has answered.
     """

@@ -10,13 +10,10 @@ import re
 from dataclasses import dataclass, field
 
 from guided_lfd.errors import InputFileError, Location, PlanFileError
-from typing import TYPE_CHECKING
-
+from guided_lfd.pddl.formula import Formula
 from guided_lfd.pddl.model import EQUALITY, Atom, Domain, Literal, MissingCostError, Problem, action_cost, objects_by_type
-
-if TYPE_CHECKING:
-    from guided_lfd.pddl.formula import Formula
-from guided_lfd.pddl.source import read_text
+from guided_lfd.io import read_text
+from guided_lfd.planning.task import GroundAction
 
 
 @dataclass(frozen=True)
@@ -238,3 +235,8 @@ def format_plan(steps: list[str], cost: int | None = None, kind: str = "unit cos
     """A plan in the IPC format: one action per line and a cost comment (``kind``: see :func:`cost_kind`)."""
     body = "".join(f"{s}\n" for s in steps)
     return body + f"; cost = {len(steps) if cost is None else cost} ({kind})\n"
+
+
+def plan_steps(plan: list[GroundAction]) -> list[PlanStep]:
+    """A plan of ground actions as the steps a validator and a document read (schema and arguments)."""
+    return [PlanStep(a.schema, a.args) for a in plan]

@@ -13,7 +13,8 @@ from guided_lfd.demonstration.trace import load_demonstration
 from guided_lfd.evaluate import (
     PredictedSizes, RobotReachability, misdirected_guidance, predicted_sizes, solvability_after, usefulness,
 )
-from guided_lfd.excuse.engine import describe_change, find_excuses
+from guided_lfd.excuse.engine import find_excuses
+from guided_lfd.excuse.change import describe_change
 from guided_lfd.merge import merge_domains
 from guided_lfd.pddl.model import Domain
 from guided_lfd.pddl.reader import parse_domain, parse_task

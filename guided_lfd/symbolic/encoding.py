@@ -26,7 +26,7 @@ from dataclasses import dataclass
 from typing import Any, Iterable, Sequence
 
 from guided_lfd.errors import UnsupportedFeatureError
-from guided_lfd.planning.grounding import GroundAction, GroundTask, bits
+from guided_lfd.planning.task import GroundAction, GroundTask, bits
 from guided_lfd.symbolic.diagrams import DEFAULT_LIBRARY, Diagrams, open_diagrams
 
 

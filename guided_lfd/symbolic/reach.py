@@ -15,7 +15,7 @@ from typing import Any
 
 from guided_lfd.deadline import check
 from guided_lfd.errors import SearchTimeout
-from guided_lfd.planning.grounding import GroundAction
+from guided_lfd.planning.task import GroundAction
 from guided_lfd.symbolic.encoding import SymbolicTask
 
 

@@ -14,7 +14,7 @@ from __future__ import annotations
 import time
 from typing import Any, Iterable
 
-from guided_lfd.planning.grounding import GroundAction, GroundTask, bits
+from guided_lfd.planning.task import GroundAction, GroundTask, bits
 from guided_lfd.symbolic.encoding import SymbolicTask, variable_order
 from guided_lfd.symbolic.reach import Proof, prove_unsolvable
 

@@ -17,7 +17,8 @@ from unified_planning.model import FNode, Fluent, Problem as UPProblem
 from unified_planning.plans import SequentialPlan
 
 from guided_lfd.errors import OptionError
-from guided_lfd.excuse.engine import Excuse, ExcuseOptions, ExcuseReport, find_excuses
+from guided_lfd.excuse.engine import ExcuseOptions, find_excuses
+from guided_lfd.excuse.report import Excuse, ExcuseReport
 from guided_lfd.excuse.status import ExcuseStatus
 from guided_lfd.up.task import UpTask, to_task
 

@@ -99,7 +99,7 @@ def to_task(problem: UPProblem) -> UpTask:
     :class:`~guided_lfd.errors.UnsupportedFeatureError` naming UP's features;
     what the reader refuses in the written PDDL raises the reader's errors.
     """
-    from guided_lfd.api import read_task
+    from guided_lfd.pddl.reader import parse_task
 
     if not isinstance(problem, UPProblem):
         raise TypeError(f"expected a unified-planning Problem, got {type(problem).__name__}")
@@ -113,5 +113,5 @@ def to_task(problem: UPProblem) -> UpTask:
         domain_text, problem_text = writer.get_domain(), writer.get_problem()
     except UPException as exc:  # e.g. a boolean fluent with no initial value
         raise UnsupportedFeatureError(f"unified-planning problem '{problem.name}' cannot be written as PDDL: {exc}")
-    domain, task_problem = read_task(domain_text, problem_text)
+    domain, task_problem = parse_task("<domain>", "<problem>", domain_text=domain_text, problem_text=problem_text)
     return UpTask(problem, domain, task_problem, writer)

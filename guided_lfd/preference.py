@@ -87,8 +87,8 @@ def sufficient_part(human: Domain, robot: Domain, task: Problem, excuse: list[Ch
     skills are predicted as the human model's actions the demonstration uses.
     The whole excuse, with no state, is the answer when no smaller part does.
     """
-    from guided_lfd.api import plan as robot_plan
     from guided_lfd.merge import merge_domains
+    from guided_lfd.symbolic.portfolio import validated_plan
 
     for size in range(1, len(excuse)):
         for part in combinations(excuse, size):
@@ -99,7 +99,7 @@ def sufficient_part(human: Domain, robot: Domain, task: Problem, excuse: list[Ch
             used = {step.action for step in predicted.plan}
             skills = replace(human, actions=[a for a in human.actions if a.name in used])
             taught = merge_domains([robot, skills], name=robot.name).domain
-            if robot_plan(taught, replace(task, init=after), time_limit=_left(deadline)).solved:
+            if validated_plan(taught, replace(task, init=after), time_limit_s=_left(deadline))[1] is not None:
                 return list(part), after
     return list(excuse), None
 
