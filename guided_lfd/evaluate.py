@@ -30,9 +30,9 @@ from guided_lfd.excuse.prepare import prepare
 from guided_lfd.planning.grounding import ground
 from guided_lfd.planning.task import GroundTask
 from guided_lfd.pddl.model import Atom, Domain, Literal, Problem
-from guided_lfd.symbolic.portfolio import plan_task
+from guided_lfd.symbolic.portfolio import validated_plan
 from guided_lfd.reporting import round_fraction
-from guided_lfd.planning.validation import PlanStep, validate_plan, validated
+from guided_lfd.planning.validation import PlanStep, validate_plan
 from guided_lfd.planning.validation import holds as literal_holds
 
 #: Default bound on the states explored for misdirected guidance.
@@ -72,12 +72,7 @@ def optimal_plan(domain: Domain, problem: Problem, goal: tuple[Literal, ...] | N
                            init=problem.init if init is None else init)
     if holds(task_problem.goal, task_problem.init):
         return []
-    _, result = plan_task(domain, task_problem, "astar-lmcut", time_limit)
-    if result.plan is None:
-        return None
-    steps = [PlanStep(a.schema, a.args) for a in result.plan]
-    validated(domain, task_problem, steps, "a predicted demonstration plan")
-    return steps
+    return validated_plan(domain, task_problem, "astar-lmcut", time_limit, "a predicted demonstration plan")[1]
 
 
 # -- F1 and the predicted demonstration sizes ------------------------------------

@@ -36,10 +36,10 @@ def test_the_prover_answers_when_astar_cannot(monkeypatch):
 
 
 def test_a_task_wider_than_the_engines_limit_starts_no_prover(monkeypatch):
-    from guided_lfd.symbolic import encoding
+    from guided_lfd.symbolic import encoding, worker
 
     monkeypatch.setattr(encoding, "DEFAULT_MAX_VARIABLES", 10)  # bottleneck prob01's actions touch 49 atoms
-    monkeypatch.setattr(portfolio, "Forked", _never_forked)  # no second process at all
+    monkeypatch.setattr(worker, "Forked", _never_forked)  # no second process at all
     domain, problem = parse_task(TRACK / "bottleneck" / "domain.pddl", TRACK / "bottleneck" / "prob01.pddl")
     _, result = plan_task(domain, problem)
     assert result.plan is None and result.answered_by == "astar-lmcut"  # A* alone proved it

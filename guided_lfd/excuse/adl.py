@@ -22,7 +22,8 @@ from guided_lfd.errors import OptionError
 from guided_lfd.excuse.space import ChangeSpace
 from guided_lfd.excuse.status import ExcuseStatus
 from guided_lfd.excuse.baseline import BaselineSearch
-from guided_lfd.excuse.outcome import MAX_EXCUSES, SearchLimits, cap_excuses
+from guided_lfd.excuse import outcome as search_outcome
+from guided_lfd.excuse.outcome import SearchLimits
 from guided_lfd.excuse.verify import verify_excuse
 from guided_lfd.planning.validation import plan_steps
 
@@ -56,14 +57,14 @@ def search_adl(run: "_Run", space: ChangeSpace) -> "ExcuseReport":
         return run.report(ExcuseStatus.ALREADY_SOLVABLE, plan_steps(plan0), candidates=0, planner_calls=1)
     run._enter("searching")
     limits = SearchLimits(all_minimal=options.all_minimal, max_size=options.max_size, deadline=run.deadline,
-                          max_solutions=MAX_EXCUSES + 1)
+                          max_solutions=search_outcome.MAX_EXCUSES + 1)
     search_start = time.monotonic()
     stats.setup_time_s = round(search_start - run.start, 6)
     outcome = BaselineSearch().search(space, limits, run.progress)
     stats.search_time_s = round(time.monotonic() - search_start, 6)
     stats.candidates, stats.planner_calls, stats.nodes_expanded = (outcome.candidates, outcome.planner_calls + 1,
                                                                    outcome.expanded)
-    cap_excuses(outcome, stats)
+    search_outcome.cap_excuses(outcome, stats)
     run.phase = "robot plan"
     for changes in outcome.solutions:  # each plan is the ADL A*'s: optimal
         run.excuses.append(run.checked_excuse(changes, outcome.plans[changes], True))

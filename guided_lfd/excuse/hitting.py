@@ -30,7 +30,10 @@ from __future__ import annotations
 from typing import Any
 
 from guided_lfd.errors import SearchTimeout
+from guided_lfd.excuse import outcome as search_outcome
+from guided_lfd.excuse.landmark import LandmarkSearch
 from guided_lfd.excuse.lmcut import RelaxedClosure, RelaxedExcuseTask
+from guided_lfd.excuse.outcome import SearchLimits, SearchOutcome, SearchStopped, run_to_outcome
 from guided_lfd.excuse.progress import ProgressMeter
 from guided_lfd.excuse.reach import ReachabilityOracle
 from guided_lfd.excuse.space import ChangeSpace
@@ -54,12 +57,9 @@ class HittingSetSearch:
     description = "the lightest change set meeting every landmark found so far (a MILP), checked; a failure adds one"
     lists_slack = True
 
-    def search(self, space: ChangeSpace, limits: Any, progress: ProgressMeter | None = None,
+    def search(self, space: ChangeSpace, limits: SearchLimits, progress: ProgressMeter | None = None,
                oracle: ReachabilityOracle | None = None, relaxed: RelaxedExcuseTask | None = None) -> Any:
         """Minimal change sets for ``space``; ``oracle`` and ``relaxed`` are reused when given."""
-        from guided_lfd.excuse.landmark import LandmarkSearch
-        from guided_lfd.excuse.outcome import run_to_outcome
-
         if not monotone(space):
             outcome = LandmarkSearch().search(space, limits, progress, oracle, relaxed)
             outcome.answered_by = "landmark"  # the search that answered, not the one asked for
@@ -72,7 +72,7 @@ class HittingSetSearch:
 class HittingRun:
     """One hitting-set search: the program, the landmarks in it, and what was found."""
 
-    def __init__(self, space: ChangeSpace, limits: Any, relaxed: RelaxedExcuseTask,
+    def __init__(self, space: ChangeSpace, limits: SearchLimits, relaxed: RelaxedExcuseTask,
                  oracle: ReachabilityOracle) -> None:
         from guided_lfd.excuse.milp import ChangeProgram
 
@@ -87,11 +87,9 @@ class HittingRun:
 
     def loop(self, progress: ProgressMeter | None) -> None:
         """Solve, check, cut, until the minimal excuses are found or the program has no solution."""
-        from guided_lfd.excuse.outcome import SearchStopped, timed_out
-
         space, task = self.space, self.space.task
         while True:
-            if timed_out(self.limits):
+            if search_outcome.timed_out(self.limits):
                 raise SearchTimeout("excuse search exceeded its time limit")
             if self.limits.stop is not None and self.limits.stop():
                 raise SearchStopped()
@@ -170,9 +168,7 @@ class HittingRun:
 
     def time_left(self) -> float | None:
         """Seconds to the deadline (None: none)."""
-        from guided_lfd.excuse.outcome import clock
-
-        return None if self.limits.deadline is None else max(0.0, self.limits.deadline - clock())
+        return None if self.limits.deadline is None else max(0.0, self.limits.deadline - search_outcome.clock())
 
     def counters(self) -> dict[str, int]:
         """Its effort: programs solved, landmarks from the relaxation and from the robot's checks."""
@@ -180,8 +176,6 @@ class HittingRun:
 
     def outcome(self, timed_out: bool = False) -> Any:
         """What the search found, with its effort."""
-        from guided_lfd.excuse.outcome import SearchOutcome
-
         stats = self.oracle.stats
         extra = self.counters()
         if timed_out:

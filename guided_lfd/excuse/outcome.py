@@ -25,8 +25,8 @@ from guided_lfd.excuse.status import ExcuseStatus
 from guided_lfd.planning.search import SearchStopped
 from guided_lfd.planning.task import GroundAction
 
-__all__ = ["MAX_EXCUSES", "cap_excuses", "SearchLimits", "SearchOutcome", "SearchStopped", "Strategy", "Probe", "clock", "oracle_until",
-           "timed_out", "run_to_outcome"]
+__all__ = ["MAX_EXCUSES", "Probe", "SearchLimits", "SearchOutcome", "SearchStopped", "Strategy", "cap_excuses", "clock",
+           "oracle_until", "run_to_outcome", "timed_out"]
 
 
 def clock() -> float:

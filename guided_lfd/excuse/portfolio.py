@@ -40,8 +40,15 @@ import time
 from dataclasses import replace
 from typing import Any
 
+from guided_lfd.errors import SearchTimeout
+from guided_lfd.excuse import outcome as search_outcome
 from guided_lfd.excuse import symbolic
+from guided_lfd.excuse.hitting import HittingRun, monotone
+from guided_lfd.excuse.landmark import LandmarkSearch
+from guided_lfd.excuse.lmcut import RelaxedExcuseTask
+from guided_lfd.excuse.outcome import SearchLimits, SearchStopped
 from guided_lfd.excuse.progress import ProgressMeter
+from guided_lfd.excuse.reach import ReachabilityOracle
 from guided_lfd.excuse.space import ChangeSpace, Semantics
 from guided_lfd.excuse.status import ExcuseStatus
 
@@ -78,16 +85,11 @@ class PortfolioSearch:
                    "once a run takes longer (default)")
     lists_slack = True
 
-    def search(self, space: ChangeSpace, limits: Any, progress: ProgressMeter | None = None,
+    def search(self, space: ChangeSpace, limits: SearchLimits, progress: ProgressMeter | None = None,
                oracle: Any = None, relaxed: Any = None) -> Any:
         """The first exact outcome of the searches (no hitting-set turns on a task that is not monotone; no symbolic
         worker on one that is no STRIPS task or is wider than the symbolic engine's default limit,
         :data:`~guided_lfd.symbolic.encoding.DEFAULT_MAX_VARIABLES`)."""
-        from guided_lfd.excuse.lmcut import RelaxedExcuseTask
-        from guided_lfd.excuse.reach import ReachabilityOracle
-        from guided_lfd.excuse.hitting import monotone
-        from guided_lfd.excuse.landmark import LandmarkSearch
-        from guided_lfd.excuse.outcome import SearchStopped
         from guided_lfd.symbolic.encoding import supports, worth_running
 
         # One oracle (and its memory of dead states) and one compiled relaxed task for every search here.
@@ -129,7 +131,7 @@ def with_turns(outcome: Any, turns: _HittingTurns) -> Any:
     return outcome
 
 
-def _members(limits: Any, race: _Race | None, turns: _HittingTurns | None) -> Any:
+def _members(limits: SearchLimits, race: _Race | None, turns: _HittingTurns | None) -> Any:
     """The landmark search's limits: stopped once the symbolic worker (``race``) or the hitting-set search
     (``turns``) has answered, and giving the latter its turns."""
     if race is None and turns is None:
@@ -147,13 +149,11 @@ class _HittingTurns:
     search's turn before it, both doubling, so each has about half the time.  Its program, landmarks and bound
     carry over from turn to turn."""
 
-    def __init__(self, space: ChangeSpace, limits: Any, oracle: Any, relaxed: Any) -> None:
-        from guided_lfd.excuse.outcome import clock
-
+    def __init__(self, space: ChangeSpace, limits: SearchLimits, oracle: Any, relaxed: Any) -> None:
         self.space, self.limits, self.oracle, self.relaxed = space, limits, oracle, relaxed
         self.run: Any = None  # built at its first turn: a run that ends sooner never pays for it
         self.slice = HITTING_AFTER_S
-        self.next_at = clock() + HITTING_AFTER_S
+        self.next_at = search_outcome.clock() + HITTING_AFTER_S
         self.answer: Any = None
 
     def counters(self) -> dict[str, int]:
@@ -162,28 +162,23 @@ class _HittingTurns:
 
     def turn(self) -> None:
         """The hitting-set search's turn, if its time has come (its answer in :attr:`answer` once it has one)."""
-        from guided_lfd.errors import SearchTimeout
-        from guided_lfd.excuse.outcome import clock, oracle_until
-
-        now = clock()
+        now = search_outcome.clock()
         if self.answer is not None or now < self.next_at:
             return
         if self.run is None:
-            from guided_lfd.excuse.hitting import HittingRun
-
             self.run = HittingRun(self.space, replace(self.limits, probe=None, stop=None, turn=None), self.relaxed,
                                   self.oracle)
         deadline = self.limits.deadline
         until = now + self.slice if deadline is None else min(deadline, now + self.slice)
         self.run.limits = replace(self.run.limits, deadline=until)
         try:
-            with oracle_until(self.oracle, until):
+            with search_outcome.oracle_until(self.oracle, until):
                 self.run.loop(None)
             self.answer = _answered(self.run.outcome(), "hitting-set")
         except SearchTimeout:
             pass  # its turn is over: the next one goes on from its program
         self.slice *= 2
-        self.next_at = clock() + self.slice
+        self.next_at = search_outcome.clock() + self.slice
 
 
 def _with_first(outcome: Any, first: Any) -> Any:
@@ -197,7 +192,8 @@ def _with_first(outcome: Any, first: Any) -> Any:
     return outcome
 
 
-def without_invariants(space: ChangeSpace, limits: Any, oracle: Any, relaxed: Any) -> tuple[Any | None, Any | None]:
+def without_invariants(space: ChangeSpace, limits: SearchLimits, oracle: Any,
+                       relaxed: Any) -> tuple[Any | None, Any | None]:
     """(the answer, None) when the search without the invariants settles the consistent question (see the
     module docstring), else (None, that search's outcome, or None where it did not run: no invariants to
     drop, or ``--all`` / ``--slack`` want more than one lightest excuse).  ``oracle`` and ``relaxed`` are the
@@ -206,17 +202,14 @@ def without_invariants(space: ChangeSpace, limits: Any, oracle: Any, relaxed: An
     It settles it by proving that no excuse exists at all (none within ``--max-size`` would answer less than
     the consistent search may) or by a lightest excuse that keeps every invariant.
     """
-    from guided_lfd.excuse.landmark import LandmarkSearch
-    from guided_lfd.excuse.outcome import clock, oracle_until
-
     if not space.groups or limits.all_minimal or limits.slack:
         return None, None
     literal = replace(space, semantics=Semantics.LITERAL, groups=[], groups_of={})
-    now = clock()
+    now = search_outcome.clock()
     left = WITHOUT_INVARIANTS_UNLIMITED_S if limits.deadline is None else limits.deadline - now
     # Its share, at least a second, but never most of a short run.
     until = now + min(max(WITHOUT_INVARIANTS_LEAST_S, WITHOUT_INVARIANTS_SHARE * left), left / 4)
-    with oracle_until(oracle, until):
+    with search_outcome.oracle_until(oracle, until):
         outcome = LandmarkSearch().search(literal, replace(limits, deadline=until, probe=None, stop=None),
                                           oracle=oracle, relaxed=relaxed.without_invariants(literal))
     if outcome.status is ExcuseStatus.NONE:
@@ -230,7 +223,7 @@ def without_invariants(space: ChangeSpace, limits: Any, oracle: Any, relaxed: An
 class _Race:
     """The symbolic worker of one portfolio run: started late, polled, ended."""
 
-    def __init__(self, space: ChangeSpace, limits: Any) -> None:
+    def __init__(self, space: ChangeSpace, limits: SearchLimits) -> None:
         self.space = space
         self.limits = replace(limits, probe=None, stop=None)
         self.start_at = time.monotonic() + SYMBOLIC_AFTER_S

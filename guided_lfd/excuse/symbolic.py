@@ -22,7 +22,7 @@ from typing import Any
 
 from guided_lfd.deadline import check
 from guided_lfd.errors import SearchTimeout, UnsupportedFeatureError
-from guided_lfd.excuse.outcome import SearchOutcome
+from guided_lfd.excuse.outcome import SearchLimits, SearchOutcome
 from guided_lfd.excuse.progress import ProgressMeter
 from guided_lfd.excuse.space import ChangeSpace
 from guided_lfd.excuse.status import ExcuseStatus
@@ -174,7 +174,7 @@ class SymbolicSearch:
     description = "one backward search over sets of states (decision diagrams); excuses are its nearest members"
     lists_slack = True
 
-    def search(self, space: ChangeSpace, limits: Any, progress: ProgressMeter | None = None,
+    def search(self, space: ChangeSpace, limits: SearchLimits, progress: ProgressMeter | None = None,
                oracle: Any = None, relaxed: Any = None) -> Any:
         """Minimal change sets for ``space``; ``oracle`` and ``relaxed`` are unused (no candidate is checked).
 
@@ -200,7 +200,7 @@ class SymbolicSearch:
         finally:
             worker.stop()
 
-    def search_here(self, space: ChangeSpace, limits: Any) -> Any:
+    def search_here(self, space: ChangeSpace, limits: SearchLimits) -> Any:
         """:meth:`search` in this process."""
         from guided_lfd.symbolic.diagrams import memory_as_memout
 
@@ -210,7 +210,7 @@ class SymbolicSearch:
         except SearchTimeout:
             return SearchOutcome([], {}, ExcuseStatus.TIMEOUT)
 
-    def _search(self, space: ChangeSpace, limits: Any) -> Any:
+    def _search(self, space: ChangeSpace, limits: SearchLimits) -> Any:
         from guided_lfd.symbolic.nearest import nearest
 
         run = SymbolicRun(space, limits.deadline)
@@ -241,7 +241,8 @@ class SymbolicSearch:
         return SearchOutcome(sorted(solutions), plans, status, 0, 0, 0, extra)
 
 
-def symbolic_outcome(space: ChangeSpace, limits: Any) -> tuple[str, list[int], dict[int, list[int]], dict[str, int]]:
+def symbolic_outcome(space: ChangeSpace,
+                     limits: SearchLimits) -> tuple[str, list[int], dict[int, list[int]], dict[str, int]]:
     """In the worker: the symbolic search's outcome, its plans as indices into the task's actions (a small,
     picklable answer)."""
     outcome = SymbolicSearch().search_here(space, limits)

@@ -22,9 +22,6 @@ from guided_lfd.planning.grounding import ground
 from guided_lfd.planning.search import SearchStopped, astar, planning_actions
 from guided_lfd.planning.task import GroundAction, GroundTask
 from guided_lfd.planning.validation import PlanStep, plan_steps, validated
-from guided_lfd.symbolic.encoding import worth_running
-from guided_lfd.symbolic.unsolvable import decide, prover_variables
-from guided_lfd.symbolic.worker import Forked
 
 
 def plan_task(domain, problem, search: str = DEFAULT_SEARCH, time_limit_s: float | None = None) -> tuple[GroundTask, PlanResult]:
@@ -37,9 +34,10 @@ def plan_task(domain, problem, search: str = DEFAULT_SEARCH, time_limit_s: float
     return task, find_plan(task, search=search, time_limit_s=seconds_left(deadline, "grounding"))
 
 
-def validated_plan(domain, problem, search: str = DEFAULT_SEARCH,
-                   time_limit_s: float | None = None) -> tuple[PlanResult, list[PlanStep] | None, int | None]:
-    """:func:`plan_task`'s answer, its plan as validated steps and the validator's cost (None, None: no plan).
+def validated_plan(domain, problem, search: str = DEFAULT_SEARCH, time_limit_s: float | None = None,
+                   what: str = "the planner's plan") -> tuple[PlanResult, list[PlanStep] | None, int | None]:
+    """:func:`plan_task`'s answer, its plan as validated steps and the validator's cost (None, None: no plan);
+    ``what`` names the plan in the validator's message.
 
     Raises :class:`RuntimeError` if the plan does not validate or the planner and the validator disagree on
     its cost (a bug, never hidden).
@@ -48,7 +46,7 @@ def validated_plan(domain, problem, search: str = DEFAULT_SEARCH,
     if result.plan is None:
         return result, None, None
     steps = plan_steps(result.plan)
-    report = validated(domain, problem, steps, "the planner's plan")
+    report = validated(domain, problem, steps, what)
     if report.cost != sum(a.cost for a in result.plan):
         raise RuntimeError("planner and validator disagree on the plan's cost")
     return result, steps, report.cost
@@ -56,11 +54,19 @@ def validated_plan(domain, problem, search: str = DEFAULT_SEARCH,
 
 def _decide(task: GroundTask, actions: list[GroundAction], deadline: float | None) -> bool:
     """In the worker: whether the task is solvable (raises SearchTimeout past ``deadline``)."""
+    from guided_lfd.symbolic.unsolvable import decide
+
     return decide(task, actions, deadline).solvable
 
 
 def plan_with_prover(task: GroundTask, deadline: float | None) -> PlanResult:
     """An optimal plan for ``task`` from its initial state, or a proof that none exists, by A* or the prover."""
+    # The symbolic engine's modules load only where the prover may run (a STRIPS task, the default search):
+    # --search and ADL runs of plan, evaluate and the study never pay for them.
+    from guided_lfd.symbolic.encoding import worth_running
+    from guided_lfd.symbolic.unsolvable import prover_variables
+    from guided_lfd.symbolic.worker import Forked
+
     start = time.perf_counter()
     usable = planning_actions(task, task.init)
     if not usable and not task.satisfies_goal(task.init):
