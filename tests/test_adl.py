@@ -463,3 +463,42 @@ def test_teach_and_evaluate_refuse_adl_in_one_line_before_any_work(runner, app, 
     robot, task = parse_task(domain, problem)
     with pytest.raises(UnsupportedFeatureError, match="evaluate does not handle ADL"):
         evaluate(robot, task, robot, [])
+
+
+# --- malformed derived predicates: one reading, one error, whichever command reads them --------------------------
+
+DERIVED = ADL / "derived"
+
+
+@pytest.mark.parametrize("domain, problem, where, message", [
+    ("negative-cycle.pddl", "problem.pddl", "negative-cycle.pddl:6:14",
+     "derived predicate 'q' uses 'q' negatively: the rules cannot be stratified"),
+    ("forall-cycle.pddl", "problem.pddl", "forall-cycle.pddl:7:14",
+     "derived predicate 'r' uses 'r' inside a forall: the rules cannot be stratified"),
+    ("head-arity.pddl", "problem.pddl", "head-arity.pddl:6:14",
+     "derived predicate 'q' has 2 argument(s) here and 1 in :predicates, expected the same arity"),
+    ("head-undeclared.pddl", "problem.pddl", "head-undeclared.pddl:6:14",
+     "derived predicate 'qq' is not declared (expected it in :predicates"),
+    ("effect-with-costs.pddl", "problem.pddl", "effect-with-costs.pddl:12:19",
+     "action 'make' changes the derived predicate 'q' (expected only basic predicates in effects"),
+    ("stratified.pddl", "problem-derived-in-init.pddl", "problem-derived-in-init.pddl:5:17",
+     "the initial state lists the derived predicate 'q' (expected only basic atoms"),
+])
+def test_malformed_derived_predicates_are_one_semantic_error_in_every_command(runner, app, tmp_path, domain, problem,
+                                                                              where, message):
+    plan = tmp_path / "plan.txt"
+    plan.write_text("(finish a)\n")
+    files = [str(DERIVED / domain), str(DERIVED / problem)]
+    errors = set()
+    for args in (["plan", *files], ["excuse", *files], ["validate", *files, str(plan)]):
+        result = runner.invoke(app, args)
+        assert result.exit_code == 32, (args[0], result.exit_code, result.stderr)
+        errors.add(result.stderr)
+    (error,) = errors  # the same line from every command
+    assert error.startswith(f"{DERIVED}/{where}: semantic error: {message}") and error.count("\n") == 1
+
+
+def test_a_stratified_domain_plans_with_its_derived_predicates_in_layers():
+    domain, problem = parse_task(DERIVED / "stratified.pddl", DERIVED / "problem.pddl")
+    assert [[rule.predicate for rule in layer] for layer in strata(domain)] == [["q"], ["far"]]
+    assert _optimal_length(domain, problem) == _lifted_bfs(domain, problem) == 1

@@ -20,6 +20,7 @@ from typing import Any
 from typing import TYPE_CHECKING
 
 from guided_lfd.errors import PddlSemanticError, PddlSyntaxError, SearchTimeout
+from guided_lfd.pddl import derived
 from guided_lfd.pddl.model import (EQUALITY, TOTAL_COST, ActionSchema, Atom, Domain, Literal, Predicate, Problem,
                                    either_type, type_members)
 from guided_lfd.pddl.source import SExpr, SourceMap, Token
@@ -227,6 +228,7 @@ def read_domain(src: SourceMap, path: str) -> Domain:
                     actions=actions, path=path, spellings=src.spellings(), source=src, functions=functions,
                     warnings=tuple(warnings), axioms=axioms)
     _check_domain_types(domain, src)
+    derived.check_domain(domain)
     return domain
 
 
@@ -255,6 +257,7 @@ def read_problem(psrc: SourceMap, path: str, domain: Domain) -> Problem:
                       spellings=psrc.spellings(), function_values=values,
                       metric=bool(metric) and TOTAL_COST in domain.functions, goal_condition=goal_condition)
     _check_problem_types(domain, problem, psrc)
+    derived.check_init(domain, problem, psrc)
     return problem
 
 

@@ -5,50 +5,21 @@ planner uses): the validator and the excuse's own check apply plans with
 this code, so a grounding or normalisation bug cannot confirm itself.
 
 Derived predicates follow PDDL 2.2: stratified rules (a predicate used
-negatively in a rule is computed in an earlier stratum), each stratum the
-least fixpoint of its rules over the objects of the parameters' types.
+negatively in a rule, or inside a ``forall``, is computed in an earlier
+stratum: :func:`guided_lfd.pddl.derived.strata`), each stratum the least
+fixpoint of its rules over the objects of the parameters' types.
 """
 
 from __future__ import annotations
 
 from typing import Iterable
 
-from guided_lfd.errors import Location, PddlSemanticError
+from guided_lfd.pddl.derived import strata
 from guided_lfd.pddl.formula import (ConditionalEffect, DerivedRule, Formula, Junction, bindings_of, holds,
-                                     literals_of, substitute)
+                                     substitute)
 from guided_lfd.pddl.model import ActionSchema, Atom, Domain
 
-
-def strata(domain: Domain) -> list[list[DerivedRule]]:
-    """The derived rules in strata: a predicate used negatively comes from an earlier stratum.
-
-    Raises :class:`PddlSemanticError` when the rules use a derived predicate
-    negatively through itself (no stratification exists).
-    """
-    derived = domain.derived_predicates()
-    level = {p: 0 for p in derived}
-    rules = list(domain.axioms)
-    for _ in range(len(derived) + 1):
-        changed = False
-        for rule in rules:
-            for lit in literals_of(rule.condition):
-                q = lit.atom.predicate
-                if q not in derived:
-                    continue
-                need = level[q] + (0 if lit.positive else 1)
-                if level[rule.predicate] < need:
-                    level[rule.predicate] = need
-                    changed = True
-        if not changed:
-            break
-    else:
-        raise PddlSemanticError(
-            "the derived predicates depend negatively on themselves (no stratification)",
-            domain.locate(rules[0].predicate, ":derived") if rules else Location(domain.path))
-    out: list[list[DerivedRule]] = [[] for _ in range(max(level.values(), default=-1) + 1)]
-    for rule in rules:
-        out[level[rule.predicate]].append(rule)
-    return [stratum for stratum in out if stratum]
+__all__ = ["conjuncts", "derived_atoms", "effect_atoms", "failed_conditions", "strata"]
 
 
 def derived_atoms(domain: Domain, state: frozenset[Atom] | set[Atom], objects: dict[str, list[str]],
