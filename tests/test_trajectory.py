@@ -177,6 +177,20 @@ def test_cli_learns_from_trajectories_with_the_model_asked_for(runner, app, tmp_
     assert learned.action("paint").delete == ()
 
 
+def test_a_prior_with_an_adl_action_keeps_it_and_learns_its_empty_operators(runner, app, tmp_path):
+    """The translator's parser drops an action without effects (and, with no options set, fails on one): the
+    ADL prior's empty operators were lost or the prior refused (31, a Fast Downward internal message)."""
+    out = tmp_path / "learned.pddl"
+    result = runner.invoke(app, ["learn-domain", "--prior", str(LIGHTS / "prior-adl.pddl"), str(LIGHTS / "day-1.traj"),
+                                 str(LIGHTS / "day-2.traj"), "-o", str(out)])
+    assert result.exit_code == 0, result.output
+    assert "3 operator(s) learned from 6 step(s) of 2 trajectory(ies), safe model" in result.stderr
+    prior, learned = parse_domain(str(LIGHTS / "prior-adl.pddl")), parse_domain(str(out))
+    assert [a.name for a in prior.actions] == ["breaker-on", "flip-up", "flip-down", "all-off"]
+    assert learned.action("all-off") == prior.action("all-off")
+    assert learned.action("flip-up").add == _learned(LIGHTS).action("flip-up").add
+
+
 @pytest.mark.parametrize("args, message", [
     (["TRAJ"], "is a trajectory: expected --prior DOMAIN"),
     (["--prior", "PRIOR", "TRAJ", "SEGMENTS"], "holds segments and"),

@@ -163,6 +163,23 @@ def _translator_error(exc: Exception, src: SourceMap) -> PddlSyntaxError:
 
 
 @contextlib.contextmanager
+def _keeping_actions_without_effects():
+    """The translator's parser drops an action without effects unless its options say to keep it (and fails
+    when no options are set at all); the model keeps every action, as the STRIPS paths do (an operator whose
+    body ``learn-domain`` is to learn has none)."""
+    from fast_downward.translate import options
+
+    if options.options is None:
+        options.set_options(["domain.pddl", "problem.pddl"])
+    before = options.options.keep_no_ops
+    options.options.keep_no_ops = True
+    try:
+        yield
+    finally:
+        options.options.keep_no_ops = before
+
+
+@contextlib.contextmanager
 def _translating(src: SourceMap, warnings: list[str]):
     """Run the translator's parser: its printed warnings kept, its errors as one-line ones at a position."""
     from fast_downward.translate.pddl_parser import warning
@@ -170,7 +187,7 @@ def _translating(src: SourceMap, warnings: list[str]):
     warning.printed_warnings.clear()  # it prints each message once per process; each file gets its own
     out = io.StringIO()
     try:
-        with contextlib.redirect_stdout(out), contextlib.redirect_stderr(out):
+        with contextlib.redirect_stdout(out), contextlib.redirect_stderr(out), _keeping_actions_without_effects():
             yield
     except (SearchTimeout, MemoryError, KeyboardInterrupt):
         raise
