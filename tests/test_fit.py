@@ -103,3 +103,13 @@ def test_an_either_type_is_related_through_its_members(runner, app):
                                  "--human", str(folder / "either-human.pddl"), "--json"])
     assert result.exit_code == 0, result.stderr
     assert [c["change"] for c in json.loads(result.stdout)["excuse"]["changes"]] == ["-(at t a)", "+(at t b)"]
+
+
+def test_an_adl_model_sharing_none_of_the_robots_predicates_gives_the_invariants_it_has(runner, app):
+    """Its conservation check grounds it on the robot's task: the translator refused the robot's atoms and
+    objects it does not know (exit 1, 'Undefined predicate ... Got: blocking'); now they are left out."""
+    model = str(DATA / "fit" / "adl-unrelated.pddl")
+    result = runner.invoke(app, ["excuse", ROBOT, PROBLEM, "--semantics", "consistent", "--invariants-from", model,
+                                 "--json"])
+    assert result.exit_code == 0, result.output
+    assert [c["change"] for c in json.loads(result.stdout)["excuse"]["changes"]] == ["+(open pinkdrawer)"]

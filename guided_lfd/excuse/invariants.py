@@ -29,7 +29,7 @@ from guided_lfd.errors import Location, MismatchError, SearchTimeout
 from guided_lfd.excuse.space import MutexGroup
 from guided_lfd.planning.grounding import ground
 from guided_lfd.planning.task import GroundTask, bits
-from guided_lfd.pddl.model import Atom, Domain, Literal, Predicate, Problem
+from guided_lfd.pddl.model import TOTAL_COST, Atom, Domain, Literal, Predicate, Problem
 from guided_lfd.pddl.writer import domain_to_pddl, problem_to_pddl
 
 
@@ -66,10 +66,7 @@ def lifted_invariants(domain: Domain, problem: Problem, max_time: float | None =
     augmented = replace(augmented, predicates={**augmented.predicates, _DUMMY_GOAL: Predicate(_DUMMY_GOAL)},
                         constants={**augmented.constants, **implicit}, implicit_constants=())
     dom_text = domain_to_pddl(augmented)
-    # Objects of types the domain does not know are dropped: the invariants
-    # are lifted, objects only matter for their types.
-    types = set(domain.types) | {"object"}
-    objects = {o: t for o, t in problem.objects.items() if t in types and o not in augmented.constants}
+    objects = {o: t for o, t in _objects_of_types(domain, problem).items() if o not in augmented.constants}
     prob = replace(problem, domain_name=domain.name, init=frozenset(), objects=objects,
                    goal=(Literal(Atom(_DUMMY_GOAL)),))
     prob_text = problem_to_pddl(prob)
@@ -210,7 +207,28 @@ def describe_invariant(inv) -> str:
 
 
 def _problem_for(source: Domain, problem: Problem) -> Problem:
-    return replace(problem, domain_name=source.name)
+    """``problem`` in the terms of ``source``, another model of the world (``--invariants-from``): the objects of
+    the types it declares (its own constants aside) and the initial atoms, goal literals and cost values of its
+    predicates and functions on them.  The rest means nothing to its actions, and the translator refuses it in
+    an ADL model's task."""
+    objects = _objects_of_types(source, problem)
+    terms = {**objects, **source.constants}
+
+    def fits(atom: Atom, names: dict) -> bool:
+        return atom.predicate in names and all(a in terms for a in atom.args)
+
+    return replace(problem, domain_name=source.name, objects=objects,
+                   init=frozenset(a for a in problem.init if fits(a, source.predicates)),
+                   goal=tuple(lit for lit in problem.goal if fits(lit.atom, source.predicates)), goal_condition=None,
+                   function_values={a: v for a, v in problem.function_values.items() if fits(a, source.functions)},
+                   metric=problem.metric and TOTAL_COST in source.functions)
+
+
+def _objects_of_types(domain: Domain, problem: Problem) -> dict[str, str]:
+    """The problem's objects whose types ``domain`` declares, but for its constants: the invariants are lifted,
+    objects only matter for their types."""
+    types = set(domain.types) | {"object"}
+    return {o: t for o, t in problem.objects.items() if t in types and o not in domain.constants}
 
 
 def _conserved(check_task: GroundTask, task: GroundTask, masks: list[int]) -> bool:

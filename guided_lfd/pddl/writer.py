@@ -159,8 +159,8 @@ def problem_to_pddl(problem: Problem, init: frozenset[Atom] | set[Atom] | None =
         from guided_lfd.pddl.formula import formula_text
 
         goal = formula_text(problem.goal_condition)
-    else:
-        goal = _conj([str(l) for l in problem.goal])
+    else:  # an empty goal as '(and)': Fast Downward's parser wants a list with something in it
+        goal = _conj([str(l) for l in problem.goal]) if problem.goal else "(and)"
     if problem.metric:
         out.append(f"  (:goal {goal})")
         out.append(f"  (:metric minimize ({TOTAL_COST})))")
