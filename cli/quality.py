@@ -43,17 +43,17 @@ def quality(
     misses (the table's last line lists them).
     """
     from guided_lfd.demonstration.quality import quality_markdown, quality_report, sources_markdown, sources_report
-    from guided_lfd.errors import InputFileError, Location
     from guided_lfd.io import write_text
-    from guided_lfd.paths import data_root, require
+    from guided_lfd.paths import data_root, require, require_folder
 
     root = data_root(None, "data/demos")
     domains = domains or (demos.parent / "domains" if demos is not None else root / "data" / "domains")
     demos = demos or root / "data" / "demos"
     require(demos, domains, *(traces or []), hint="run from the checkout, or give --demos and --domains")
+    require_folder(demos, "a folder of labelled demonstrations (one folder per kitchen)")
+    require_folder(domains, "a folder of the kitchens' domains (one folder per kitchen, with human.pddl)")
     for folder in traces or []:
-        if not folder.is_dir():
-            raise InputFileError("expected a folder of trace sources (SCENARIO/CONDITION/*.csv)", Location(str(folder)))
+        require_folder(folder, "a folder of trace sources (SCENARIO/CONDITION/*.csv)")
     text = quality_markdown(quality_report(demos, domains))
     if traces:
         text += "\n## All sources\n\n" + sources_markdown(sources_report(demos, domains, traces))

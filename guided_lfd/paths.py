@@ -14,7 +14,7 @@ from pathlib import Path
 
 from guided_lfd.errors import InputFileError, Location
 
-__all__ = ["checkout_root", "data_root", "require"]
+__all__ = ["checkout_root", "data_root", "require", "require_folder"]
 
 
 def checkout_root() -> Path | None:
@@ -41,3 +41,9 @@ def require(*paths: Path, hint: str = "run from the checkout, or give --root DIR
     for path in paths:
         if not path.exists():
             raise InputFileError(f"not found (the repository's shipped data: {hint})", Location(str(path)))
+
+
+def require_folder(path: Path, expected: str) -> None:
+    """Refuse (exit 30) ``path`` where it is there but no folder, saying which folder was ``expected``."""
+    if path.exists() and not path.is_dir():
+        raise InputFileError(f"is a file, expected {expected}", Location(str(path)))

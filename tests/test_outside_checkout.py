@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import pytest
 
-from conftest import ROOT
+from conftest import DATA, ROOT
 from guided_lfd.errors import EXIT_BAD_OPTION, EXIT_INPUT_FILE, EXIT_OUTPUT
 
 
@@ -48,7 +48,13 @@ def test_quality_and_demos_find_the_shipped_data_from_elsewhere(runner, app, els
     (["bench", "run", "--suite", "res/results.csv", "--results", "res"], EXIT_BAD_OPTION,
      "--suite res/results.csv: lies in res"),
     (["bench", "report", "--results", "empty"], EXIT_INPUT_FILE, "empty/results.csv: input error: not found"),
-    (["quality", "--traces", "taken"], EXIT_INPUT_FILE, "taken: input error: expected a folder of trace sources"),
+    (["quality", "--traces", "taken"], EXIT_INPUT_FILE, "taken: input error: is a file, expected a folder of trace "
+                                                        "sources"),
+    # A file where a folder is expected was internal error (NotADirectoryError).
+    (["quality", "--demos", "taken", "--domains", str(ROOT / "data" / "domains")], EXIT_INPUT_FILE,
+     "taken: input error: is a file, expected a folder of labelled demonstrations"),
+    (["quality", "--demos", str(ROOT / "data" / "demos"), "--domains", "taken"], EXIT_INPUT_FILE,
+     "taken: input error: is a file, expected a folder of the kitchens' domains"),
     (["study", "--out", "taken/results"], EXIT_OUTPUT, "--out: taken is a file, expected a folder"),
     # An empty name was the working folder: teach -o '' wrote its session over the files there.
     (["study", "--out", ""], EXIT_BAD_OPTION, "'--out': expected a file or folder name, got an empty one"),
@@ -118,6 +124,28 @@ def test_quality_takes_the_domains_beside_the_demos_it_is_given(runner, app, els
     result = runner.invoke(app, ["quality", "--demos", str(elsewhere / "data" / "demos")])
     assert result.exit_code == EXIT_INPUT_FILE
     assert f"{elsewhere / 'data' / 'domains'}: input error: not found" in result.stderr
+
+
+@pytest.mark.parametrize("table, fixture, message", [
+    ("table2-demonstration-size.csv", "table2-without-p5.csv",
+     "table2-demonstration-size.csv: input error: no row for kitchen-1 P5 (expected sizes for each kitchen and "
+     "demonstrator: kitchens kitchen-1, kitchen-2, demonstrators P1, P2, P3, P4, P5)"),
+    ("table1-demonstration-time.csv", "table1-not-a-number.csv",
+     "table1-demonstration-time.csv:15: input error: 'eight' in column time_s is not a number (expected a number)"),
+])
+def test_study_tables_without_a_demonstrator_or_a_number_are_named_before_any_work(runner, app, elsewhere, table,
+                                                                                   fixture, message):
+    """A table lacking a demonstrator the study needs was internal error (KeyError) after the whole chain ran."""
+    import shutil
+
+    shutil.copytree(ROOT / "data" / "study", elsewhere / "data" / "study")
+    shutil.copy(DATA / "study-tables" / fixture, elsewhere / "data" / "study" / table)
+    for folder in ("demos", "domains"):  # there, but empty: the tables are read first
+        (elsewhere / "data" / folder).mkdir()
+    result = runner.invoke(app, ["study", "--root", ".", "--out", "results"])
+    assert result.exit_code == EXIT_INPUT_FILE, result.output
+    assert result.stderr == f"data/study/{message}\n"
+    assert not (elsewhere / "results").exists()
 
 
 def test_a_suite_csv_saved_with_a_byte_order_mark_is_read(tmp_path):

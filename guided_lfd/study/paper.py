@@ -3,11 +3,13 @@
 from __future__ import annotations
 
 import csv
-
+import io
 import statistics
 from dataclasses import dataclass
 from pathlib import Path
 
+from guided_lfd.errors import InputFileError, Location
+from guided_lfd.io import read_text
 from guided_lfd.reporting import round_fraction
 
 
@@ -36,20 +38,66 @@ class PaperData:
     sizes: dict[tuple[str, str], dict[str, int | None]]  # (kitchen, demonstrator) -> column -> value
 
 
-def _rows(path: Path) -> list[dict[str, str]]:
-    with open(path, encoding="utf-8", newline="") as handle:
-        return list(csv.DictReader(handle))
+#: Each table's columns (as shipped in ``data/study``).
+_COLUMNS = {
+    "table1-demonstration-time.csv": ("kitchen", "demonstrator", "demonstration", "time_s"),
+    "table1-ratio.csv": ("demonstrator", "ratio"),
+    "table2-demonstration-size.csv": ("kitchen", "demonstrator", "predicted_minimal_excuse", "observed_minimal_excuse",
+                                      "predicted_nonminimal_excuse", "predicted_goal", "observed_goal"),
+}
+
+
+def _rows(path: Path) -> list[tuple[Location, dict[str, str]]]:
+    """The rows of one table, each with its place in the file; a column the table lacks is an input error."""
+    columns = _COLUMNS[path.name]
+    reader = csv.DictReader(io.StringIO(read_text(path, "a table of the paper's study (CSV)")))
+    missing = [c for c in columns if c not in (reader.fieldnames or [])]
+    if missing:
+        raise InputFileError(f"no column '{missing[0]}' (expected the columns {', '.join(columns)})",
+                             Location(str(path), 1))
+    try:
+        return [(Location(str(path), reader.line_num), row) for row in reader]
+    except csv.Error as exc:
+        raise InputFileError(f"not a CSV table ({exc})", Location(str(path), reader.line_num)) from None
+
+
+def _number(row: dict[str, str], column: str, where: Location, kind: type = float):
+    """The table's value in ``column`` (an empty cell is None where ``kind`` is int: Table II's blanks)."""
+    text = (row.get(column) or "").strip()
+    if not text and kind is int:
+        return None
+    try:
+        return kind(text)
+    except ValueError:
+        expected = "a whole number or an empty cell" if kind is int else "a number"
+        raise InputFileError(f"'{text}' in column {column} is not a number (expected {expected})", where) from None
+
+
+def _require(found, wanted, path: Path, what: str) -> None:
+    """Every key of ``wanted`` has a row (the study needs each kitchen and demonstrator the paper has)."""
+    for key in wanted:
+        if key not in found:
+            raise InputFileError(f"no row for {' '.join(key) if isinstance(key, tuple) else key} (expected {what}: "
+                                 f"kitchens {', '.join(KITCHENS)}, demonstrators {', '.join(DEMONSTRATORS)})",
+                                 Location(str(path)))
 
 
 def load_paper_data(folder: Path) -> PaperData:
-    """Read ``table1-*.csv`` and ``table2-*.csv`` from ``folder``."""
-    times = {(r["kitchen"], r["demonstrator"], r["demonstration"]): float(r["time_s"])
-             for r in _rows(folder / "table1-demonstration-time.csv")}
-    ratio = {r["demonstrator"]: float(r["ratio"]) for r in _rows(folder / "table1-ratio.csv")}
+    """Read ``table1-*.csv`` and ``table2-*.csv`` from ``folder``; a table without a row the study needs, or with a
+    value that is not a number, is an :class:`~guided_lfd.errors.InputFileError` naming the file (and line)."""
+    path = folder / "table1-demonstration-time.csv"
+    times = {(r["kitchen"], r["demonstrator"], r["demonstration"]): _number(r, "time_s", where)
+             for where, r in _rows(path)}
+    _require(times, [(k, p, kind) for k in KITCHENS for p in DEMONSTRATORS for kind in ("excuse", "complete")], path,
+             "a time for each kitchen, demonstrator and demonstration")
+    path = folder / "table1-ratio.csv"
+    ratio = {r["demonstrator"]: _number(r, "ratio", where) for where, r in _rows(path)}
+    _require(ratio, DEMONSTRATORS, path, "a ratio for each demonstrator")
+    path = folder / "table2-demonstration-size.csv"
     sizes = {}
-    for r in _rows(folder / "table2-demonstration-size.csv"):
-        sizes[(r["kitchen"], r["demonstrator"])] = {k: (int(v) if v else None) for k, v in r.items()
-                                                    if k not in ("kitchen", "demonstrator")}
+    for where, r in _rows(path):
+        sizes[(r["kitchen"], r["demonstrator"])] = {k: _number(r, k, where, int) for k in _COLUMNS[path.name][2:]}
+    _require(sizes, [(k, p) for k in KITCHENS for p in DEMONSTRATORS], path, "sizes for each kitchen and demonstrator")
     return PaperData(times, ratio, sizes)
 
 
