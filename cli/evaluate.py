@@ -17,7 +17,7 @@ from guided_lfd.excuse.document import read_excuse
 from guided_lfd.excuse.engine import find_excuses
 from guided_lfd.excuse.status import ExcuseStatus
 from guided_lfd.io import write_text
-from guided_lfd.pddl.fit import check_model_fits
+from guided_lfd.pddl.fit import check_model_fits, refuse_adl
 from guided_lfd.pddl.reader import parse_domain, parse_problem_for, parse_task
 from guided_lfd.reporting import csv_text
 
@@ -75,7 +75,9 @@ def evaluate(
     check_files([robot, problem, human, excuse, nonminimal, merged, *demos], {"--output": output})
     robot_domain, task = parse_task(robot, problem)
     human_domain = parse_domain(human)
-    ui.reading_warnings(robot_domain, human_domain)
+    merged_domain = parse_domain(merged) if merged else None
+    ui.reading_warnings(robot_domain, human_domain, merged_domain)
+    refuse_adl("evaluate", task, robot_domain, human_domain, merged_domain)  # exit 33 before any work
     check_model_fits(robot_domain, human_domain, "--human")  # as excuse and teach: exit 34 naming the predicate
     _fits_task(human_domain, problem, "--human")  # the human's domain must fit the task too
     if excuse is not None:
@@ -100,8 +102,6 @@ def evaluate(
     for path in demos:
         doc = load_segments(path)
         documents.append(DemonstrationSteps(path, ground_actions(doc, path), doc.get("objects", {})))
-    merged_domain = parse_domain(merged) if merged else None
-    ui.reading_warnings(merged_domain)
     if merged_domain is not None:
         check_model_fits(robot_domain, merged_domain, "--merged")
         _fits_task(merged_domain, problem, "--merged")

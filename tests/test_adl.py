@@ -465,6 +465,21 @@ def test_teach_and_evaluate_refuse_adl_in_one_line_before_any_work(runner, app, 
         evaluate(robot, task, robot, [])
 
 
+def test_evaluate_refuses_an_adl_task_before_searching_for_its_excuse(runner, app, monkeypatch):
+    """The household task is solvable: evaluate searched for an excuse (seconds on larger tasks) and then said
+    'nothing to evaluate' (37) where the docs promise 33 before any work."""
+    import cli.evaluate
+
+    def no_search(*args, **kwargs):
+        raise AssertionError("evaluate searched for an excuse of an ADL task")
+
+    monkeypatch.setattr(cli.evaluate, "find_excuses", no_search)
+    domain, problem = str(HOUSE / "domain.pddl"), str(HOUSE / "problem.pddl")
+    result = runner.invoke(app, ["evaluate", domain, problem, "--human", domain])
+    assert result.exit_code == 33, result.output
+    assert result.stderr.startswith(f"{domain}: unsupported: evaluate does not handle ADL")
+
+
 # --- malformed derived predicates: one reading, one error, whichever command reads them --------------------------
 
 DERIVED = ADL / "derived"
