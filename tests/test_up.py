@@ -288,6 +288,15 @@ def test_fixed_must_be_fluents_of_the_problem():
         find_up_excuses(other, ExcuseOptions(semantics="no such"))
 
 
+@pytest.mark.parametrize("problem", [None, "kitchen.pddl", 3])
+def test_something_other_than_a_up_problem_is_the_librarys_option_error(problem):
+    """It was Python's TypeError, which the library documents only for an unknown keyword argument."""
+    with pytest.raises(OptionError, match=f"problem {type(problem).__name__}: expected a unified-planning Problem"):
+        find_up_excuses(problem)
+    with pytest.raises(OptionError):
+        to_task(problem)
+
+
 def test_read_task_takes_a_up_problem_alone():
     files = kitchen(1)
     domain, problem = read_task(read_up(*files))

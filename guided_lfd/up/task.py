@@ -18,7 +18,7 @@ from unified_planning.model import FNode, Problem as UPProblem, ProblemKind
 from unified_planning.model.problem_kind_versioning import LATEST_PROBLEM_KIND_VERSION
 from unified_planning.plans import ActionInstance, SequentialPlan
 
-from guided_lfd.errors import UnsupportedFeatureError
+from guided_lfd.errors import OptionError, UnsupportedFeatureError
 from guided_lfd.pddl.model import EQUALITY, Atom, Domain, Literal, Problem
 from guided_lfd.planning.validation import PlanStep
 
@@ -102,7 +102,7 @@ def to_task(problem: UPProblem) -> UpTask:
     from guided_lfd.pddl.reader import parse_task
 
     if not isinstance(problem, UPProblem):
-        raise TypeError(f"expected a unified-planning Problem, got {type(problem).__name__}")
+        raise OptionError(f"problem {type(problem).__name__}: expected a unified-planning Problem")
     missing = unsupported_features(problem.kind)
     if missing:
         raise UnsupportedFeatureError(f"unified-planning problem '{problem.name}': {', '.join(missing)} "
