@@ -40,7 +40,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
-from guided_lfd import household  # noqa: E402
+from guided_lfd.benchmark import household  # noqa: E402
 from guided_lfd.benchmark import cli_command  # noqa: E402
 from guided_lfd.io import write_text  # noqa: E402
 from guided_lfd.reporting import PlotsUnavailable, markdown_table, pyplot, save_figure  # noqa: E402

@@ -20,9 +20,8 @@ from typing import TYPE_CHECKING, Any
 
 __version__ = "0.1.0"
 
-#: Public name -> the module that defines it.
+#: Public name -> the module that defines it (read_task is defined below).
 _EXPORTS = {
-    "read_task": "guided_lfd.api",
     "plan": "guided_lfd.api",
     "validate": "guided_lfd.api",
     "PlanReport": "guided_lfd.api",
@@ -40,10 +39,12 @@ _EXPORTS = {
     "GuidedLfdError": "guided_lfd.errors",
 }
 
-__all__ = ["__version__", *_EXPORTS]
+__all__ = ["__version__", "read_task", *_EXPORTS]
 
 if TYPE_CHECKING:  # for type checkers and IDEs; at run time __getattr__ loads them
-    from guided_lfd.api import PlanReport, plan, read_task, validate
+    from unified_planning.model import Problem as UPProblem
+
+    from guided_lfd.api import PlanReport, Source, plan, validate
     from guided_lfd.errors import GuidedLfdError
     from guided_lfd.excuse.change import Change
     from guided_lfd.excuse.engine import ExcuseOptions, find_excuses
@@ -52,6 +53,23 @@ if TYPE_CHECKING:  # for type checkers and IDEs; at run time __getattr__ loads t
     from guided_lfd.excuse.space import Semantics
     from guided_lfd.pddl.model import Domain, Problem
     from guided_lfd.planning.validation import PlanStep, ValidationReport
+
+
+def read_task(domain: Source | UPProblem, problem: Source | None = None) -> tuple[Domain, Problem]:
+    """The task of a domain and a problem, each a path or PDDL text (:func:`guided_lfd.api.read_task`), or of a
+    unified-planning ``Problem`` alone (the extra ``up``; :func:`guided_lfd.up.to_task` also maps the names back).
+
+    Raises the one-line :class:`~guided_lfd.errors.GuidedLfdError` of the
+    command line (``file:line:col``; ``<domain>``/``<problem>`` for text).
+    """
+    if problem is None and type(domain).__module__.startswith("unified_planning."):  # never a str or a Path
+        from guided_lfd.up.task import to_task
+
+        task = to_task(domain)  # type: ignore[arg-type]
+        return task.domain, task.problem
+    from guided_lfd.api import read_task as read_pddl_task
+
+    return read_pddl_task(domain, problem)  # type: ignore[arg-type]
 
 
 def __getattr__(name: str) -> Any:

@@ -9,15 +9,12 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from pathlib import Path
-from typing import TYPE_CHECKING, Any, Sequence
+from typing import Any, Sequence
 
 from guided_lfd.deadline import checked_time_limit
 from guided_lfd.errors import OptionError
 from guided_lfd.pddl.model import Domain, Problem
 from guided_lfd.planning.validation import PlanStep, ValidationReport
-
-if TYPE_CHECKING:  # the extra 'up' only
-    from unified_planning.model import Problem as UPProblem
 
 __all__ = ["PlanReport", "plan", "read_task", "validate"]
 
@@ -33,15 +30,19 @@ def _is_text(source: Source) -> bool:
     return isinstance(source, str) and ("(" in source or "\n" in source or not source.strip())
 
 
-def read_task(domain: "Source | UPProblem", problem: Source | None = None) -> tuple[Domain, Problem]:
-    """The task of a domain and a problem, each a path or PDDL text (``"(define (domain ..."``), or of a
-    unified-planning ``Problem`` alone (the extra ``up``; :func:`guided_lfd.up.to_task` also maps the names back).
+def read_task(domain: Source, problem: Source | None = None) -> tuple[Domain, Problem]:
+    """The task of a domain and a problem, each a path or PDDL text (``"(define (domain ..."``).
 
-    Raises the one-line :class:`~guided_lfd.errors.GuidedLfdError` of the
-    command line (``file:line:col``; ``<domain>``/``<problem>`` for text).
+    :func:`guided_lfd.read_task` also takes a unified-planning ``Problem``
+    alone (the extra ``up``): :mod:`guided_lfd.up` reads it, this module
+    never imports it.  Raises the one-line
+    :class:`~guided_lfd.errors.GuidedLfdError` of the command line
+    (``file:line:col``; ``<domain>``/``<problem>`` for text).
     """
     if not isinstance(domain, (str, Path)):
-        return _read_up_problem(domain, problem)
+        raise OptionError("read_task: expected a domain and a problem (paths or PDDL text), or a unified-planning "
+                          f"Problem alone; got {type(domain).__name__}"
+                          + ("" if problem is None else f" and {type(problem).__name__}"))
     if problem is None:
         raise OptionError("read_task: a domain needs its problem (a path or PDDL text)")
     if not isinstance(problem, (str, Path)):
@@ -54,18 +55,6 @@ def read_task(domain: "Source | UPProblem", problem: Source | None = None) -> tu
     return parse_task("<domain>" if domain_text is not None else domain,
                       "<problem>" if problem_text is not None else problem,
                       domain_text=domain_text, problem_text=problem_text)
-
-
-def _read_up_problem(up_problem: object, problem: Source | None) -> tuple[Domain, Problem]:
-    """The task of a unified-planning problem (a problem is not given beside it)."""
-    if not type(up_problem).__module__.startswith("unified_planning.") or problem is not None:
-        raise OptionError("read_task: expected a domain and a problem (paths or PDDL text), or a unified-planning "
-                        f"Problem alone; got {type(up_problem).__name__}"
-                        + ("" if problem is None else f" and {type(problem).__name__}"))
-    from guided_lfd.up.task import to_task
-
-    task = to_task(up_problem)  # type: ignore[arg-type]
-    return task.domain, task.problem
 
 
 @dataclass

@@ -71,7 +71,7 @@ def test_the_teach_plot_spells_out_its_task_names(teach, monkeypatch, tmp_path):
 
 
 def test_house_names_give_back_their_sizes():
-    from guided_lfd import household
+    from guided_lfd.benchmark import household
 
     house = household.House(4, 16, 4, 1, 2, "no-open")
     assert household.name_sizes(house.name) == ((4, 16, 16, 4, 2), "no-open")

@@ -9,7 +9,7 @@ import time
 import pytest
 
 from conftest import fresh_interpreter
-from guided_lfd import household
+from guided_lfd.benchmark import household
 from guided_lfd.deadline import check, deadline_after, watchdog
 from guided_lfd.errors import EXIT_TIME_LIMIT, SearchTimeout
 

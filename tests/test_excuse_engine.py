@@ -332,7 +332,7 @@ def test_hill_climbing_oracle_matches_brute_force(tmp_path_factory, monkeypatch,
 
 def test_hill_climbing_answers_household_checks_and_not_small_ones(tmp_path):
     """It fires on a house (thousands of actions) and stays off on Kitchen I (a handful)."""
-    from guided_lfd import household
+    from guided_lfd.benchmark import household
 
     house = household.House(8, 32, 4, 1, 4, "no-push")
     (tmp_path / "robot.pddl").write_text(household.domain_pddl(house.variant))

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-from guided_lfd import household
+from guided_lfd.benchmark import household
 from guided_lfd.excuse.engine import ExcuseOptions, find_excuses
 from guided_lfd.excuse.space import Semantics
 from guided_lfd.pddl.reader import parse_task

@@ -11,9 +11,10 @@ The layers, lowest first (a module may import its own layer and those below):
 2. planning: ground tasks, relaxations, search, validation
 3. symbolic, excuse: the decision-diagram engine and the excuse search
 4. demonstration, merge: segmenting, learning and merging skills
-5. teach, evaluate, preference: the loop with a person, the paper's measures, the human model
+5. teach (session, request, human, learning, folder, loop), evaluate, preference: the loop with a person, the
+   paper's measures, the human model
 6. api, up, the package itself: the library's faces
-7. benchmark, study, household: measurements over everything below
+7. benchmark (with benchmark/household, the household series' tasks), study: measurements over everything below
 """
 
 from __future__ import annotations
@@ -35,7 +36,7 @@ LAYERS: dict[str, int] = {
     "demonstration": 4, "merge": 4,
     "teach": 5, "evaluate": 5, "preference": 5,
     "api": 6, "up": 6, "": 6,
-    "benchmark": 7, "study": 7, "household": 7,
+    "benchmark": 7, "study": 7,
 }
 
 
@@ -163,6 +164,14 @@ def test_no_layer_imports_a_higher_one():
     upward = [f"{m} (layer {layer(m)}) imports {t} (layer {layer(t)}) at line {line}"
               for m, targets in import_graph().items() for t, line in targets.items() if layer(t) > layer(m)]
     assert upward == []
+
+
+def test_the_front_door_does_not_import_unified_plannings_package():
+    """``up/`` builds on ``api`` (its engines plan and validate through it), never the other way: the package's
+    face reads a unified-planning problem through ``up``."""
+    graph = import_graph()
+    assert [t for t in graph["guided_lfd.api"] if t.startswith("guided_lfd.up")] == []
+    assert "guided_lfd.api" in graph["guided_lfd.up.engines"]
 
 
 @pytest.mark.parametrize("source, expected", [

@@ -151,7 +151,7 @@ def test_a_plan_time_limit_holds_in_a_thread_where_no_watchdog_runs(tmp_path):
     import threading
     import time
 
-    from guided_lfd import household
+    from guided_lfd.benchmark import household
     from guided_lfd.errors import SearchTimeout
 
     house = household.House(*household.SERIES[-1], "no-open")

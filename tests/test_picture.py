@@ -13,7 +13,7 @@ from pathlib import Path
 import pytest
 
 from conftest import BLOCKS, DATA, kitchen
-from guided_lfd import household
+from guided_lfd.benchmark import household
 from guided_lfd.errors import EXIT_BAD_OPTION
 from guided_lfd.excuse.engine import ExcuseOptions, find_excuses
 from guided_lfd.excuse.picture import MAX_OBJECTS, excuse_scene

@@ -82,7 +82,7 @@ def test_teach_ends_within_its_time_limit_whatever_phase_it_is_in(tmp_path):
     import subprocess
     import time
 
-    from guided_lfd import household
+    from guided_lfd.benchmark import household
     from guided_lfd.benchmark import cli_command
     from guided_lfd.errors import EXIT_TIME_LIMIT
 

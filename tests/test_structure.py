@@ -116,7 +116,7 @@ def _long_in_tree() -> dict[str, tuple[int, int]]:
 
 def test_modules_found() -> None:
     assert len(_modules()) > 20
-    assert (ROOT / "guided_lfd" / "household.py") in _modules()
+    assert (ROOT / "guided_lfd" / "benchmark" / "household.py") in _modules()
 
 
 def test_no_long_functions() -> None:

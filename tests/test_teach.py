@@ -265,7 +265,7 @@ def test_the_human_model_decides_what_the_excuse_may_change_without_prefer(runne
 
 def test_why_respects_types_a_cupboard_door_skill_does_not_open_a_drawer(tmp_path):
     """The household robot without the drawer skill opens cupboard doors: 'open' alone is not a skill for it."""
-    from guided_lfd import household
+    from guided_lfd.benchmark import household
 
     house = household.House(2, 4, 2, 1, 1, "no-open")
     (tmp_path / "robot.pddl").write_text(household.domain_pddl("no-open"))

@@ -1,4 +1,4 @@
-"""guided-lfd teach ends honestly (issue #23, "Honest outcomes"): each way a session ends says why.
+"""guided-lfd teach ends honestly: each way a session ends says why.
 
 * ``solved`` (exit 0) only when the taught robot plans the original task from its original state; a goal
   reached only through the demonstration is ``demonstration-only`` (exit 15), the reason on stderr;
@@ -24,9 +24,9 @@ NO_PUT = str(TEACH / "no-put-robot.pddl")  # Kitchen I's robot without put_insid
 
 
 def _goal_reached_by_the_demonstration(rnd, folder, out, robot, task, given, human=None, original=None, history=None):
-    """Stands for ``guided_lfd.teach._learn_round`` after a demonstration of the whole of Kitchen II's task
+    """Stands for ``guided_lfd.teach.learning.learn_round`` after a demonstration of the whole of Kitchen II's task
     (chair pushed to the corner, PinkDrawer opened, RedPlate put inside) from which the robot learned a skill
-    it can never use (push_obstacle needing a hand fact of another vocabulary, as in issue #23)."""
+    it can never use (push_obstacle needing a hand fact of another vocabulary)."""
     learned = parse_domain(str(TEACH / "unusable-skill-robot.pddl"))
     gone = {Atom("on_top", ("redplate", "table")), Atom("blocking", ("chair", "pinkdrawer")),
             Atom("clear", ("corner",))}
@@ -38,9 +38,9 @@ def _goal_reached_by_the_demonstration(rnd, folder, out, robot, task, given, hum
 
 
 def test_a_goal_reached_only_through_the_demonstration_is_not_solved(runner, app, tmp_path, monkeypatch):
-    from guided_lfd import teach as teach_module
+    from guided_lfd.teach import loop
 
-    monkeypatch.setattr(teach_module, "_learn_round", _goal_reached_by_the_demonstration)
+    monkeypatch.setattr(loop, "learn_round", _goal_reached_by_the_demonstration)
     robot, problem = kitchen(2)
     result = runner.invoke(app, ["teach", robot, problem, "--simulate", HUMAN[2], "-o", str(tmp_path), "--json",
                                  "--quiet"])

@@ -10,7 +10,7 @@ Every run is the installed command line in its own process, timed from the
 shell's point of view (start-up, parsing, grounding, search, the robot's
 plan, printing); its peak resident memory is the largest of the process and
 the processes it waited for (``wait4``).  The houses are the series of
-``guided_lfd.household.SERIES`` and the wide house ``WIDE_HOUSE``.  The
+``guided_lfd.benchmark.household.SERIES`` and the wide house ``WIDE_HOUSE``.  The
 default strategy runs on every task under both semantics; the symbolic
 strategy alone and the baseline (the paper's breadth-first search with a
 planner call per candidate) run from the smallest task up and stop at the
@@ -34,7 +34,7 @@ HERE = Path(__file__).resolve().parent
 ROOT = HERE.parent.parent
 sys.path.insert(0, str(ROOT))
 
-from guided_lfd import household  # noqa: E402
+from guided_lfd.benchmark import household  # noqa: E402
 from guided_lfd.benchmark import cli_command, limit_section  # noqa: E402
 from guided_lfd.benchmark.report import series_style  # noqa: E402
 from guided_lfd.reporting import PlotsUnavailable, pyplot, save_figure  # noqa: E402

@@ -14,6 +14,8 @@ One stage per module, data flowing one way:
 :mod:`~guided_lfd.benchmark.results` (rows and their CSV) ->
 :mod:`~guided_lfd.benchmark.analysis` (comparisons with the baseline) ->
 :mod:`~guided_lfd.benchmark.report` (markdown and plots).
+:mod:`~guided_lfd.benchmark.household` generates the household series'
+tasks (``benchmarks/household/scaling.py``, ``benchmarks/teach_bench.py``).
 """
 
 from guided_lfd.benchmark.analysis import (

@@ -1,0 +1,139 @@
+"""A teaching session's model and its documents: who demonstrates, each round, the whole session.
+
+:class:`TeachSession` is what ``session.json`` (format ``guided-lfd/teach``)
+and ``session.md`` hold; :class:`Round` one round of it; a
+:class:`Demonstrator` is whoever gives the demonstrations.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any, Protocol
+
+from guided_lfd.excuse.change import Change
+from guided_lfd.io import json_document
+from guided_lfd.pddl.model import Atom, Problem
+from guided_lfd.planning.validation import PlanStep
+
+__all__ = ["Demonstrator", "Round", "TeachSession"]
+
+
+class Demonstrator(Protocol):
+    """Whoever demonstrates: given the round's folder, the world's state and the request, a hand trace.
+
+    A demonstrator may also have a ``why_none(state, request, problem) -> str`` method: asked after
+    ``demonstrate`` gave None, it says why in one line (the session's ``reason``).
+    """
+
+    def demonstrate(self, folder: Path, state: frozenset[Atom], request: list[Change],
+                    problem: Problem) -> tuple[Path, Path] | None:
+        """(trace CSV, state CSV) of the demonstration, or None when there is none to give."""
+        ...
+
+
+@dataclass
+class Round:
+    """One round of teaching: what was asked, why, what came of it."""
+
+    index: int
+    excuse: list[Change]
+    request: list[Change]
+    request_text: list[str]
+    why: list[str]
+    keep: list[Atom]
+    keep_text: list[str]
+    demonstration_length: int | None = None  # demonstrated actions (segments that act)
+    new_actions: int | None = None  # of those, the ones no skill of the robot already does (the useful part)
+    learned_actions: list[str] = field(default_factory=list)
+    request_met: bool | None = None
+    unmet: list[Change] = field(default_factory=list)  # the request's changes the demonstration did not make
+    solvable_after: bool | None = None
+    files: dict[str, str] = field(default_factory=dict)
+    preference: str | None = None  # why this excuse among the minimal ones (--prefer demonstration)
+    error: str | None = None  # why the demonstration could not be used (it ended the session)
+    vocabulary: str | None = None  # the hand facts the demonstration was learned in, and where they came from
+
+    def excuse_text(self) -> str | None:
+        """How the request relates to the minimal excuse when it asks for only part of it, else None."""
+        if not self.excuse or self.request == self.excuse:
+            return None
+        return (f"the minimal excuse is {' '.join(str(c) for c in self.excuse)}; the request is the part of it "
+                "that suffices")
+
+    def to_dict(self) -> dict[str, Any]:
+        """The round as ``session.json`` has it."""
+        return {
+            "round": self.index, "excuse": [str(c) for c in self.excuse], "request": [str(c) for c in self.request],
+            "request_text": self.request_text, "why": self.why, "keep": [str(a) for a in self.keep],
+            "keep_text": self.keep_text, "demonstration_length": self.demonstration_length,
+            "new_actions": self.new_actions,
+            "learned_actions": self.learned_actions, "request_met": self.request_met,
+            "unmet": [str(c) for c in self.unmet], "solvable_after": self.solvable_after, "files": self.files,
+            "preference": self.preference, "error": self.error, "vocabulary": self.vocabulary,
+        }
+
+
+@dataclass
+class TeachSession:
+    """A whole teaching session: its rounds, how it ended, and the robot's plan at the end."""
+
+    robot: str
+    problem: str
+    #: solved | already-solvable | demonstration-only | no-excuse | no-demonstration | bad-demonstration
+    #: | max-rounds | timeout
+    status: str
+    rounds: list[Round]
+    plan: list[PlanStep] | None  # the robot's plan from the state the session ended in
+    plans_original_task: bool | None  # whether the taught robot plans the task from its original state
+    robot_domain: str  # the taught domain's file
+    error: Any = field(default=None, repr=False, compare=False)  # the GuidedLfdError that ended it, if any
+    reason: str | None = None  # why it ended unsolved, in one line (None when solved)
+    task: str | None = None  # the problem's PDDL name: a later session in the folder must be of the same task
+
+    @property
+    def solved(self) -> bool:
+        """Whether the robot can plan the task at the end."""
+        return self.status in ("solved", "already-solvable")
+
+    def to_dict(self) -> dict[str, Any]:
+        """The body of ``session.json`` (format ``guided-lfd/teach``, version 1)."""
+        return {"robot": self.robot, "problem": self.problem, "solved": self.solved, "status": self.status,
+                "rounds": [r.to_dict() for r in self.rounds],
+                "plan": None if self.plan is None else [str(s) for s in self.plan],
+                "plans_original_task": self.plans_original_task, "robot_domain": self.robot_domain,
+                "reason": self.reason, "task": self.task}
+
+    def to_json(self) -> str:
+        """The ``session.json`` document."""
+        return json_document("teach", self.to_dict())
+
+    def to_markdown(self) -> str:
+        """``session.md``: the rounds as a person reads them."""
+        lines = [f"# Teaching session: {self.problem}", "", f"Robot: `{self.robot}`; status: **{self.status}**.", ""]
+        if self.reason:
+            lines += [f"Why: {self.reason}.", ""]
+        for r in self.rounds:
+            lines += [f"## Round {r.index}", "", "Request: " + "; ".join(r.request_text) + ".", ""]
+            if not r.excuse:
+                lines.append("- no excuse exists: a new skill that makes this true must be demonstrated")
+            elif r.excuse_text():
+                lines.append(f"- {r.excuse_text()}")
+            if r.preference:
+                lines.append(f"- {r.preference}")
+            lines += [f"- why: {w}" for w in r.why]
+            if r.keep_text:
+                lines.append("- leave as it is: " + "; ".join(r.keep_text))
+            lines.append(f"- demonstrated actions: {r.demonstration_length if r.demonstration_length is not None else '-'}"
+                         f"; learned: {', '.join(r.learned_actions) or '-'}")
+            if r.vocabulary:
+                lines.append(f"- hand facts: {r.vocabulary}")
+            if r.error:
+                lines.append(f"- the demonstration could not be used: {r.error}")
+            if r.request_met is False:
+                lines.append("- the demonstration did not make: " + ", ".join(str(c) for c in r.unmet))
+            lines.append("")
+        if self.plan is not None:
+            lines += ["## The robot's plan", ""] + [f"{i}. `{s}`" for i, s in enumerate(self.plan, 1)] + [""]
+        return "\n".join(lines)
+
