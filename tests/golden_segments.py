@@ -1,4 +1,4 @@
-"""Every shipped and test trace's segments, for the golden comparison of tests/test_segment_golden.py (issue #30).
+"""Every shipped and test trace's segments, for the golden comparison of tests/test_segment_golden.py.
 
 The household series' renders are committed under tests/data/household-renders/ (the human model's optimal
 plan, and so the render, depends on the interpreter's hash seed when several plans are optimal).
@@ -27,8 +27,8 @@ def traces() -> list[Path]:
     """Every trace CSV with a state file beside it, under data/ and tests/data/."""
     found = [p.with_name(p.name[: -len(".state.csv")] + ".csv")
              for base in (ROOT / "data", ROOT / "tests" / "data") for p in base.rglob("*.state.csv")]
-    # Regressions of bad or odd input (tests/data/regressions/issue30) are checked on their own.
-    return sorted(p for p in found if p.is_file() and "issue30" not in p.parts)
+    # Regressions of bad or odd input (tests/data/regressions/odd-traces) are checked on their own.
+    return sorted(p for p in found if p.is_file() and "odd-traces" not in p.parts)
 
 
 def segment_key(s) -> list:

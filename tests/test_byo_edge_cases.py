@@ -1,7 +1,7 @@
 """Robots in words other than the kitchens': hand facts read off odd domains and arm names, skills named after the
 human's actions or refused when they could never run, worlds without objects or with zero-argument facts, bad
 vocabularies and demonstrations of another world refused; one test each, their PDDL and traces in
-``tests/data/regressions/issue23/``."""
+``tests/data/regressions/byo-edge-cases/``."""
 
 from __future__ import annotations
 
@@ -14,7 +14,7 @@ from conftest import DATA
 from guided_lfd.demonstration.vocabulary import HandVocabulary, bind_arms, infer_vocabulary
 from guided_lfd.pddl.reader import parse_domain
 
-CASES = DATA / "regressions" / "issue23"
+CASES = DATA / "regressions" / "byo-edge-cases"
 BYO = DATA / "byo"
 
 

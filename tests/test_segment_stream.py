@@ -118,7 +118,7 @@ def test_two_formats_for_a_pipe_are_refused_as_for_a_file():
 
 def test_a_bad_row_after_blank_lines_is_named_at_its_line_in_a_file_and_in_a_pipe(runner, app):
     """Blank lines count as lines (pandas skips them; the numbers used to fall two short, lines 4 for 6)."""
-    trace = ROOT / "tests" / "data" / "regressions" / "issue30" / "blank-lines.csv"
+    trace = ROOT / "tests" / "data" / "regressions" / "odd-traces" / "blank-lines.csv"
     state = default_state_path(str(trace))
     message = "6:3: trace error: column 'x': expected a finite number, got 'zz'"
     result = runner.invoke(app, ["segment", str(trace)])

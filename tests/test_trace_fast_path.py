@@ -1,5 +1,5 @@
-"""The trace reader's fast path (pandas' C parser, issue #30) reads every file as the string path always has;
-each case is one a review found reading otherwise (tests/data/regressions/issue30/)."""
+"""The trace reader's fast path (pandas' C parser) reads every file as the string path does; each case is one
+the two paths could read differently (tests/data/regressions/odd-traces/)."""
 
 from __future__ import annotations
 
@@ -10,7 +10,7 @@ from guided_lfd.demonstration.segment import segment, segments_csv
 from guided_lfd.demonstration.trace import load_demonstration
 from guided_lfd.errors import TraceError
 
-CASES = DATA / "regressions" / "issue30"
+CASES = DATA / "regressions" / "odd-traces"
 
 
 @pytest.mark.parametrize("trace, message", [
