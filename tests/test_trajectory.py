@@ -167,6 +167,16 @@ def test_bad_trajectories_get_a_one_line_error_at_their_place(runner, app, name,
     assert len(result.stderr.strip().splitlines()) == 1 and "Traceback" not in result.stderr
 
 
+def test_a_type_clash_between_two_trajectory_files_names_both_places(runner, app):
+    """It named the second file alone, no line."""
+    path = TRAJ / "bad" / "type-clash-with-day-1.traj"
+    result = runner.invoke(app, ["learn-domain", "--prior", str(LIGHTS / "prior.pddl"), str(LIGHTS / "day-1.traj"),
+                                 str(path)])
+    assert result.exit_code == EXIT_PDDL_SEMANTIC, result.output
+    assert result.stderr == (f"{path}:4:26: semantic error: object 'hall' is a switch here and a room in an earlier "
+                             f"trajectory ({LIGHTS / 'day-1.traj'}:3:21); expected one type\n")
+
+
 def test_cli_learns_from_trajectories_with_the_model_asked_for(runner, app, tmp_path):
     out = tmp_path / "learned.pddl"
     result = runner.invoke(app, ["learn-domain", "--prior", str(PAINT / "prior.pddl"), str(PAINT / "week.traj"),
@@ -271,7 +281,9 @@ def test_declared_types_must_fit_every_use(runner, app, tmp_path):
                                      "(:state (power) (wired y x) (up y) (lit x)))")
     result = runner.invoke(app, ["learn-domain", "--prior", str(LIGHTS / "prior.pddl"), str(tmp_path / "a.traj"),
                                  str(tmp_path / "b.traj")])
-    assert result.exit_code == EXIT_PDDL_SEMANTIC and "in an earlier trajectory; expected one type" in result.stderr
+    assert result.exit_code == EXIT_PDDL_SEMANTIC
+    assert f"b.traj:1:37: semantic error: object 'y' is a switch here and a room in an earlier trajectory " \
+           f"({tmp_path / 'a.traj'}:1:39); expected one type" in result.stderr
 
 
 def test_the_learned_domain_keeps_the_priors_name_unless_named(runner, app):

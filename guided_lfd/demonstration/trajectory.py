@@ -20,7 +20,7 @@ narrowest type asked of them, as SAM infers them) or from a problem file.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 
 from guided_lfd.demonstration.action_model import Observation
 from guided_lfd.errors import Location, PddlSemanticError, PddlSyntaxError
@@ -39,6 +39,8 @@ class Trajectory:
     steps: tuple[Observation, ...]
     #: Every object named, with the type its uses imply (or the problem's).
     objects: dict[str, str]
+    #: Where each object is used as that type (its first such use), for messages.
+    where: dict[str, Location] = field(default_factory=dict, compare=False)
 
 
 def is_trajectory(text: str) -> bool:
@@ -181,7 +183,11 @@ def read_trajectory(path: str, text: str, prior: Domain, objects: dict[str, str]
                                         "an object of that type", src.location(tok.line, tok.col))
     steps = tuple(Observation(name, args, states[i], states[i + 1], str(where))
                   for i, (name, args, where) in enumerate(actions))
-    return Trajectory(path, tuple(states), steps, types)
+    where = {}
+    for obj, seen in uses.items():
+        tok = next((tok for t, tok in seen if t == types[obj]), seen[0][1])
+        where[obj] = src.location(tok.line, tok.col)
+    return Trajectory(path, tuple(states), steps, types, where)
 
 
 def learn_from_trajectories(prior: Domain, trajectories: list[Trajectory], model: str = "safe") -> Domain:
@@ -190,15 +196,18 @@ def learn_from_trajectories(prior: Domain, trajectories: list[Trajectory], model
     from guided_lfd.demonstration.action_model import learn_operators
 
     objects: dict[str, str] = {}
+    origin: dict[str, Location] = {}  # where each object's type so far was asked for
     for trajectory in trajectories:
         for obj, t in trajectory.objects.items():
+            here = trajectory.where.get(obj, Location(trajectory.source))
             known = objects.setdefault(obj, t)
+            origin.setdefault(obj, here)
             if t in type_ancestors(prior.types, known):
                 continue  # the earlier use asked for as much or more
             if known not in type_ancestors(prior.types, t):
-                raise PddlSemanticError(f"object '{obj}' is a {t} here and a {known} in an earlier "
-                                        "trajectory; expected one type", Location(trajectory.source))
-            objects[obj] = t  # this trajectory's uses are narrower
+                raise PddlSemanticError(f"object '{obj}' is a {t} here and a {known} in an earlier trajectory "
+                                        f"({origin[obj]}); expected one type", here)
+            objects[obj], origin[obj] = t, here  # this trajectory's uses are narrower
     steps = [step for t in trajectories for step in t.steps]
     states = [state for t in trajectories for state in t.states]
     domain, notes = learn_operators(prior, steps, objects, model, states)
