@@ -141,11 +141,13 @@ def test_valid_pddl_tarski_refuses_reads_and_plans(domain, problem):
     assert _optimal_length(dom, prob) == 1
 
 
-def test_a_type_declared_twice_with_different_parents_is_still_an_error(tmp_path):
+def test_a_type_declared_twice_with_parents_neither_below_the_other_is_still_an_error(tmp_path):
+    """Fast Downward reads it as a type below both; the model has one parent per type (parents one below the other
+    are read: tests/test_reader_names.py)."""
     from guided_lfd.errors import PddlSemanticError
 
     path = tmp_path / "d.pddl"
-    path.write_text("(define (domain d) (:requirements :strips :typing)\n  (:types t - u t - object u)\n"
+    path.write_text("(define (domain d) (:requirements :strips :typing)\n  (:types t - u t - v u v)\n"
                     "  (:predicates (p ?x - t)) (:action a :parameters (?x - t) :precondition (p ?x) "
                     ":effect (not (p ?x))))")
     with pytest.raises(PddlSemanticError, match="type 't' is declared twice"):

@@ -165,7 +165,7 @@ def test_a_type_named_like_an_object_reads_in_messages_as_written(tmp_path):
 @pytest.mark.parametrize("domain,problem,where", [
     ("(:types t) (:predicates (p ?x))", "(:objects o - t o - t)", "p.pddl:1:49"),
     ("(:types t) (:predicates (p ?x) (p ?y))", "(:objects o)", None),
-    ("(:types t) (:constants o - t) (:predicates (p ?x))", "(:objects o - t)", "p.pddl:1:60"),
+    ("(:types t) (:constants o - t) (:predicates (p ?x))", "(:objects o - t)", "p.pddl:1:43"),
     ("(:types t) (:predicates (t ?x) (p ?x))", "(:objects t - t)", "d.pddl:1:45"),
 ], ids=["two objects", "two predicates", "an object and a constant", "a type and a predicate"])
 def test_a_name_declared_twice_in_one_namespace_is_still_refused(tmp_path, domain, problem, where):
@@ -176,6 +176,43 @@ def test_a_name_declared_twice_in_one_namespace_is_still_refused(tmp_path, domai
     assert "declared twice" in message
     if where is not None:
         assert message.startswith(where + ": semantic error:")
+
+
+TWICE = GRAMMAR / "declared-twice"
+
+
+def test_a_type_declared_again_is_one_type_below_the_lower_parent_with_a_warning(runner, app):
+    """``area`` among the plain types and again below ``place``: Fast Downward reads it, guided-lfd refused it
+    ("type 'area' is declared twice in :types")."""
+    domain = parse_domain(TWICE / "domain.pddl")
+    assert domain.types["area"] == "place"
+    warning = (f"{TWICE / 'domain.pddl'}:7:11: warning: type 'area' is declared again (first at 6:23); read as one "
+               "type below 'place', as Fast Downward reads it")
+    assert domain.warnings == (warning,)
+    for command in ("plan", "excuse"):
+        result = runner.invoke(app, [command, str(TWICE / "domain.pddl"), str(TWICE / "problem.pddl")])
+        assert result.exit_code == 0, result.output
+        assert [line for line in result.stderr.splitlines() if "warning" in line] == [warning]
+
+
+def test_a_predicate_and_an_object_may_share_a_name(runner, app):
+    """The predicate ``home`` and the object ``home``: separate namespaces for Fast Downward, one for tarski
+    ("'home' is declared twice")."""
+    domain, problem = parse_task(TWICE / "domain.pddl", TWICE / "problem.pddl")
+    assert "home" in domain.predicates and problem.objects["home"] == "area"
+    assert Atom("home", ("home",)) in problem.init
+    result = runner.invoke(app, ["plan", str(TWICE / "domain.pddl"), str(TWICE / "problem.pddl")])
+    assert result.exit_code == 0 and result.stdout.endswith("(drop-home r1 box home)\n; cost = 4 (unit cost)\n")
+
+
+@pytest.mark.parametrize("domain, problem, where", [
+    (TWICE / "domain.pddl", TWICE / "problem-object-twice.pddl", "problem-object-twice.pddl:4:13"),
+    (DATA / "adl" / "household" / "domain.pddl", TWICE / "household-plate-twice.pddl", "household-plate-twice.pddl:9:13"),
+])
+def test_an_object_declared_twice_is_refused_at_its_second_declaration_on_every_path(domain, problem, where):
+    """As Fast Downward's translator refuses it ("duplicate objects"); the ADL path read it without a word."""
+    message = _error(domain, problem)  # from the file's name on
+    assert message.startswith(f"{where}: semantic error: '") and "is declared twice" in message
 
 
 def test_an_action_declared_twice_is_still_refused(tmp_path):

@@ -22,7 +22,7 @@ import itertools
 import re
 import string
 from dataclasses import dataclass
-from typing import Iterator
+from typing import Iterable, Iterator
 
 from guided_lfd.errors import Location, PddlSemanticError, PddlSyntaxError, UnsupportedFeatureError
 from guided_lfd.pddl.model import PDDL_NAME, either_type
@@ -127,6 +127,22 @@ def declared_constants(src: SourceMap, section: str = ":constants") -> list[tupl
     """The names (and types as written) a ``:constants`` or ``:objects`` section declares."""
     node = src.section(section)
     return typed_names(node.items[1:]) if node is not None else []
+
+
+def declared_twice(name: str, where: Location) -> PddlSemanticError:
+    """The error for a name declared twice in one namespace (both reading paths word it so)."""
+    return PddlSemanticError(f"'{name}' is declared twice (expected each type, constant, object, predicate and action "
+                             "name once)", where)
+
+
+def check_objects_once(src: SourceMap, section: str, taken: Iterable[str] = ()) -> None:
+    """Refuse (exit 32, at the second declaration) a name ``section`` (``:constants``, ``:objects``) declares twice,
+    or one of ``taken`` (the domain's constants), as Fast Downward's translator does ("duplicate objects")."""
+    seen = set(taken)
+    for tok, _ in declared_constants(src, section):
+        if tok.lower in seen:
+            raise declared_twice(tok.text, Location(src.path, tok.line, tok.col))
+        seen.add(tok.lower)
 
 
 def _action_parts(act: SExpr) -> tuple[list[str], list[SExpr]]:
@@ -336,3 +352,77 @@ def substituted(text: str, src: SourceMap, tokens: list[tuple[Token, str]], eith
 def either_lists(src: SourceMap) -> list[SExpr]:
     """Every ``(either ...)`` list of ``src`` (after :func:`check_either`, all in predicate declarations)."""
     return _either_lists(src)
+
+
+# -- a type declared twice ------------------------------------------------------------------------------------------
+
+def _type_groups(items: list[SExpr | Token]) -> list[tuple[list[Token], Token | None, Token | None]] | None:
+    """The ``:types`` section's groups: (names, the ``-``, the parent), parent None where none is written;
+    None when a list stands among them (``either``: the feature check refuses it)."""
+    groups: list[tuple[list[Token], Token | None, Token | None]] = []
+    pending: list[Token] = []
+    i = 0
+    while i < len(items):
+        item = items[i]
+        if not isinstance(item, Token):
+            return None
+        if item.text == "-" and i + 1 < len(items) and isinstance(items[i + 1], Token):
+            groups.append((pending, item, items[i + 1]))  # type: ignore[arg-type]
+            pending = []
+            i += 2
+            continue
+        pending.append(item)
+        i += 1
+    return groups + [(pending, None, None)] if pending else groups
+
+
+def _above(t: str, parents: dict[str, set[str]]) -> set[str]:
+    """``t`` and every type above it, through every parent any declaration gives."""
+    seen, todo = {t}, [t]
+    while todo:
+        for up in parents.get(todo.pop(), ()):
+            if up not in seen:
+                seen.add(up)
+                todo.append(up)
+    return seen
+
+
+def types_declared_once(src: SourceMap) -> tuple[SourceMap, list[str]]:
+    """``src`` with each type ``:types`` declares more than once declared once, and a warning for each.
+
+    Fast Downward reads such a type as one, below every parent it is given;
+    the model has one parent per type, so of parents one below the other
+    (``area - object`` and ``area - place``) the lowest is kept, which is the
+    same type.  Parents neither below the other are left for the readers'
+    "declared twice" error.  The other declarations become spaces (no
+    position moves), with their ``- parent`` where no other name shares it.
+    """
+    section = src.section(":types")
+    groups = _type_groups(section.items[1:]) if section is not None else None
+    if not groups:
+        return src, []
+    found: dict[str, list[tuple[Token, str]]] = {}
+    for names, _, parent in groups:
+        for tok in names:
+            found.setdefault(tok.lower, []).append((tok, parent.lower if parent is not None else "object"))
+    parents = {name: {up for _, up in decls if up != name} for name, decls in found.items()}
+    blank: set[int] = set()
+    warnings: list[str] = []
+    for name, decls in found.items():
+        if len(decls) < 2:
+            continue
+        kept = next((d for d in decls if all(up in _above(d[1], parents) for _, up in decls)), None)
+        if kept is None:
+            continue
+        blank |= {id(tok) for tok, _ in decls if tok is not kept[0]}
+        first, again = decls[0][0], decls[1][0]
+        warnings.append(f"{src.path}:{again.line}:{again.col}: warning: type '{again.text}' is declared again (first "
+                        f"at {first.line}:{first.col}); read as one type below '{kept[1]}', as Fast Downward reads it")
+    if not blank:
+        return src, []
+    tokens = [tok for names, _, _ in groups for tok in names if id(tok) in blank]
+    for names, dash, parent in groups:
+        if dash is not None and parent is not None and all(id(tok) in blank for tok in names):
+            tokens += [dash, parent]
+    text = substituted(src.text, src, [(tok, " " * len(tok.text)) for tok in tokens], [])
+    return SourceMap(src.path, text), warnings

@@ -460,8 +460,7 @@ def _semantic_error(exc: Exception, src: SourceMap, orig) -> PddlSemanticError |
                                  src.locate_argument(element, ":init", ":goal"))
     if isinstance(exc, terr.DuplicateDefinition):
         name = orig(str(getattr(exc, "name", _element_name(exc))))
-        return PddlSemanticError(f"'{name}' is declared twice (expected each type, constant, object, predicate and "
-                                 "action name once)", src.locate_second(name))
+        return names.declared_twice(name, src.locate_second(name))
     return None
 
 
@@ -798,6 +797,11 @@ def parse_domain(path: str | Path) -> Domain:
     src = _source_map(name, "domain")
     _check_kind(src, "domain")
     _check_features(src, "domain")
+    src, notes = _declared_once(src)
+    return _noted(_domain_of(src, name), notes)
+
+
+def _domain_of(src: SourceMap, name: str) -> Domain:
     if adl_reader.needs_adl(src):
         return adl_reader.read_domain(src, name)
     try:
@@ -808,23 +812,37 @@ def parse_domain(path: str | Path) -> Domain:
         return _or_raise(exc, lambda: adl_reader.read_domain(src, name))
 
 
-def _translator_may_read(exc: GuidedLfdError, src: SourceMap) -> bool:
+def _declared_once(dsrc: SourceMap, psrc: SourceMap | None = None) -> tuple[SourceMap, list[str]]:
+    """Duplicate declarations as Fast Downward reads them, for every reading path: a type declared again is one
+    type (``dsrc`` with the declarations merged, and a warning for each); a constant or object declared again
+    (the problem's objects after the domain's constants) is an error at the second declaration."""
+    names.check_objects_once(dsrc, ":constants")
+    if psrc is not None:
+        names.check_objects_once(psrc, ":objects", (tok.lower for tok, _ in names.declared_constants(dsrc)))
+    return names.types_declared_once(dsrc)
+
+
+def _noted(domain: Domain, notes: list[str]) -> Domain:
+    """``domain`` with the reading's ``notes`` (warnings about its file) before its own."""
+    return replace(domain, warnings=(*notes, *domain.warnings)) if notes else domain
+
+
+def _translator_may_read(exc: GuidedLfdError, dsrc: SourceMap, psrc: SourceMap | None = None) -> bool:
     """Whether Fast Downward's parser may read what tarski's grammar refused: valid PDDL that tarski
     does not take (names starting with a digit or called 'domain', 'object' among the types, a type
-    declared twice alike, a type and a predicate of the same name)."""
+    declared twice alike, a predicate named like a type, an object or a constant: Fast Downward keeps
+    predicates apart from both, tarski has one namespace)."""
     if isinstance(exc, PddlSyntaxError) or "is declared twice in :types" in exc.message:
         return True
     match = re.match(r"'([^']+)' is declared twice \(expected", exc.message)
-    if match is None:
+    if match is None or match.group(1).lower() not in names.predicate_names(dsrc):
         return False
     name = match.group(1).lower()
     try:
-        types = {t.lower() for t, _ in (src.types_parents_first() or [])}
+        types = {t.lower() for t, _ in (dsrc.types_parents_first() or [])}
     except GuidedLfdError:
         return False
-    predicates = src.section(":predicates")
-    declared = {p.head() for p in predicates.items[1:] if isinstance(p, SExpr)} if predicates is not None else set()
-    return name in types and name in declared
+    return name in types or name in names.object_names(dsrc, psrc)
 
 
 def _or_raise(exc: GuidedLfdError, read):
@@ -873,6 +891,12 @@ def parse_task(domain_path: str | Path, problem_path: str | Path, *, domain_text
     psrc = _source_map(pname, "problem", problem_text)
     _check_kind(psrc, "problem")
     _check_features(psrc, "problem")
+    dsrc, notes = _declared_once(dsrc, psrc)
+    domain, problem = _task_of(dsrc, dname, psrc, pname)
+    return _noted(domain, notes), problem
+
+
+def _task_of(dsrc: SourceMap, dname: str, psrc: SourceMap, pname: str) -> tuple[Domain, Problem]:
     if adl_reader.needs_adl(dsrc):
         domain = adl_reader.read_domain(dsrc, dname)
         _check_domain_reference(psrc, domain)
@@ -884,7 +908,7 @@ def parse_task(domain_path: str | Path, problem_path: str | Path, *, domain_text
     try:
         return _strips_task(dsrc, dname, psrc, pname)
     except (PddlSyntaxError, PddlSemanticError) as exc:
-        if not _translator_may_read(exc, dsrc if exc.location and exc.location.path == dname else psrc):
+        if not _translator_may_read(exc, dsrc, psrc):
             raise
 
         def read() -> tuple[Domain, Problem]:
