@@ -25,7 +25,7 @@ from dataclasses import dataclass, field, replace
 from guided_lfd.demonstration.action_model import Observation
 from guided_lfd.errors import Location, PddlSemanticError, PddlSyntaxError
 from guided_lfd.pddl.model import Atom, Domain, type_ancestors
-from guided_lfd.pddl.source import SExpr, SourceMap, Token
+from guided_lfd.pddl.source import SExpr, SourceMap, Token, check_ascii
 
 __all__ = ["Trajectory", "is_trajectory", "read_trajectory", "object_types", "learn_from_trajectories"]
 
@@ -138,6 +138,7 @@ def read_trajectory(path: str, text: str, prior: Domain, objects: dict[str, str]
 
     ``objects``: the objects' types from a problem file, if given (an object it does not declare is an error).
     """
+    check_ascii(path, text)  # as the PDDL files: their names are the prior's
     src = SourceMap(path, text, definition="(:trajectory ...)")
     root = src.roots[0]
     if root.head() != ":trajectory":

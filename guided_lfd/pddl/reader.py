@@ -36,7 +36,7 @@ from guided_lfd.pddl.model import (
     type_members,
 )
 from guided_lfd.pddl import adl_reader, costs, fast_reader, names
-from guided_lfd.pddl.source import SExpr, SourceMap, Token
+from guided_lfd.pddl.source import SExpr, SourceMap, Token, check_ascii
 from guided_lfd.io import read_text
 
 # Keywords of PDDL features beyond STRIPS and ADL, with the requirement they belong to.
@@ -760,6 +760,7 @@ def _source_map(path: str, kind: str, text: str | None = None) -> SourceMap:
     mistake (``((and``) earlier, so its position wins when it has one.
     """
     text = read_text(path) if text is None else text
+    check_ascii(path, text)
     try:
         return SourceMap(path, text)
     except PddlSyntaxError as exc:

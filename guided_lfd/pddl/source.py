@@ -21,6 +21,26 @@ _TOKEN = re.compile(r";[^\n]*|\(|\)|[^\s()]+")
 MAX_DEPTH = 64
 
 
+def check_ascii(path: str, text: str) -> None:
+    """Refuse (:class:`PddlSyntaxError`, exit 31) a character outside ASCII before a line's ``;`` comment.
+
+    Fast Downward's translator refuses such a file ("Non-ASCII character
+    outside comment"), and every command hands the translator what it reads
+    (invariants, ADL grounding), so a name such as ``tür`` or ``盘子``, or a
+    right-to-left override, is one syntax error at its line and column for
+    every command.  Comments may hold any character.
+    """
+    if text.isascii():
+        return
+    for number, line in enumerate(text.split("\n"), start=1):
+        code = line.split(";", 1)[0]
+        if not code.isascii():
+            col, char = next((k, c) for k, c in enumerate(code, start=1) if not c.isascii())
+            raise PddlSyntaxError(
+                f"non-ASCII character {char!r} (U+{ord(char):04X}) outside a comment, expected ASCII (Fast "
+                "Downward's translator reads no other; comments may hold any character)", Location(path, number, col))
+
+
 @dataclass
 class SExpr:
     """A parenthesised list with the position of its opening parenthesis."""
