@@ -207,7 +207,8 @@ def test_a_predicate_and_an_object_may_share_a_name(runner, app):
 
 @pytest.mark.parametrize("domain, problem, where", [
     (TWICE / "domain.pddl", TWICE / "problem-object-twice.pddl", "problem-object-twice.pddl:4:13"),
-    (DATA / "adl" / "household" / "domain.pddl", TWICE / "household-plate-twice.pddl", "household-plate-twice.pddl:9:13"),
+    (DATA / "adl" / "household" / "domain.pddl", TWICE / "household-plate-twice.pddl",
+     "household-plate-twice.pddl:9:13"),
 ])
 def test_an_object_declared_twice_is_refused_at_its_second_declaration_on_every_path(domain, problem, where):
     """As Fast Downward's translator refuses it ("duplicate objects"); the ADL path read it without a word."""

@@ -22,7 +22,7 @@ from typing import Iterator
 
 from guided_lfd.errors import Location, PddlSemanticError
 from guided_lfd.pddl.formula import DerivedRule, Formula, Junction, Quantified
-from guided_lfd.pddl.model import Atom, Domain, Problem
+from guided_lfd.pddl.model import Atom, Domain, Problem, reached
 from guided_lfd.pddl.source import SExpr, SourceMap, Token
 
 __all__ = ["check_domain", "check_init", "dependencies", "strata"]
@@ -54,7 +54,7 @@ def strata(domain: Domain) -> list[list[DerivedRule]]:
         uses[rule.predicate] |= {q for q, _ in dependencies(rule.condition) if q in derived}
     for index, rule in enumerate(domain.axioms):
         for q, how in sorted(dependencies(rule.condition)):
-            if how and q in derived and rule.predicate in _reached(q, uses):
+            if how and q in derived and rule.predicate in reached(q, uses):
                 through = "" if q == rule.predicate else f", and '{q}' depends on '{rule.predicate}'"
                 raise PddlSemanticError(
                     f"derived predicate '{rule.predicate}' uses '{q}' {how}{through}: the rules cannot be "
@@ -71,17 +71,6 @@ def strata(domain: Domain) -> list[list[DerivedRule]]:
     for rule in domain.axioms:
         out[level[rule.predicate]].append(rule)
     return [stratum for stratum in out if stratum]
-
-
-def _reached(start: str, uses: dict[str, set[str]]) -> set[str]:
-    """The derived predicates ``start`` depends on, itself included, through any rules."""
-    seen, todo = {start}, [start]
-    while todo:
-        for q in uses.get(todo.pop(), ()):
-            if q not in seen:
-                seen.add(q)
-                todo.append(q)
-    return seen
 
 
 def _rule_lists(src: SourceMap) -> list[SExpr]:

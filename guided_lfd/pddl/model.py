@@ -288,6 +288,18 @@ def type_ancestors(types: dict[str, str | None], t: str) -> list[str]:
     return out
 
 
+def reached(start: str, edges: dict[str, set[str]]) -> set[str]:
+    """``start`` and every name ``edges`` lead to from it, in any number of steps (cycles cut): the types above a
+    type declared with several parents, the derived predicates a rule depends on."""
+    seen, todo = {start}, [start]
+    while todo:
+        for nxt in edges.get(todo.pop(), ()):
+            if nxt not in seen:
+                seen.add(nxt)
+                todo.append(nxt)
+    return seen
+
+
 def common_supertype(types: dict[str, str | None], a: str, b: str) -> str:
     """The closest type both ``a`` and ``b`` belong to (``object`` at worst).
 

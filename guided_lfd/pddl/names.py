@@ -25,7 +25,7 @@ from dataclasses import dataclass
 from typing import Iterable, Iterator
 
 from guided_lfd.errors import Location, PddlSemanticError, PddlSyntaxError, UnsupportedFeatureError
-from guided_lfd.pddl.model import PDDL_NAME, either_type
+from guided_lfd.pddl.model import PDDL_NAME, either_type, reached
 from guided_lfd.pddl.source import SExpr, SourceMap, Token
 
 #: Heads of lists in a STRIPS condition or effect that are not atoms.
@@ -376,17 +376,6 @@ def _type_groups(items: list[SExpr | Token]) -> list[tuple[list[Token], Token | 
     return groups + [(pending, None, None)] if pending else groups
 
 
-def _above(t: str, parents: dict[str, set[str]]) -> set[str]:
-    """``t`` and every type above it, through every parent any declaration gives."""
-    seen, todo = {t}, [t]
-    while todo:
-        for up in parents.get(todo.pop(), ()):
-            if up not in seen:
-                seen.add(up)
-                todo.append(up)
-    return seen
-
-
 def types_declared_once(src: SourceMap) -> tuple[SourceMap, list[str]]:
     """``src`` with each type ``:types`` declares more than once declared once, and a warning for each.
 
@@ -411,7 +400,7 @@ def types_declared_once(src: SourceMap) -> tuple[SourceMap, list[str]]:
     for name, decls in found.items():
         if len(decls) < 2:
             continue
-        kept = next((d for d in decls if all(up in _above(d[1], parents) for _, up in decls)), None)
+        kept = next((d for d in decls if all(up in reached(d[1], parents) for _, up in decls)), None)
         if kept is None:
             continue
         blank |= {id(tok) for tok, _ in decls if tok is not kept[0]}
