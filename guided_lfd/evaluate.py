@@ -33,7 +33,6 @@ from guided_lfd.pddl.model import Atom, Domain, Literal, Problem
 from guided_lfd.symbolic.portfolio import validated_plan
 from guided_lfd.reporting import round_fraction
 from guided_lfd.planning.validation import PlanStep, validate_plan
-from guided_lfd.planning.validation import holds as literal_holds
 
 #: Default bound on the states explored for misdirected guidance.
 DEFAULT_EXPLORATION_BOUND = 20_000
@@ -50,7 +49,7 @@ def excuse_goal(changes: list[Change]) -> tuple[Literal, ...]:
 
 def holds(goal: tuple[Literal, ...], state: frozenset[Atom] | set[Atom]) -> bool:
     """Whether ``state`` satisfies the conjunction ``goal``."""
-    return all(literal_holds(lit, state) for lit in goal)
+    return all(lit.holds(state) for lit in goal)
 
 
 def excuse_defect(robot: Domain, problem: Problem, excuse: list[Change]) -> str | None:

@@ -253,15 +253,9 @@ def robot_could(step: DemonstratedAction, robot: Domain, types: dict[str, str]) 
                 if k >= MAX_BINDINGS:
                     break
                 full = {**binding, **dict(zip(rest, others))}
-                if all(_holds(lit.substitute(full), step.state) for lit in schema.precondition):
+                if all(lit.substitute(full).holds(step.state) for lit in schema.precondition):
                     return True
     return False
-
-
-def _holds(literal: Literal, state: frozenset[Atom]) -> bool:
-    if literal.atom.predicate == "=":
-        return (literal.atom.args[0] == literal.atom.args[1]) == literal.positive
-    return (literal.atom in state) == literal.positive
 
 
 class _Acting:

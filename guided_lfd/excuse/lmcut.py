@@ -13,12 +13,14 @@ evaluated with LM-cut, gives
 Negative preconditions and goals are handled with complement facts ("not p"),
 which a change can also make true (deleting p).
 
-Because robot actions cost 0, h^max of a fact is a *bottleneck* value: the
-smallest change cost c such that the fact is relaxed-reachable using only
-changes of cost <= c.  So h^max is computed as a few incremental relaxed
-closures, one per distinct change cost, vectorised with numpy over sparse
-precondition/effect tables; this keeps LM-cut cheap on tasks with 100k ground
-actions.
+The index tables, the closure, h^max and the LM-cut loop are the core's
+(:mod:`guided_lfd.planning.relaxation`): changes are h^max seeds at their
+cost.  Because robot actions cost 0, h^max of a fact is a *bottleneck* value:
+the smallest change cost c such that the fact is relaxed-reachable using only
+changes of cost <= c, a few incremental relaxed closures, one per distinct
+change cost.  On large tasks the same closures run a layer at a time on numpy
+arrays over sparse precondition/effect tables (arrays pay from about 1,500
+actions); this keeps LM-cut cheap on tasks with 100k ground actions.
 """
 
 from __future__ import annotations
@@ -30,6 +32,7 @@ import math
 from typing import TYPE_CHECKING, Iterator
 
 from guided_lfd.excuse.space import ChangeSpace
+from guided_lfd.planning.relaxation import INF, close, hmax, index_facts, lmcut
 from guided_lfd.planning.task import bits
 
 if TYPE_CHECKING:
@@ -39,7 +42,6 @@ else:
     # small tasks (the kitchen ones, most of a user's) never pay its ~0.1 s import.
     np = None
 
-INF = float("inf")
 #: Below this many relaxed actions LM-cut runs on plain Python lists (the
 #: numpy version pays ~10 us per array call, too much for small tasks).
 SMALL_TASK_ACTIONS = 1500
@@ -151,17 +153,12 @@ class RelaxedExcuseTask:
         """Each fact's consumers and achievers, as lists, and as numpy arrays on large tasks."""
         n_actions = len(pre)
         self.n_actions = n_actions
-        prec_of: list[list[int]] = [[] for _ in range(self.n_facts)]
-        achievers: list[list[int]] = [[] for _ in range(self.n_facts)]
-        for ai, p in enumerate(pre):
-            for f in p:
-                prec_of[f].append(ai)
-            for f in add[ai]:
-                achievers[f].append(ai)
+        prec_of, achievers = index_facts(self.n_facts, pre, add)
         # Small tasks: numpy's per-call overhead dominates; plain lists are faster.
         self.small = n_actions < SMALL_TASK_ACTIONS
         self.pre_lists, self.add_lists = pre, add
         self.n_pre_list = [len(p) for p in pre]
+        self.free_cost = [0] * n_actions  # the robot's actions: the compiled task charges changes only
         self.free_adds = sorted({q for p, e in zip(pre, add) if not p for q in e})
         self._first_hmax = None
         self.prec_of_lists, self.achiever_lists = prec_of, achievers
@@ -413,34 +410,36 @@ class RelaxedExcuseTask:
         return int(math.floor(value / self.scale + 1e-9))
 
     def _lmcut(self, true, cost, last: bool, initial_h=None) -> Bound:
-        if self.small:  # lists from _initial_lists
-            return self._lmcut_lists(true, cost, last, initial_h)
-        total = 0.0
-        landmarks: list[list[int]] = []
-        shares: list[int] = []
-        while True:
-            if initial_h is not None:
-                h, initial_h = initial_h, None
-            else:
-                h = self._hmax(true, cost)
-                if self._first_hmax is None:
-                    self._first_hmax = h
-            goal_h = h[self.goal]
-            goal_fact = int(self.goal[int(np.argmax(goal_h))])
-            if h[goal_fact] == INF:
-                return Bound(INF, [], [])
-            if h[goal_fact] == 0:
-                return Bound(total, landmarks, shares)
-            pcf = self._pcf(h, last)
-            zone = self._goal_zone(goal_fact, h, pcf)
-            cut = np.flatnonzero(zone & (cost > 0) & np.isfinite(cost))
-            if cut.size == 0:  # cannot happen for finite h; guard against a silent loop
-                return Bound(total, landmarks, shares)
-            m = float(cost[cut].min())
-            total += m
-            cost[cut] -= m
-            landmarks.append(sorted(int(self.fact_atom[f]) for f in cut))
-            shares.append(int(m))
+        """LM-cut from the facts ``true`` under the change costs ``cost`` (consumed): h^max on lists or arrays,
+        the goal zone of its costliest goal fact, cut at the changes entering it."""
+        small = self.small
+        goal = self.goal_list if small else self.goal
+        first = [initial_h]
+
+        def hmax_of(cost):
+            if first[0] is not None:
+                h, first[0] = first[0], None
+                return h
+            h = self._hmax_lists(true, cost) if small else self._hmax(true, cost)
+            if self._first_hmax is None:
+                self._first_hmax = h
+            return h
+
+        def goal_fact(h) -> int:
+            return max(goal, key=lambda g: h[g]) if small else int(goal[int(np.argmax(h[goal]))])  # first maximum
+
+        def cut_of(h, cost) -> list[int]:
+            if small:
+                zone = self._goal_zone_lists(goal_fact(h), h, last)
+                return sorted(f for f in zone if cost[f] > 0 and cost[f] != INF)
+            zone = self._goal_zone(goal_fact(h), h, self._pcf(h, last))
+            return np.flatnonzero(zone & (cost > 0) & np.isfinite(cost)).tolist()
+
+        total, cuts = lmcut(hmax_of, lambda h: h[goal_fact(h)], cut_of, cost)
+        if total == INF:
+            return Bound(INF, [], [])
+        atoms = self.fact_atom_list
+        return Bound(total, [sorted(atoms[f] for f in cut) for cut, _ in cuts], [int(m) for _, m in cuts])
 
     def _goal_zone(self, goal_fact: int, h: np.ndarray, pcf: np.ndarray) -> np.ndarray:
         """The goal zone: facts from which ``goal_fact`` is reached through zero-cost robot actions.
@@ -478,71 +477,12 @@ class RelaxedExcuseTask:
 
     # -- the same LM-cut on plain lists, for small tasks ------------------------
     def _hmax_lists(self, true: list[bool], cost: list[float]) -> list[float]:
-        """h^max of every fact, by thresholded closures (as :meth:`_hmax`, on lists).
-
-        Robot actions cost 0, so h^max is a bottleneck value taken from the few
-        distinct change costs: one linear closure per cost level, no heap.
-        Facts are bucketed by their seed cost once, so a level only looks at
-        its own facts.
-        """
-        adds = self.add_lists
-        prec_of = self.prec_of_lists
-        unsat = list(self.n_pre_list)
-        h = [INF] * len(cost)
-        buckets: dict[float, list[int]] = {0.0: [f for f, t in enumerate(true) if t] + self.free_adds}
-        for f, c in enumerate(cost):
-            if c != INF and not true[f]:
-                bucket = buckets.get(c)
-                if bucket is None:
-                    buckets[c] = [f]
-                else:
-                    bucket.append(f)
-        for level in sorted(buckets):
-            # A fact may sit in a bucket twice (true and freely added): it must
-            # be queued once, or its actions' counters drop twice.
-            queue = []
-            for f in buckets[level]:
-                if h[f] == INF:
-                    h[f] = level
-                    queue.append(f)
-            while queue:
-                for ai in prec_of[queue.pop()]:
-                    left = unsat[ai] - 1
-                    unsat[ai] = left
-                    if not left:
-                        for q in adds[ai]:
-                            if h[q] == INF:
-                                h[q] = level
-                                queue.append(q)
-        return h
-
-    def _lmcut_lists(self, true: list[bool], cost: list[float], last: bool, initial_h=None) -> Bound:
-        total = 0.0
-        landmarks: list[list[int]] = []
-        shares: list[int] = []
-        goal = self.goal_list
-        while True:
-            if initial_h is not None:
-                h, initial_h = initial_h, None
-            else:
-                h = self._hmax_lists(true, cost)
-                if self._first_hmax is None:
-                    self._first_hmax = h
-            goal_fact = max(goal, key=lambda g: h[g])  # first maximum, as np.argmax
-            if h[goal_fact] == INF:
-                return Bound(INF, [], [])
-            if h[goal_fact] == 0:
-                return Bound(total, landmarks, shares)
-            zone = self._goal_zone_lists(goal_fact, h, last)
-            cut = sorted(f for f in zone if cost[f] > 0 and cost[f] != INF)
-            if not cut:
-                return Bound(total, landmarks, shares)
-            m = min(cost[f] for f in cut)
-            total += m
-            for f in cut:
-                cost[f] -= m
-            landmarks.append(sorted(self.fact_atom_list[f] for f in cut))
-            shares.append(int(m))
+        """h^max of every fact (as :meth:`_hmax`, on lists): the core's h^max, seeded with the true facts, the
+        facts the robot adds with no precondition, and each other fact at its change cost."""
+        seeds = [(0.0, f) for f, t in enumerate(true) if t]
+        seeds += [(0.0, f) for f in self.free_adds]
+        seeds += [(c, f) for f, c in enumerate(cost) if c != INF and not true[f]]
+        return hmax(seeds, self.n_facts, self.prec_of_lists, self.add_lists, self.n_pre_list, self.free_cost)[0]
 
     def _goal_zone_lists(self, goal_fact: int, h: list[float], last: bool, fewest: bool = False) -> set[int]:
         """:meth:`_goal_zone` on lists, for small tasks: the precondition choice function only for the
@@ -610,22 +550,7 @@ class RelaxedClosure:
     def add(self, facts: list[int]) -> bool:
         """Make ``facts`` true and close under the relaxed actions; whether the goal is reached.  Reaching it
         stops the closure there: a closure that reaches the goal is only asked that, never grown further."""
-        reached, unsat, relaxed = self.reached, self.unsat, self.relaxed
-        prec_of, adds, goal = relaxed.prec_of_lists, relaxed.add_lists, relaxed.goal_set
-        queue = []
-        for f in facts:
-            if not reached[f]:
-                reached[f] = 1
-                queue.append(f)
-                self.left -= f in goal
-        while queue and self.left:
-            for ai in prec_of[queue.pop()]:
-                unsat[ai] -= 1
-                if unsat[ai]:
-                    continue
-                for q in adds[ai]:
-                    if not reached[q]:
-                        reached[q] = 1
-                        queue.append(q)
-                        self.left -= q in goal
+        relaxed = self.relaxed
+        self.left = close(facts, self.reached, self.unsat, relaxed.prec_of_lists, relaxed.add_lists,
+                          relaxed.goal_set, self.left)[1]
         return self.left == 0

@@ -43,6 +43,7 @@ from guided_lfd.planning.counting import OperatorCounting
 from guided_lfd.planning.task import GroundAction, bits
 from guided_lfd.planning.h2 import PairReachability
 from guided_lfd.planning.relaxation import RelaxedTask
+from guided_lfd.planning.successors import SuccessorIndex
 
 #: Relevant actions from which reachability checks first hill-climb on h^FF.
 GUIDED_MIN_ACTIONS = 1000
@@ -129,30 +130,24 @@ class ReachabilityOracle:
         self._pairs: PairReachability | None = None
         self._counting: OperatorCounting | None = None
         self._paused: dict[int, _Turns] = {}
-        # Index actions by one positive precondition so successor generation
-        # skips most inapplicable actions; actions without one are always tried
-        # (bucket 0, entries with pre_pos = 0).
-        mask = self.mask
-        self._unconditional = [(a, 0, a.pre_neg, a.delete, a.add & mask) for a in self.actions if not a.pre_pos]
         # Index each action under its precondition that is most likely false:
         # one false in the initial state (states met are I with a few changes
         # and what the robot does from there: ``(in_hand ?i)`` rather than
         # ``(clear ?c)``), then an atom of the predicate with the most ground
         # atoms (``(lifting h c)`` rather than ``(available h)``), so few
-        # actions are tried per state.
+        # actions are tried per state.  Payloads hold the masks the hot loops
+        # test and apply (adds projected on the relevant atoms).
+        mask = self.mask
         per_predicate: dict[str, int] = {}
         for atom in task.atoms:
             per_predicate[atom.predicate] = per_predicate.get(atom.predicate, 0) + 1
         rarity = [per_predicate[a.predicate] for a in task.atoms]
         true_in_init = set(bits(task.init))
-        self._by_first_pre: dict[int, list[tuple]] = {}
-        for act in self.actions:
-            if act.pre_pos:
-                key = max(act.pre_pos_ids, key=lambda i: (i not in true_in_init, rarity[i], i))
-                self._by_first_pre.setdefault(key, []).append((act, act.pre_pos, act.pre_neg, act.delete, act.add & mask))
-        self._key_mask = 0
-        for key in self._by_first_pre:
-            self._key_mask |= 1 << key
+        unconditional = [(None, (a, 0, a.pre_neg, a.delete, a.add & mask)) for a in self.actions if not a.pre_pos]
+        self._index = SuccessorIndex(unconditional + [
+            (max(act.pre_pos_ids, key=lambda i: (i not in true_in_init, rarity[i], i)),
+             (act, act.pre_pos, act.pre_neg, act.delete, act.add & mask))
+            for act in self.actions if act.pre_pos])
 
     def _goal_distance(self, state: int) -> int:
         return (self.goal_pos & ~state).bit_count() + (self.goal_neg & state).bit_count()
@@ -395,12 +390,7 @@ class ReachabilityOracle:
 
     def _successors(self, s: int) -> Iterator[tuple[GroundAction, int]]:
         """(action, next state) for every relevant action applicable in ``s``."""
-        buckets = [self._unconditional] if self._unconditional else []
-        keys = s & self._key_mask
-        while keys:
-            low = keys & -keys
-            keys ^= low
-            buckets.append(self._by_first_pre[low.bit_length() - 1])
+        buckets = self._index.candidates(s)
         for bucket in buckets:
             for act, pre_pos, pre_neg, delete, add in bucket:
                 if (s & pre_pos) == pre_pos and not s & pre_neg:
@@ -512,8 +502,8 @@ class ReachabilityOracle:
         # than the bit operations themselves).  States are already projected on
         # the relevant atoms, and so are the stored add effects.
         goal_pos, goal_neg = self.goal_pos, self.goal_neg
-        alive, dead, by_first = self.alive, self.dead, self._by_first_pre
-        unconditional, key_mask = self._unconditional, self._key_mask
+        alive, dead = self.alive, self.dead
+        candidates = self._index.candidates
         memo_hits = 0
         pop, push = heapq.heappop, heapq.heappush
         try:
@@ -528,13 +518,7 @@ class ReachabilityOracle:
                 expanded += 1
                 if not expanded & 255:
                     yield
-                buckets = [unconditional] if unconditional else []
-                keys = s & key_mask
-                while keys:
-                    low = keys & -keys
-                    keys ^= low
-                    buckets.append(by_first[low.bit_length() - 1])
-                for bucket in buckets:
+                for bucket in candidates(s):
                     for act, pre_pos, pre_neg, delete, add in bucket:
                         if (s & pre_pos) != pre_pos or s & pre_neg:
                             continue

@@ -8,6 +8,7 @@ model on the formulas and never the other way.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import AbstractSet
 
 #: The equality predicate of ``:equality`` (``(= ?a ?b)``).
 EQUALITY = "="
@@ -41,3 +42,9 @@ class Literal:
     def substitute(self, binding: dict[str, str]) -> "Literal":
         """The literal with variables replaced according to ``binding``."""
         return Literal(self.atom.substitute(binding), self.positive)
+
+    def holds(self, state: AbstractSet[Atom]) -> bool:
+        """Whether the ground literal is true in ``state`` (a set of ground atoms); equality compares objects."""
+        atom = self.atom
+        value = atom.args[0] == atom.args[1] if atom.predicate == EQUALITY else atom in state
+        return value == self.positive

@@ -17,7 +17,7 @@ from dataclasses import dataclass
 from itertools import product
 from typing import Iterable, Iterator, Union
 
-from guided_lfd.pddl.atoms import EQUALITY, Atom, Literal
+from guided_lfd.pddl.atoms import Atom, Literal
 
 #: Variables of a quantifier or a universal effect: (name, type) pairs.
 Variables = tuple[tuple[str, str], ...]
@@ -142,9 +142,7 @@ def holds(formula: Formula, state: frozenset[Atom] | set[Atom], objects: dict[st
     """
     binding = binding or {}
     if isinstance(formula, Literal):
-        atom = formula.atom.substitute(binding)
-        value = atom.args[0] == atom.args[1] if atom.predicate == EQUALITY else atom in state
-        return value == formula.positive
+        return formula.substitute(binding).holds(state)
     if isinstance(formula, Junction):
         test = all if formula.kind == "and" else any
         return test(holds(p, state, objects, binding) for p in formula.parts)

@@ -14,7 +14,7 @@ from typing import Iterable, Sequence
 
 from guided_lfd.deadline import linger
 from guided_lfd.errors import Location, SearchTimeout, TaskTooLarge
-from guided_lfd.pddl.model import (EQUALITY, ActionSchema, Atom, Domain, Literal, MissingCostError, Problem,
+from guided_lfd.pddl.model import (EQUALITY, ActionSchema, Atom, Domain, MissingCostError, Problem,
                                    action_cost, objects_by_type)
 from guided_lfd.planning.task import (MAX_GROUND_ACTIONS, GroundAction, GroundTask, ground_atoms,
                                       static_predicates)
@@ -211,7 +211,7 @@ def _bindings(
     def consistent(binding: dict[str, str]) -> bool:
         for lit in checks:
             if all(not a.startswith("?") or a in binding for a in lit.atom.args):
-                if not _holds(lit, binding, init):
+                if not lit.substitute(binding).holds(init):
                     return False
         return True
 
@@ -245,12 +245,3 @@ def _bindings(
         if key not in seen:
             seen.add(key)
             yield binding
-
-
-def _holds(lit: Literal, binding: dict[str, str], init: frozenset[Atom]) -> bool:
-    atom = lit.atom.substitute(binding)
-    if atom.predicate == EQUALITY:
-        value = atom.args[0] == atom.args[1]
-    else:
-        value = atom in init
-    return value == lit.positive

@@ -26,9 +26,9 @@ __all__ = ["certified_optimal", "is_plan", "shorten_plan"]
 def is_plan(plan: Sequence[GroundAction], state: int, goal_pos: int, goal_neg: int) -> bool:
     """Whether ``plan`` is applicable from ``state`` and ends in a goal state."""
     for act in plan:
-        if (state & act.pre_pos) != act.pre_pos or state & act.pre_neg:
+        if not act.applicable(state):
             return False
-        state = (state & ~act.delete) | act.add
+        state = act.apply(state)
     return (state & goal_pos) == goal_pos and not state & goal_neg
 
 
@@ -36,7 +36,7 @@ def _without_loops(plan: list[GroundAction], state: int) -> list[GroundAction]:
     """The plan with every stretch between two visits of one state cut out."""
     states = [state]
     for act in plan:
-        states.append((states[-1] & ~act.delete) | act.add)
+        states.append(act.apply(states[-1]))
     out: list[GroundAction] = []
     trail = [state]  # states along ``out``
     last_seen: dict[int, int] = {state: 0}

@@ -1,32 +1,182 @@
-"""Delete relaxations of a ground task: LM-cut and the FF heuristic.
+"""The delete relaxation: one core for every relaxed question the tool asks.
 
-Both work on one table of relaxed facts and actions built once per task
-(plain lists: the tasks are evaluated state by state in pure Python).  Facts
-are the atoms the actions and the goal mention, plus complement facts
-("not p") for negative preconditions and goals, made true by the actions
-that delete ``p``.  Fact 0 is "true at the start" (the precondition of
-precondition-free actions), fact 1 the goal, added by an artificial goal
-action of cost 0 (the last action).
+A relaxed task is a table of facts and actions: each action's precondition
+facts and add facts (deletes ignored).  On such a table this module holds
+the one implementation of each idea:
 
-* :meth:`RelaxedTask.lmcut` (Helmert and Domshlak 2009): an admissible
-  lower bound on the cost of a plan, used to prove plans optimal;
+* :func:`index_facts`: each fact's consumers and achievers;
+* :func:`close`: the relaxed closure (what a delete-free run reaches), grown
+  in place, optionally stopping at the goal;
+* :func:`hmax`: h^max from seeded facts, a level at a time (zero-cost actions
+  extend a level as a closure);
+* :func:`lmcut`: the LM-cut loop (Helmert and Domshlak 2009) over any such
+  h^max and cut rule.
+
+:class:`RelaxedTask` is the planner's table over a fixed set of ground
+actions: facts are the atoms the actions and the goal mention, plus
+complement facts ("not p") for negative preconditions and goals, made true by
+the actions that delete ``p``.  Fact 0 is "true at the start" (the
+precondition of precondition-free actions), fact 1 the goal, added by an
+artificial goal action of cost 0 (the last action).  It gives
+
+* :meth:`RelaxedTask.lmcut`: an admissible lower bound on the cost of a plan
+  (the planner's A* heuristic and its optimality proofs);
 * :meth:`RelaxedTask.relaxed_plan` and :meth:`RelaxedTask.helpful` (the FF
   heuristic, Hoffmann and Nebel 2001): a relaxed plan from h^add's best
   supporters and the helpful actions it suggests, used to guide the excuse
   search's reachability checks.
 
-One table serves both, so the oracle's hill-climb and the optimality proof
-of the robot's plan share it.
+The excuse search's relaxed task (:mod:`guided_lfd.excuse.lmcut`) is the
+compiled excuse task on the same core: changes are precondition-free actions
+(h^max seeds at their cost), the robot's actions cost 0.
 """
 
 from __future__ import annotations
 
+import bisect
 import heapq
-from typing import Sequence
+from typing import Any, Callable, Collection, Iterable, Sequence
 
 from guided_lfd.planning.task import GroundAction, bits, mask_of
 
 INF = float("inf")
+
+
+def _descending(f: int) -> int:
+    return -f
+
+
+def index_facts(n_facts: int, pre: Sequence[Sequence[int]], add: Sequence[Sequence[int]]
+                ) -> tuple[list[list[int]], list[list[int]]]:
+    """Each fact's consumers (the actions it is a precondition of) and achievers (those that add it)."""
+    prec_of: list[list[int]] = [[] for _ in range(n_facts)]
+    achievers: list[list[int]] = [[] for _ in range(n_facts)]
+    for ai, p in enumerate(pre):
+        for f in p:
+            prec_of[f].append(ai)
+        for f in add[ai]:
+            achievers[f].append(ai)
+    return prec_of, achievers
+
+
+def close(facts: Iterable[int], reached: bytearray, unsat: list[int], prec_of: Sequence[Sequence[int]],
+          add: Sequence[Sequence[int]], goal: Collection[int] = (), left: int = -1) -> tuple[list[int], int]:
+    """Make ``facts`` reached and close under the relaxed actions: an action whose last unreached precondition
+    is reached adds its facts (``reached`` and ``unsat``, each action's unreached preconditions, are updated).
+
+    Returns the facts newly reached, in order, and how many of ``goal`` are still unreached (``left`` on
+    entry); the closure stops when that count reaches 0 (never, with the default -1).
+    """
+    order: list[int] = []
+    for f in facts:
+        if not reached[f]:
+            reached[f] = 1
+            order.append(f)
+            if f in goal:
+                left -= 1
+    i = 0
+    while left and i < len(order):
+        for ai in prec_of[order[i]]:
+            n = unsat[ai] - 1
+            unsat[ai] = n
+            if n:
+                continue
+            for q in add[ai]:
+                if not reached[q]:
+                    reached[q] = 1
+                    order.append(q)
+                    if q in goal:
+                        left -= 1
+        i += 1
+    return order, left
+
+
+def hmax(seeds: Iterable[tuple[float, int]], n_facts: int, prec_of: Sequence[Sequence[int]],
+         add: Sequence[Sequence[int]], n_pre: list[int], cost: Sequence[float], ordered: bool = False
+         ) -> tuple[list[float], list[int]]:
+    """h^max (Bonet and Geffner 2001) of every fact, and each reached action's precondition choice: the
+    precondition reached last, a maximal one (-1 = the action is never reached).
+
+    ``seeds``: (value, fact) pairs, the facts true at the start (value 0) and those a precondition-free
+    action of that cost adds (the excuse task's changes).  Facts are settled a level (value) at a time;
+    zero-cost actions extend the level they fire in, as a closure (the excuse task's robot actions cost 0,
+    so its h^max is a few closures, no heap per fact).  With ``ordered`` a level's facts are settled in
+    increasing index order, which fixes the precondition choice among ties (the planner's LM-cut relies on
+    it for reproducible search).
+    """
+    h = [INF] * n_facts
+    pending: dict[float, list[int]] = {}
+    for value, f in seeds:
+        if value < h[f]:
+            h[f] = value
+            pending.setdefault(value, []).append(f)
+    levels = sorted(pending)
+    unsat = n_pre[:]
+    pcf = [-1] * len(n_pre)
+    pop, push = heapq.heappop, heapq.heappush
+    while levels:
+        level = pop(levels)
+        queue = [f for f in pending.pop(level) if h[f] == level]  # others were settled lower since
+        if ordered:
+            queue.sort(reverse=True)  # popped from the end: increasing index
+        later, later_bucket = INF, None  # the last level pushed to (unit costs: always the next one)
+        while queue:
+            f = queue.pop()
+            # No early stop at the goal: LM-cut's cut must see every reachable achiever of the goal zone.
+            for ai in prec_of[f]:
+                n = unsat[ai] - 1
+                unsat[ai] = n
+                if n:
+                    continue
+                pcf[ai] = f
+                reach = level + cost[ai]
+                for q in add[ai]:
+                    if reach < h[q]:
+                        h[q] = reach
+                        if reach == later:
+                            later_bucket.append(q)
+                        elif reach == level:  # a zero-cost action: this level grows
+                            if ordered:
+                                bisect.insort(queue, q, key=_descending)
+                            else:
+                                queue.append(q)
+                        else:
+                            later_bucket = pending.get(reach)
+                            if later_bucket is None:
+                                later_bucket = pending[reach] = []
+                                push(levels, reach)
+                            later_bucket.append(q)
+                            later = reach
+    return h, pcf
+
+
+def lmcut(hmax_of: Callable[[Any], Any], goal_value: Callable[[Any], float],
+          cut_of: Callable[[Any, Any], list[int]], cost: Any) -> tuple[float, list[tuple[list[int], float]]]:
+    """LM-cut (Helmert and Domshlak 2009) over any relaxed task: the lower bound and its cuts (each a
+    disjunctive landmark with the cost it took).
+
+    Repeats: h^max under ``cost`` (``hmax_of(cost)``); stop when the goal's value (``goal_value(h)``) is
+    infinite (INF: unsolvable) or 0; else take the cut ``cut_of(h, cost)`` (the positive-cost entries, actions
+    or changes, that enter the goal zone), add its cheapest cost to the bound and take that cost off each.
+    ``cost`` is consumed.
+    """
+    total: float = 0
+    cuts: list[tuple[list[int], float]] = []
+    while True:
+        h = hmax_of(cost)
+        value = goal_value(h)
+        if value == INF:
+            return INF, cuts  # only before the first cut: costs only ever decrease
+        if value == 0:
+            return total, cuts
+        cut = cut_of(h, cost)
+        if not cut:
+            return total, cuts  # guard: cannot happen for a finite positive h
+        m = min(cost[x] for x in cut)
+        total += m
+        for x in cut:
+            cost[x] -= m
+        cuts.append((cut, m))
 
 
 class RelaxedTask:
@@ -66,13 +216,7 @@ class RelaxedTask:
         #: An applicable action adds only facts of h^add at most its cost: the needed facts above this
         #: have no applicable achiever, so helpful actions never look at them.
         self._max_cost = max(self.base_costs)
-        self.prec_of: list[list[int]] = [[] for _ in range(self.n_facts)]
-        self.achievers: list[list[int]] = [[] for _ in range(self.n_facts)]
-        for ai, p in enumerate(pre):
-            for f in p:
-                self.prec_of[f].append(ai)
-            for f in add[ai]:
-                self.achievers[f].append(ai)
+        self.prec_of, self.achievers = index_facts(self.n_facts, pre, add)
         self.negated, self.mentioned = mask_of(negated_ids), mask_of(mentioned_ids)
         self._cost_by_name: dict[str, int] | None = None
 
@@ -89,36 +233,7 @@ class RelaxedTask:
 
     def _hmax(self, true: list[int], cost: list[int]) -> tuple[list[float], list[int]]:
         """h^max of every fact and each reached action's precondition choice (-1 = not reached)."""
-        n_actions = len(self.pre)
-        h = [INF] * self.n_facts
-        unsat = self._n_pre[:]
-        pcf = [-1] * n_actions
-        heap: list[tuple[float, int]] = []
-        for f in true:
-            h[f] = 0
-            heap.append((0, f))
-        heapq.heapify(heap)
-        prec_of, add = self.prec_of, self.add
-        pop, push = heapq.heappop, heapq.heappush
-        while heap:
-            c, f = pop(heap)
-            if c > h[f]:
-                continue
-            # No early stop at the goal: the cut must see every reachable
-            # achiever of the goal zone, or it may not be a landmark.
-            for ai in prec_of[f]:
-                left = unsat[ai] - 1
-                unsat[ai] = left
-                if left:
-                    continue
-                # Facts are settled in order of h: the last precondition is a maximal one.
-                pcf[ai] = f
-                reach = c + cost[ai]
-                for q in add[ai]:
-                    if reach < h[q]:
-                        h[q] = reach
-                        push(heap, (reach, q))
-        return h, pcf
+        return hmax([(0, f) for f in true], self.n_facts, self.prec_of, self.add, self._n_pre, cost, ordered=True)
 
     def lmcut(self, state: int, cuts: list[list[int]] | None = None) -> float:
         """The LM-cut lower bound on the cost of a plan from ``state`` (INF = unsolvable).
@@ -126,56 +241,52 @@ class RelaxedTask:
         ``cuts``, when given, receives each cut: a disjunctive action landmark (every plan from ``state``
         has one of its actions; the artificial goal action never is one, being free).
         """
-        cost = list(self.base_costs)
         true = self._true_facts(state)
-        total = 0
-        achievers, pre = self.achievers, self.pre
-        while True:
+        choice: list[list[int]] = []  # the precondition choice of the last h^max pass
+
+        def hmax_of(cost: list[int]) -> list[float]:
             h, pcf = self._hmax(true, cost)
-            if h[1] == INF:
-                return INF  # only before the first cut: costs only ever decrease
-            if h[1] == 0:
-                return total
-            # Goal zone: facts from which the goal is reached by zero-cost
-            # actions along the precondition choice function.
-            zone = {1}
-            stack = [1]
-            while stack:
-                q = stack.pop()
-                for ai in achievers[q]:
-                    p = pcf[ai]
-                    if p < 0 or cost[ai] != 0 or p in zone:
-                        continue
-                    zone.add(p)
-                    stack.append(p)
-            # The cut: actions of positive cost whose chosen precondition is
-            # reached from the state without entering the zone, and that add a
-            # zone fact (every relaxed plan uses one of them).
-            seen = {f for f in true if f not in zone}
-            stack = list(seen)
-            cut = []
-            prec_of, add = self.prec_of, self.add
-            while stack:
-                f = stack.pop()
-                for ai in prec_of[f]:
-                    if pcf[ai] != f:
-                        continue
-                    for q in add[ai]:
-                        if q in zone:
-                            if cost[ai] > 0:
-                                cut.append(ai)
-                        elif q not in seen:
-                            seen.add(q)
-                            stack.append(q)
-            if not cut:
-                return total  # guard: cannot happen for a finite positive h
-            cut = list(set(cut))
-            if cuts is not None:
-                cuts.append(cut)
-            m = min(cost[ai] for ai in cut)
-            total += m
-            for ai in cut:
-                cost[ai] -= m
+            choice[:] = [pcf]
+            return h
+
+        total, found = lmcut(hmax_of, lambda h: h[1], lambda h, cost: self._cut(true, choice[0], cost),
+                             list(self.base_costs))
+        if cuts is not None:
+            cuts.extend(cut for cut, _ in found)
+        return total
+
+    def _cut(self, true: list[int], pcf: list[int], cost: list[int]) -> list[int]:
+        """The actions of positive cost whose chosen precondition is reached from the state without entering
+        the goal zone, and that add a zone fact (every relaxed plan uses one of them)."""
+        # Goal zone: facts from which the goal is reached by zero-cost actions along the precondition choice.
+        achievers = self.achievers
+        zone = {1}
+        stack = [1]
+        while stack:
+            q = stack.pop()
+            for ai in achievers[q]:
+                p = pcf[ai]
+                if p < 0 or cost[ai] != 0 or p in zone:
+                    continue
+                zone.add(p)
+                stack.append(p)
+        seen = {f for f in true if f not in zone}
+        stack = list(seen)
+        cut = []
+        prec_of, add = self.prec_of, self.add
+        while stack:
+            f = stack.pop()
+            for ai in prec_of[f]:
+                if pcf[ai] != f:
+                    continue
+                for q in add[ai]:
+                    if q in zone:
+                        if cost[ai] > 0:
+                            cut.append(ai)
+                    elif q not in seen:
+                        seen.add(q)
+                        stack.append(q)
+        return list(set(cut))
 
     def relaxed_plan(self, state: int) -> tuple[list[int], set[int]] | None:
         """(relaxed plan as action indices, in order of h^add, the facts it needs that an action applicable

@@ -18,12 +18,14 @@ from __future__ import annotations
 import heapq
 import itertools
 import time
+from collections import defaultdict
 from typing import Callable, Sequence
 
 from guided_lfd.errors import SearchTimeout
 from guided_lfd.planning.task import GroundAction, GroundTask, bits
-from guided_lfd.planning.relaxation import INF, RelaxedTask
+from guided_lfd.planning.relaxation import INF, RelaxedTask, close
 from guided_lfd.planning.relevance import relevance
+from guided_lfd.planning.successors import SuccessorIndex
 
 
 def reachable_actions(actions: Sequence[GroundAction], state: int) -> list[GroundAction]:
@@ -33,32 +35,22 @@ def reachable_actions(actions: Sequence[GroundAction], state: int) -> list[Groun
     an atom true now may be deleted later), so nothing applicable in a state
     reachable from ``state`` is left out.
     """
-    waiting: dict[int, list[int]] = {}
-    missing = [0] * len(actions)
-    ready: list[int] = []
+    n_atoms = max([state.bit_length(), *(act.add.bit_length() for act in actions)])
+    waiting: defaultdict[int, list[int]] = defaultdict(list)  # atom -> the actions it is missing for
+    unsat = [0] * len(actions)
+    free: list[int] = []  # the adds of actions applicable in ``state``
     for ai, act in enumerate(actions):
         need = [i for i in act.pre_pos_ids if not state >> i & 1]
-        missing[ai] = len(need)
+        unsat[ai] = len(need)
         if not need:
-            ready.append(ai)
+            free.extend(act.add_ids)
         for i in need:
-            waiting.setdefault(i, []).append(ai)
-    reached = [False] * len(actions)
-    true: set[int] = set()
-    while ready:
-        ai = ready.pop()
-        if reached[ai]:
-            continue
-        reached[ai] = True
-        for i in actions[ai].add_ids:
-            if i in true or state >> i & 1:
-                continue
-            true.add(i)
-            for other in waiting.pop(i, ()):
-                missing[other] -= 1
-                if not missing[other]:
-                    ready.append(other)
-    return [act for ai, act in enumerate(actions) if reached[ai]]
+            waiting[i].append(ai)
+    reached = bytearray(n_atoms)
+    for i in bits(state):
+        reached[i] = 1
+    close(free, reached, unsat, waiting, [act.add_ids for act in actions])
+    return [act for act, left in zip(actions, unsat) if not left]
 
 
 def relevant_actions(task: GroundTask, actions: Sequence[GroundAction]) -> list[GroundAction]:
@@ -71,33 +63,19 @@ def planning_actions(task: GroundTask, state: int, actions: Sequence[GroundActio
     return relevant_actions(task, reachable_actions(task.actions if actions is None else actions, state))
 
 
-class _Successors:
-    """Applicable actions of a state, through an index on one positive precondition per action."""
-
-    def __init__(self, actions: Sequence[GroundAction]) -> None:
-        # Index each action under its precondition that is a key of the fewest
-        # actions so far: buckets stay small, so a state checks few actions.
-        load: dict[int, int] = {}
-        buckets: dict[int, list[int]] = {}
-        self.always: list[int] = []
-        for ai, act in enumerate(actions):
-            if not act.pre_pos_ids:
-                self.always.append(ai)
-                continue
-            key = min(act.pre_pos_ids, key=lambda i: load.get(i, 0))
-            load[key] = load.get(key, 0) + 1
-            buckets.setdefault(key, []).append(ai)
-        self.keys = sorted(buckets)
-        self.mask = sum(1 << k for k in self.keys)
-        self.buckets = buckets
-
-    def candidates(self, state: int) -> list[int]:
-        """Actions whose indexed precondition holds in ``state`` (the others cannot apply)."""
-        out = list(self.always)
-        buckets = self.buckets
-        for k in bits(state & self.mask):
-            out.extend(buckets[k])
-        return out
+def _balanced_index(actions: Sequence[GroundAction]) -> SuccessorIndex[int]:
+    """Each action's index under its precondition that keys the fewest actions so far: buckets stay small, so a
+    state checks few actions."""
+    load: dict[int, int] = {}
+    entries: list[tuple[int | None, int]] = []
+    for ai, act in enumerate(actions):
+        if not act.pre_pos_ids:
+            entries.append((None, ai))
+            continue
+        key = min(act.pre_pos_ids, key=lambda i: load.get(i, 0))
+        load[key] = load.get(key, 0) + 1
+        entries.append((key, ai))
+    return SuccessorIndex(entries)
 
 
 class SearchStopped(Exception):
@@ -131,7 +109,7 @@ def astar(
     pre_neg = [a.pre_neg for a in actions]
     add = [a.add for a in actions]
     keep = [~(a.delete & ~a.add) for a in actions]  # adds win over deletes
-    successors = _Successors(actions)
+    successors = _balanced_index(actions)
     h_of: dict[int, float] = {init: lmcut(init)}
     if h_of[init] == INF:
         return None
@@ -153,22 +131,24 @@ def astar(
             raise SearchTimeout("planner exceeded its time limit")
         if stop is not None and not expanded % 16 and stop():
             raise SearchStopped()
-        for ai in successors.candidates(state):
-            pp = pre_pos[ai]
-            if state & pp != pp or state & pre_neg[ai]:
-                continue
-            nxt = (state & keep[ai]) | add[ai] if successor is None else successor(actions[ai], state)
-            ng = g + cost[ai]
-            if ng >= g_of.get(nxt, INF):
-                continue
-            g_of[nxt] = ng
-            parent[nxt] = (state, ai)
-            h = h_of.get(nxt)
-            if h is None:
-                h = h_of[nxt] = lmcut(nxt)
-            if h == INF:
-                continue
-            push(heap, (ng + h, h, next(tie), ng, nxt))
+        for bucket in successors.candidates(state):
+            for ai in bucket:
+                pp = pre_pos[ai]
+                if state & pp != pp or state & pre_neg[ai]:
+                    continue
+                # GroundAction.apply on the masks above (adds win over deletes); an ADL task's own successor.
+                nxt = (state & keep[ai]) | add[ai] if successor is None else successor(actions[ai], state)
+                ng = g + cost[ai]
+                if ng >= g_of.get(nxt, INF):
+                    continue
+                g_of[nxt] = ng
+                parent[nxt] = (state, ai)
+                h = h_of.get(nxt)
+                if h is None:
+                    h = h_of[nxt] = lmcut(nxt)
+                if h == INF:
+                    continue
+                push(heap, (ng + h, h, next(tie), ng, nxt))
     return None
 
 

@@ -11,7 +11,7 @@ from dataclasses import dataclass, field
 
 from guided_lfd.errors import InputFileError, Location, PlanFileError
 from guided_lfd.pddl.formula import Formula
-from guided_lfd.pddl.model import EQUALITY, Atom, Domain, Literal, MissingCostError, Problem, action_cost, objects_by_type
+from guided_lfd.pddl.model import Atom, Domain, Literal, MissingCostError, Problem, action_cost, objects_by_type
 from guided_lfd.io import read_text
 from guided_lfd.planning.task import GroundAction
 
@@ -143,7 +143,7 @@ def validate_plan(domain: Domain, state: frozenset[Atom] | set[Atom], goal: tupl
         binding = {v: a for (v, _), a in zip(schema.params, step.args)}
         if adl is None:
             failed: list[Formula] = [lit for lit in (l.substitute(binding) for l in schema.precondition)
-                                     if not holds(lit, current)]
+                                     if not lit.holds(current)]
         else:
             world = adl.world(current)
             failed = adl.failed(schema, binding, world)
@@ -163,7 +163,7 @@ def validate_plan(domain: Domain, state: frozenset[Atom] | set[Atom], goal: tupl
             adds, dels = adl.effects(schema, binding, world)
         current = (current - dels) | adds
     if adl is None:
-        unsatisfied: list[Formula] = [lit for lit in goal if not holds(lit, current)]
+        unsatisfied: list[Formula] = [lit for lit in goal if not lit.holds(current)]
     else:
         unsatisfied = adl.unsatisfied(goal, goal_condition, adl.world(current))
     return ValidationReport(reports, unsatisfied, frozenset(current), None if problem is None else total)
@@ -220,15 +220,6 @@ def validated(domain: Domain, problem: Problem, steps: list[PlanStep], what: str
     if not report.valid:
         raise RuntimeError(f"internal check failed: {what} does not validate")
     return report
-
-
-def holds(lit: Literal, state: set[Atom] | frozenset[Atom]) -> bool:
-    """Whether the literal (equality included) is true in ``state``."""
-    if lit.atom.predicate == EQUALITY:
-        value = lit.atom.args[0] == lit.atom.args[1]
-    else:
-        value = lit.atom in state
-    return value == lit.positive
 
 
 def format_plan(steps: list[str], cost: int | None = None, kind: str = "unit cost") -> str:

@@ -11,6 +11,8 @@ from guided_lfd.excuse.change import Change, describe_change, excuse_state
 from guided_lfd.excuse.engine import ExcuseOptions, find_excuses
 from guided_lfd.pddl.model import Atom, Domain, Problem
 from guided_lfd.planning.validation import PlanStep
+from guided_lfd.planning.search import reachable_actions
+from guided_lfd.planning.task import GroundTask
 from guided_lfd.teach.session import Demonstrator, Round
 
 __all__ = ["keep_facts", "robot_vocabulary", "excuse_request", "new_skill_request", "no_excuse_reason",
@@ -205,18 +207,14 @@ def _what_it_lacks(taught: Domain, problem: Problem, learned: list[str], options
     return None
 
 
-def _relaxed_reach(task) -> tuple[int, int]:
+def _relaxed_reach(task: GroundTask) -> tuple[int, int]:
     """(atoms some state reachable from ``task``'s initial state may hold, atoms some action there may delete),
     ignoring deletes and negative preconditions: an atom outside the first is never true (a proof)."""
-    reached, deletable, pending = task.init, 0, list(task.actions)
-    while True:
-        ready = [act for act in pending if not act.pre_pos & ~reached]
-        if not ready:
-            return reached, deletable
-        for act in ready:
-            reached |= act.add
-            deletable |= act.delete
-        pending = [act for act in pending if act.pre_pos & ~reached]
+    reached, deletable = task.init, 0
+    for act in reachable_actions(task.actions, task.init):
+        reached |= act.add
+        deletable |= act.delete
+    return reached, deletable
 
 
 def first_unreachable(domain: Domain, task: Problem, changes: list[Change]) -> Change | None:
