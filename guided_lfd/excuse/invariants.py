@@ -20,8 +20,6 @@ Each lifted invariant is instantiated over all objects into ground groups:
 
 from __future__ import annotations
 
-import contextlib
-import io
 import time
 from dataclasses import replace
 
@@ -30,7 +28,7 @@ from guided_lfd.excuse.space import MutexGroup
 from guided_lfd.planning.grounding import ground
 from guided_lfd.planning.task import GroundTask, bits
 from guided_lfd.pddl.model import TOTAL_COST, Atom, Domain, Literal, Predicate, Problem
-from guided_lfd.pddl.writer import domain_to_pddl, problem_to_pddl
+from guided_lfd.pddl.translator import find_invariants, quiet, translator_task
 
 
 #: A 0-ary predicate only used as the goal handed to the translator, which
@@ -56,33 +54,18 @@ def with_reversed_actions(domain: Domain) -> Domain:
 def lifted_invariants(domain: Domain, problem: Problem, max_time: float | None = None, reverse: bool = True) -> list:
     """Fast Downward's lifted invariants of ``domain`` (with reversed actions, unless ``reverse`` is False:
     then they hold in every state the actions reach from a state where they hold, no more)."""
-    from fast_downward.translate import invariant_finder, normalize, options
-    from fast_downward.translate.pddl_parser import lisp_parser, parsing_functions
-
     augmented = with_reversed_actions(domain) if reverse else domain
     # The translator refuses an object an action names without declaring it:
     # implicit constants are declared, with the problem's types, for it.
     implicit = {c: problem.objects.get(c, "object") for c in domain.implicit_constants}
     augmented = replace(augmented, predicates={**augmented.predicates, _DUMMY_GOAL: Predicate(_DUMMY_GOAL)},
                         constants={**augmented.constants, **implicit}, implicit_constants=())
-    dom_text = domain_to_pddl(augmented)
     objects = {o: t for o, t in _objects_of_types(domain, problem).items() if o not in augmented.constants}
     prob = replace(problem, domain_name=domain.name, init=frozenset(), objects=objects,
                    goal=(Literal(Atom(_DUMMY_GOAL)),))
-    prob_text = problem_to_pddl(prob)
-    if options.options is None:
-        options.set_options(["domain.pddl", "problem.pddl"])
-    options.options.invariant_generation_max_time = max(1, int(max_time)) if max_time else 300
-    sink = io.StringIO()
-    # The translator reports progress on stdout, which carries our data.
     try:
-        with contextlib.redirect_stdout(sink), contextlib.redirect_stderr(sink):
-            task = parsing_functions.parse_task(
-                lisp_parser.parse_nested_list(dom_text.splitlines(keepends=True)),
-                lisp_parser.parse_nested_list(prob_text.splitlines(keepends=True)),
-            )
-            normalize.normalize(task)
-            found = list(invariant_finder.find_invariants(task, None))
+        with quiet():
+            found = find_invariants(translator_task(augmented, prob), max(1, int(max_time)) if max_time else 300)
     except (MemoryError, SearchTimeout):
         raise  # a resource or time limit, not a property of the domain
     except (Exception, SystemExit) as exc:  # the translator signals errors with SystemExit too

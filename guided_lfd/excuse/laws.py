@@ -19,12 +19,11 @@ excuse state:
 
 from __future__ import annotations
 
-import contextlib
-import io
 from collections.abc import Iterable
 from dataclasses import dataclass, replace
 
 from guided_lfd.pddl.model import EQUALITY, ActionSchema, Atom, Domain, Literal, Predicate, Problem, objects_by_type
+from guided_lfd.pddl.translator import find_invariants, parse_text, quiet
 from guided_lfd.pddl.writer import domain_to_pddl
 
 __all__ = ["WorldLaw", "WorldLaws", "derive_laws"]
@@ -250,9 +249,6 @@ def _case_keeps_count(action: ActionSchema, law: WorldLaw, same: dict[str, str])
 
 def _synthesised(source: Domain, max_time: float) -> list[tuple[tuple[str, tuple[int, ...]], ...]]:
     """Fast Downward's lifted invariants of ``source`` with each action's reverse, as plain parts."""
-    from fast_downward.translate import invariant_finder, normalize, options
-    from fast_downward.translate.pddl_parser import lisp_parser, parsing_functions
-
     actions = list(source.actions)
     names = {a.name for a in actions}
     for number, action in enumerate(source.actions):
@@ -262,15 +258,9 @@ def _synthesised(source: Domain, max_time: float) -> list[tuple[tuple[str, tuple
     written = domain_to_pddl(replace(source, actions=actions, constants=constants, implicit_constants=(),
                                      predicates={**source.predicates, goal.name: goal}))
     task_text = f"(define (problem check) (:domain {source.name}) (:init) (:goal ({_GOAL_PREDICATE})))"
-    if options.options is None:
-        options.set_options(["domain.pddl", "problem.pddl"])
-    options.options.invariant_generation_max_time = max(1, int(max_time))
     try:
-        with contextlib.redirect_stdout(io.StringIO()), contextlib.redirect_stderr(io.StringIO()):
-            task = parsing_functions.parse_task(lisp_parser.parse_nested_list(written.splitlines(keepends=True)),
-                                                lisp_parser.parse_nested_list([task_text]))
-            normalize.normalize(task)
-            found = list(invariant_finder.find_invariants(task, None))
+        with quiet():
+            found = find_invariants(parse_text(written, task_text), max(1, int(max_time)))
     except (Exception, SystemExit) as exc:  # the engine synthesised from the same domain: a bug if it fails here
         raise RuntimeError(f"the checker cannot synthesise invariants of '{source.name}': {exc}") from None
     return sorted(tuple(sorted((part.predicate, tuple(part.args)) for part in inv.parts)) for inv in found)

@@ -24,6 +24,7 @@ from guided_lfd.pddl import derived
 from guided_lfd.pddl.model import (EQUALITY, TOTAL_COST, ActionSchema, Atom, Domain, Literal, Predicate, Problem,
                                    either_type, type_members)
 from guided_lfd.pddl.source import SExpr, SourceMap, Token
+from guided_lfd.pddl.translator import quiet, translator_options
 
 if TYPE_CHECKING:
     from guided_lfd.pddl.formula import Formula
@@ -167,16 +168,13 @@ def _keeping_actions_without_effects():
     """The translator's parser drops an action without effects unless its options say to keep it (and fails
     when no options are set at all); the model keeps every action, as the STRIPS paths do (an operator whose
     body ``learn-domain`` is to learn has none)."""
-    from fast_downward.translate import options
-
-    if options.options is None:
-        options.set_options(["domain.pddl", "problem.pddl"])
-    before = options.options.keep_no_ops
-    options.options.keep_no_ops = True
+    options = translator_options()
+    before = options.keep_no_ops
+    options.keep_no_ops = True
     try:
         yield
     finally:
-        options.options.keep_no_ops = before
+        options.keep_no_ops = before
 
 
 @contextlib.contextmanager
@@ -187,7 +185,7 @@ def _translating(src: SourceMap, warnings: list[str]):
     warning.printed_warnings.clear()  # it prints each message once per process; each file gets its own
     out = io.StringIO()
     try:
-        with contextlib.redirect_stdout(out), contextlib.redirect_stderr(out), _keeping_actions_without_effects():
+        with quiet(out), _keeping_actions_without_effects():
             yield
     except (SearchTimeout, MemoryError, KeyboardInterrupt):
         raise

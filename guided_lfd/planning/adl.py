@@ -15,32 +15,16 @@ actions of cost 0.
 
 from __future__ import annotations
 
-import contextlib
-import io
 import time
 from typing import Any
 
 from guided_lfd.deadline import linger
 from guided_lfd.errors import Location, SearchTimeout, TaskTooLarge
 from guided_lfd.pddl.model import Atom, Domain, Problem
+from guided_lfd.pddl.translator import quiet, translator_options, translator_task
 from guided_lfd.planning.relaxation import RelaxedTask
 from guided_lfd.planning.task import (MAX_GROUND_ACTIONS, AxiomClosure, GroundAction, GroundAxiom, GroundEffect,
                                       GroundTask, ground_atoms, mask_of)
-
-
-def _translator_task(domain: Domain, problem: Problem) -> Any:
-    """The translator's task for the model's domain and problem (written as PDDL and parsed back, as
-    :func:`guided_lfd.excuse.invariants.lifted_invariants` hands tasks to it)."""
-    from dataclasses import replace
-
-    from fast_downward.translate.pddl_parser import lisp_parser, parsing_functions
-
-    from guided_lfd.pddl.writer import domain_to_pddl, problem_to_pddl
-
-    dtext = domain_to_pddl(domain)
-    ptext = problem_to_pddl(replace(problem, domain_name=domain.name))
-    return parsing_functions.parse_task(lisp_parser.parse_nested_list(dtext.splitlines(keepends=True)),
-                                        lisp_parser.parse_nested_list(ptext.splitlines(keepends=True)))
 
 
 def _changeable(task: Any, domain: Domain, problem: Problem, predicates: set[str]) -> None:
@@ -72,20 +56,17 @@ NEVER = "guided-lfd-never"
 
 def _explore(domain: Domain, problem: Problem, changeable: set[str] = frozenset()) -> tuple:  # type: ignore[assignment]
     """Normalise and ground with the translator: (reachable, atoms, actions, goal, axioms, layers)."""
-    from fast_downward.translate import axiom_rules, instantiate, normalize, options
+    from fast_downward.translate import axiom_rules, instantiate, normalize
 
-    if options.options is None:
-        options.set_options(["domain.pddl", "problem.pddl"])
-    quiet = io.StringIO()
-    with contextlib.redirect_stdout(quiet), contextlib.redirect_stderr(quiet):
-        task = _translator_task(domain, problem)
+    with quiet():
+        task = translator_task(domain, problem)
         if changeable:
             _changeable(task, domain, problem, changeable)
         normalize.normalize(task)
         reachable, atoms, actions, goal, axioms, _ = instantiate.explore(task)
         layers: dict = {}
         if reachable and goal is not None:
-            axioms, layers = axiom_rules.handle_axioms(actions, axioms, goal, options.options.layer_strategy)
+            axioms, layers = axiom_rules.handle_axioms(actions, axioms, goal, translator_options().layer_strategy)
     return reachable, atoms, actions, goal, axioms, layers
 
 
