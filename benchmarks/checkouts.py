@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
 """Two checkouts of guided-lfd side by side: whole-run wall times and answers of `plan` and `excuse`.
 
-    git worktree add /tmp/before <rev>
-    python benchmarks/checkouts.py /tmp/before .          # -> benchmarks/checkouts_results/{runs.csv,summary.md}
-    python benchmarks/checkouts.py /tmp/before . --rounds 3 --time-limit 60
+    git worktree add /tmp/reference <rev>
+    python benchmarks/checkouts.py /tmp/reference .          # -> benchmarks/checkouts_results/{runs.csv,summary.md}
+    python benchmarks/checkouts.py /tmp/reference . --rounds 3 --time-limit 60
 
 For a restructure that must not change behaviour or speed.  Each command runs
 as a fresh process of the interpreter running this script, with the checkout's
@@ -105,15 +105,15 @@ def label(checkout: Path) -> str:
 def main() -> None:
     """Run both checkouts on every job, alternating, and write the runs and a summary."""
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("before", type=Path, help="the first checkout (the reference)")
-    parser.add_argument("after", type=Path, help="the second checkout")
+    parser.add_argument("reference", type=Path, help="the checkout to compare against")
+    parser.add_argument("candidate", type=Path, help="the checkout measured against it")
     parser.add_argument("--rounds", type=int, default=3)
     parser.add_argument("--time-limit", type=float, default=60)
     parser.add_argument("--plan-tasks", default="searched", help="domain/taskNN,... or 'searched'")
     parser.add_argument("--only", choices=("plan", "excuse"), help="one command only")
     parser.add_argument("--out", type=Path, default=ROOT / "benchmarks" / "checkouts_results")
     opts = parser.parse_args()
-    checkouts = (opts.before.resolve(), opts.after.resolve())
+    checkouts = (opts.reference.resolve(), opts.candidate.resolve())
     with tempfile.TemporaryDirectory() as robots:
         jobs = []
         if opts.only in (None, "plan"):
@@ -135,8 +135,8 @@ def main() -> None:
     rows = []
     for name, _ in jobs:
         a, b = (statistics.median(times[(name, w)]) for w in (0, 1))
-        rows.append({"job": name, "before_s": round(a, 3), "after_s": round(b, 3), "ratio": round(b / a, 3),
-                     "before": " | ".join(sorted(answers[(name, 0)])), "after": " | ".join(sorted(answers[(name, 1)])),
+        rows.append({"job": name, "reference_s": round(a, 3), "candidate_s": round(b, 3), "ratio": round(b / a, 3),
+                     "reference": " | ".join(sorted(answers[(name, 0)])), "candidate": " | ".join(sorted(answers[(name, 1)])),
                      "same_answer": answers[(name, 0)] == answers[(name, 1)]})
     with (opts.out / "runs.csv").open("w", newline="") as f:
         writer = csv.DictWriter(f, fieldnames=list(rows[0]))
@@ -144,12 +144,12 @@ def main() -> None:
         writer.writerows(rows)
     lines = [f"# {label(checkouts[0])} against {label(checkouts[1])}", "",
              f"{opts.rounds} rounds, medians, time limit {opts.time_limit:g} s, Python {sys.version.split()[0]}", "",
-             "| command | jobs | before (s) | after (s) | after / before | same answers |", "|---|---|---|---|---|---|"]
+             "| command | jobs | reference (s) | candidate (s) | candidate / reference | same answers |", "|---|---|---|---|---|---|"]
     for command in ("plan", "excuse"):
         mine = [row for row in rows if row["job"].startswith(command)]
         if not mine:
             continue
-        a, b = sum(row["before_s"] for row in mine), sum(row["after_s"] for row in mine)
+        a, b = sum(row["reference_s"] for row in mine), sum(row["candidate_s"] for row in mine)
         same = sum(row["same_answer"] for row in mine)
         lines.append(f"| {command} | {len(mine)} | {a:.2f} | {b:.2f} | {b / a:.3f} | {same} of {len(mine)} |")
     (opts.out / "summary.md").write_text("\n".join(lines) + "\n")
