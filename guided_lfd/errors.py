@@ -121,6 +121,14 @@ class GuidedLfdError(Exception):
     exit_code: int = EXIT_INTERNAL
     kind: str = "error"
 
+    def __init_subclass__(cls, exit_code: int | None = None, kind: str | None = None, **rest: object) -> None:
+        """A subclass states its exit code and the word its messages start with in its header."""
+        super().__init_subclass__(**rest)
+        if exit_code is not None:
+            cls.exit_code = exit_code
+        if kind is not None:
+            cls.kind = kind
+
     def __init__(self, message: str, location: Location | None = None) -> None:
         super().__init__(message)
         self.message = message
@@ -135,82 +143,49 @@ class GuidedLfdError(Exception):
         return "".join(c if c.isprintable() else c.encode("unicode_escape").decode("ascii") for c in text)
 
 
-class InputFileError(GuidedLfdError):
+class InputFileError(GuidedLfdError, exit_code=EXIT_INPUT_FILE, kind="input error"):
     """A file is missing, unreadable, empty or not text."""
 
-    exit_code = EXIT_INPUT_FILE
-    kind = "input error"
 
-
-class PddlSyntaxError(GuidedLfdError):
+class PddlSyntaxError(GuidedLfdError, exit_code=EXIT_PDDL_SYNTAX, kind="syntax error"):
     """The text is not well-formed PDDL."""
 
-    exit_code = EXIT_PDDL_SYNTAX
-    kind = "syntax error"
 
-
-class PddlSemanticError(GuidedLfdError):
+class PddlSemanticError(GuidedLfdError, exit_code=EXIT_PDDL_SEMANTIC, kind="semantic error"):
     """Well-formed PDDL that names something undeclared or mistyped."""
 
-    exit_code = EXIT_PDDL_SEMANTIC
-    kind = "semantic error"
 
-
-class UnsupportedFeatureError(GuidedLfdError):
+class UnsupportedFeatureError(GuidedLfdError, exit_code=EXIT_UNSUPPORTED, kind="unsupported"):
     """A requirement or construct outside STRIPS + typing + negation + equality."""
 
-    exit_code = EXIT_UNSUPPORTED
-    kind = "unsupported"
 
-
-class MismatchError(GuidedLfdError):
+class MismatchError(GuidedLfdError, exit_code=EXIT_MISMATCH, kind="mismatch"):
     """A problem that names another domain than the one given."""
-
-    exit_code = EXIT_MISMATCH
-    kind = "mismatch"
 
 
 class MergeError(MismatchError):
     """Domains to merge declare the same name incompatibly."""
 
 
-class PlanFileError(GuidedLfdError):
+class PlanFileError(GuidedLfdError, exit_code=EXIT_PLAN_FILE, kind="plan error"):
     """A plan file that cannot be read as a sequence of ground actions."""
 
-    exit_code = EXIT_PLAN_FILE
-    kind = "plan error"
 
-
-class TraceError(GuidedLfdError):
+class TraceError(GuidedLfdError, exit_code=EXIT_TRACE, kind="trace error"):
     """A demonstration trace or segment file that cannot be used."""
 
-    exit_code = EXIT_TRACE
-    kind = "trace error"
 
-
-class OptionError(GuidedLfdError):
+class OptionError(GuidedLfdError, exit_code=EXIT_BAD_OPTION, kind="option error"):
     """An option value that does not make sense for the given task."""
 
-    exit_code = EXIT_BAD_OPTION
-    kind = "option error"
 
-
-class OutputError(GuidedLfdError):
+class OutputError(GuidedLfdError, exit_code=EXIT_OUTPUT, kind="output error"):
     """An output file that could not be written."""
 
-    exit_code = EXIT_OUTPUT
-    kind = "output error"
 
-
-class SearchTimeout(GuidedLfdError):
+class SearchTimeout(GuidedLfdError, exit_code=EXIT_TIME_LIMIT, kind="time limit"):
     """A search ran out of its time limit."""
 
-    exit_code = EXIT_TIME_LIMIT
-    kind = "time limit"
 
-
-class TaskTooLarge(GuidedLfdError):
+class TaskTooLarge(GuidedLfdError, exit_code=EXIT_TOO_LARGE, kind="too large"):
     """Grounding would exceed the atom or action limit."""
-
-    exit_code = EXIT_TOO_LARGE
-    kind = "too large"
