@@ -12,6 +12,14 @@ are shared:
   hand handles, their other objects becoming parameters.
 * **Preconditions** are the facts about the action's objects true before it
   (:func:`facts_about`), generalised over every observation of the action.
+  A learned action is never more general than shown: every static relation
+  (a fact no step changes) among two or more of its objects that held in all
+  its observations stays a precondition, the other objects it needs
+  becoming parameters (:func:`static_relations`: opening a door from a room
+  keeps ``(connects ?d ?from ?to)``, the door's other room a parameter).  A
+  trajectory's operator has these among its parameters already (its
+  signature), so lifting keeps them; a segment's objects are only those the
+  hand handles, so :mod:`guided_lfd.demonstration.learn` adds them.
 
 For operators with known signatures (trajectories), :func:`learn_operators`
 learns lifted actions as SAM does (Juba, Le and Stern, KR 2021): a lifted
@@ -57,7 +65,7 @@ from itertools import product
 from guided_lfd.demonstration.static_facts import drop_ruled_out_static_guards
 from guided_lfd.pddl.model import ActionSchema, Atom, Domain, Literal
 
-__all__ = ["Observation", "MODELS", "bound_by", "facts_about", "changes", "learn_operators"]
+__all__ = ["Observation", "MODELS", "bound_by", "facts_about", "static_relations", "changes", "learn_operators"]
 
 #: The models :func:`learn_operators` can learn, with what each guarantees.
 MODELS: dict[str, str] = {
@@ -89,6 +97,15 @@ def bound_by(atom: Atom, objects: set[str] | frozenset[str], any_argument: bool 
 def facts_about(state: Iterable[Atom], objects: set[str] | frozenset[str]) -> set[Atom]:
     """The atoms of ``state`` all of whose arguments are ``objects`` (atoms without arguments included)."""
     return {a for a in state if bound_by(a, objects)}
+
+
+def static_relations(state: Iterable[Atom], objects: set[str] | frozenset[str], static: set[str]) -> set[Atom]:
+    """The atoms of ``state`` over ``static`` predicates that relate two or more of ``objects`` and need others
+    too (``(connects door hall kitchen)`` for the door and the hall): what a learned action keeps beside its
+    facts about ``objects``, the other objects becoming its parameters (see the module).  A relation of one
+    of ``objects`` alone (the cupboard's other, closed door) says nothing of what the action needs."""
+    return {a for a in state if a.predicate in static and len(set(a.args) & objects) >= 2
+            and not set(a.args) <= objects}
 
 
 def changes(before: frozenset[Atom] | set[Atom], after: frozenset[Atom] | set[Atom],

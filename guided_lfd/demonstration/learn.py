@@ -16,7 +16,9 @@ holds) is a demonstrated action:
   plus the hand's state (``in_hand``/``hand_free``, or the robot's own hand
   facts, see :mod:`guided_lfd.demonstration.vocabulary`), and fluents about
   objects a static relation ties to those (the cupboard's open door, by
-  ``door_of``) where a fluent about them that varies holds;
+  ``door_of``) where a fluent about them that varies holds, and every static
+  relation among two or more of those objects, the other objects it needs
+  becoming parameters (the door's two rooms: never more general than shown);
 * effects are the changes over the segment to fluents of the objects the
   hand handles, and to the hand's state; what the skill makes true must have
   been false before it (a negative precondition, as action-model learners do);
@@ -41,7 +43,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, replace
 
-from guided_lfd.demonstration.action_model import changes, facts_about
+from guided_lfd.demonstration.action_model import changes, facts_about, static_relations
 from guided_lfd.demonstration.generalise import generalise
 from guided_lfd.demonstration.implied import drop_implied_preconditions
 from guided_lfd.demonstration.mutex import drop_implied_negative_preconditions, proven_invariants
@@ -206,9 +208,12 @@ def ground_actions(document: dict, source: str = "segments", static: set[str] | 
         # of whose arguments it involves (so opening a drawer does not depend on
         # which plate happens to lie in it).
         pre = {Literal(a) for a in facts_about(before, interest)} | {Literal(a) for a in hand_before}
+        # Never more general than shown: static relations of those objects to others (the door's two rooms).
+        relations = static_relations(before, interest, static)
+        pre |= {Literal(a) for a in relations}
         # What the skill makes true was false before it (the drawer was closed).
         pre |= {Literal(a, False) for a in env_add}
-        others = sorted(interest - set(roles))
+        others = sorted(interest - set(roles)) + sorted({x for a in relations for x in a.args} - interest)
         objects = tuple(dict.fromkeys(roles + others))
         name = "_".join([seg["activity"].lower(), *(types.get(o, "object") for o in roles)])
         out.append(DemonstratedAction(name, objects, frozenset(pre), frozenset(add), frozenset(delete),
