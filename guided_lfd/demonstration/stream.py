@@ -19,7 +19,8 @@ the rows it needs from before it, in a *window*:
   that far behind, so a one-handed recording's segments come out a minute late;
 * each hand keeps its last frames before a cut (``2 * MARGIN_S``), so what a
   hand does after a gap in its frames is read as in the file (a segment goes
-  on across a gap);
+  on across a gap); the world's state is carried up to the earliest frame
+  kept, so a change among those frames stays the segment's that holds it;
 * a segment open longer than :data:`MAX_WINDOW_S` (a hand idle for an hour)
   does not hold its frames: the window starts at most that long before the
   newest frame, and the segment is carried across the cut: its start, the
@@ -232,9 +233,16 @@ class _Window:
             keep |= (hands == hand) & (times >= tail)
         self.rows = [r for r, k in zip(self.rows, keep) if k]
         self.lines = [n for n, k in zip(self.lines, keep) if k]
-        done = bisect.bisect_left(self.events, start, lo=self.applied, key=lambda e: e[0])
+        # The world is carried up to the earliest frame kept, not to ``start``: a change among a hand's kept
+        # frames may still be an open segment's (one a hand's frames hold whole is not carried).
+        done = bisect.bisect_left(self.events, self.world_start, lo=self.applied, key=lambda e: e[0])
         self.initial = apply_changes(self.initial, self.events[self.applied:done])
         self.applied, self.start = done, start
+
+    @property
+    def world_start(self) -> float:
+        """The time of the earliest frame the window may hold: where its initial state stands."""
+        return min(self.hand_start.values())
 
 
 def _carried(carry: Segment, seg: Segment) -> Segment:
@@ -321,7 +329,7 @@ class _Stream:
         # Changes after the newest frame are not yet anyone's (an open segment would claim them all), and a
         # stream cut short by a bad row ends there.  After a cut through an open segment, the changes within
         # the margin after the cut are the carried part's (the segments there are the cut's artefacts).
-        edge = window.start + MARGIN_S if self.carry else window.start
+        edge = window.start + MARGIN_S if self.carry else window.world_start
         first = bisect.bisect_left(window.events, edge, lo=window.applied, key=lambda e: e[0])
         until = bisect.bisect_right(window.events, self.latest + EFFECT_DELAY_S, lo=first, key=lambda e: e[0])
         demo = Demonstration(frame, objects, apply_changes(window.initial, window.events[window.applied:first]),
