@@ -19,11 +19,13 @@ Every plan behind a number is validated with the lifted validator.
 
 from __future__ import annotations
 
-import itertools
 from collections import Counter, deque
 from dataclasses import dataclass, field, replace
 from typing import Any
 
+# known_skill and MAX_CULPRIT_SIZE are re-exported: the measures' one implementation is shared with teach's check.
+from guided_lfd.demonstration.judgement import (MAX_CULPRIT_SIZE, known_skill, misdirected_culprit,  # noqa: F401
+                                                state_after_steps)
 from guided_lfd.demonstration.learn import DemonstratedAction
 from guided_lfd.excuse.change import Change, excuse_state
 from guided_lfd.excuse.prepare import prepare
@@ -38,8 +40,6 @@ from guided_lfd.planning.validation import PlanStep, validate_plan
 DEFAULT_EXPLORATION_BOUND = 20_000
 #: How many distinct kinds of misdirected state a report lists.
 MAX_MISDIRECTION_EXAMPLES = 5
-#: Largest set of differences tried when explaining a misdirected state.
-MAX_CULPRIT_SIZE = 3
 
 
 def excuse_goal(changes: list[Change]) -> tuple[Literal, ...]:
@@ -205,9 +205,10 @@ def misdirected_guidance(human: Domain, robot: Domain, problem: Problem, excuse:
         if holds(goal, state):
             # A state where the goal holds too counts (the robot needs no plan).
             excuse_states += 1
-            if not holds(problem.goal, state) and not reach(state):
+            culprit = misdirected_culprit(state, goal, problem.goal, intended, reach)
+            if culprit is not None:
                 misdirected += 1
-                cause = tuple(str(c) for c in _culprit(state, intended, reach))
+                cause = tuple(str(c) for c in culprit)
                 kinds[cause] += 1
                 if cause not in first_seen:
                     first_seen[cause] = explored
@@ -224,48 +225,7 @@ def misdirected_guidance(human: Domain, robot: Domain, problem: Problem, excuse:
                         examples[:MAX_MISDIRECTION_EXAMPLES])
 
 
-def _culprit(state: frozenset[Atom], intended: frozenset[Atom], reach: RobotReachability) -> list[Change]:
-    """The fewest differences from the intended excuse state that, undone, let the robot succeed.
-
-    E.g. ``+(blocking chair table) -(clear table)``: the chair now blocks the
-    plate.  Subsets are tried by size up to :data:`MAX_CULPRIT_SIZE`; beyond it
-    the whole difference is reported.
-    """
-    diff = sorted([Change(a, True) for a in state - intended] + [Change(a, False) for a in intended - state], key=str)
-    for size in range(1, min(len(diff), MAX_CULPRIT_SIZE) + 1):
-        for subset in itertools.combinations(diff, size):
-            if reach(excuse_state(state, [Change(c.atom, not c.added) for c in subset])):
-                return list(subset)
-    return diff
-
-
 # -- fraction of useful demonstration ----------------------------------------------
-
-def known_skill(step: DemonstratedAction, robot: Domain, types: dict[str, str]) -> str | None:
-    """The robot action making exactly the step's changes (M(a) in A_R), as ``(name args)``, or None.
-
-    A demonstrated step is a skill the robot already has when one of its
-    actions, bound to the step's objects, adds and deletes exactly what the
-    step added and deleted.  Preconditions are not compared: a learned action
-    carries extra nodes-of-interest preconditions and is still the same skill.
-    """
-    subtypes = robot.subtypes()
-    objects = sorted({o for a in (*step.add, *step.delete) for o in a.args})
-    for schema in robot.actions:
-        if len(schema.add) != len(step.add) or len(schema.delete) != len(step.delete):
-            continue
-        in_effects = [v for v, _ in schema.params if any(v in a.args for a in (*schema.add, *schema.delete))]
-        ptype = dict(schema.params)
-        for combo in itertools.product(objects, repeat=len(in_effects)):
-            if any(types.get(o, "object") not in subtypes.get(ptype[v], {ptype[v]}) for v, o in zip(in_effects, combo)):
-                continue
-            binding = dict(zip(in_effects, combo))
-            if ({a.substitute(binding) for a in schema.add} == set(step.add)
-                    and {a.substitute(binding) for a in schema.delete} == set(step.delete)):
-                args = [binding.get(v, v) for v, _ in schema.params]
-                return "(" + " ".join([schema.name, *args]) + ")"
-    return None
-
 
 @dataclass
 class Usefulness:
@@ -346,6 +306,9 @@ class Evaluation:
     demonstrations: list[tuple[DemonstrationSteps, Usefulness]] = field(default_factory=list)
     #: Whether the merged domain solves the task (None without a merged domain).
     solvability: Solvability | None = None
+    #: Per demonstration, the state it left judged as teach judges it: the misdirected guidance's culprit there
+    #: (None when the robot reaches its goal from it, or the excuse does not hold there), and whether it holds.
+    left: list[tuple[bool, list[Change] | None]] = field(default_factory=list)
 
     def to_dict(self) -> dict[str, Any]:
         """The measures as the ``guided-lfd/evaluation`` document has them (after its input keys)."""
@@ -366,8 +329,11 @@ class Evaluation:
             "misdirected_guidance": self.misdirection.as_dict(),
             "demonstrations": [
                 {"source": demo.source, "demonstrated_actions": useful.demonstrated, "useful_actions": useful.useful,
-                 "useful_fraction": round_fraction(useful.fraction), "steps": useful.steps}
-                for demo, useful in self.demonstrations
+                 "useful_fraction": round_fraction(useful.fraction), "steps": useful.steps,
+                 **({} if k >= len(self.left) else {
+                     "excuse_reached": self.left[k][0],
+                     "misdirected": None if self.left[k][1] is None else [str(c) for c in self.left[k][1]]})}
+                for k, (demo, useful) in enumerate(self.demonstrations)
             ],
             "solvability_after_demonstration": None if self.solvability is None else {
                 "solvable": self.solvability.solvable, "plan": self.solvability.plan,
@@ -398,8 +364,19 @@ def evaluate(robot: Domain, problem: Problem, human: Domain, excuse: list[Change
     sizes = predicted_sizes(human, problem, excuse, reach, nonminimal)
     misdirection = misdirected_guidance(human, robot, problem, excuse, bound, reach)
     useful = [(demo, usefulness(demo.steps, robot, demo.types)) for demo in demonstrations]
+    left = [demonstration_left(demo, problem, excuse, reach) for demo in demonstrations]
     solvability = solvability_after(merged, problem, robot) if merged is not None else None
-    return Evaluation(list(excuse), sizes, misdirection, useful, solvability)
+    return Evaluation(list(excuse), sizes, misdirection, useful, solvability, left)
+
+
+def demonstration_left(demo: DemonstrationSteps, problem: Problem, excuse: list[Change],
+                       reach: RobotReachability) -> tuple[bool, list[Change] | None]:
+    """(whether the excuse holds in the state ``demo`` leaves from the task's initial state, the misdirected
+    guidance's culprit there or None): what ``teach`` checks on each demonstration (the same
+    :func:`~guided_lfd.demonstration.judgement.misdirected_culprit`)."""
+    end = state_after_steps(problem.init, demo.steps)
+    goal = excuse_goal(excuse)
+    return holds(goal, end), misdirected_culprit(end, goal, problem.goal, excuse_state(problem.init, excuse), reach)
 
 
 def report_rows(report: dict[str, Any]) -> list[tuple[str, str, str]]:
@@ -430,6 +407,11 @@ def report_rows(report: dict[str, Any]) -> list[tuple[str, str, str]]:
         rows.append(("useful_fraction", _fmt(demo["useful_fraction"]),
                      f"{demo['useful_actions']} of {demo['demonstrated_actions']} demonstrated actions new "
                      f"({demo['source']})"))
+        if demo.get("excuse_reached"):
+            rows.append(("demonstration_misdirected", "yes" if demo["misdirected"] else "no",
+                         (" ".join(demo["misdirected"]) + ": the robot cannot reach its goal from the state it left"
+                          if demo["misdirected"] else "the robot reaches its goal from the state it left")
+                         + f" ({demo['source']})"))
     solv = report["solvability_after_demonstration"]
     if solv is not None:
         rows.append(("solvable_after_demonstration", "yes" if solv["solvable"] else "no",
