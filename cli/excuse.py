@@ -21,7 +21,8 @@ from guided_lfd.excuse.space import Semantics
 from guided_lfd.excuse.strategies import DEFAULT_STRATEGY, STRATEGIES
 from guided_lfd.excuse.verify import MAX_VERIFIED_SETS
 from guided_lfd.io import write_text
-from guided_lfd.pddl.fit import check_model_fits
+from guided_lfd.pddl.fit import check_human_model, check_model_fits
+from guided_lfd.pddl.model import Domain
 from guided_lfd.pddl.reader import parse_domain, parse_task
 from guided_lfd.pddl.writer import problem_to_pddl
 
@@ -152,6 +153,7 @@ def excuse(
         human_domain = parse_domain(human) if human else None
         if human_domain is not None:
             check_model_fits(dom, human_domain, "--human")
+            check_human_model(human_domain, prob)
             if options.fixed_from is None:  # what the human can change decides what the excuse may change
                 options.fixed_from = human_domain
     ui.reading_warnings(dom, options.invariants_from, options.fixed_from)
@@ -179,11 +181,33 @@ def excuse(
         write_text(svg, report.to_svg())
     if dot:
         write_text(dot, report.to_dot())
-    stats = report.statistics
-    ui.info(f"[dim]{report.strategy} search: {stats.candidates or 0} candidate(s), "
-            f"{stats.planner_calls or 0} reachability check(s), {stats.time_s or 0:.2f} s[/]")
+    _diagnostics(report, options.fixed_from)
     if code:
         raise typer.Exit(code)
+
+
+def _diagnostics(report: ExcuseReport, model: Domain | None) -> None:
+    """On stderr: what the excuse held fixed and why, and the search's effort."""
+    stats = report.statistics
+    held = held_line(stats.structure_held or {}, stats.fixed_predicates or [], report.spellings, model)
+    if held:
+        ui.info_plain(held)
+    ui.info(f"[dim]{report.strategy} search: {stats.candidates or 0} candidate(s), "
+            f"{stats.planner_calls or 0} reachability check(s), {stats.time_s or 0:.2f} s[/]")
+
+
+def held_line(structure: dict[str, str], fixed: list[str], spellings: dict[str, str], model: Domain | None) -> str:
+    """One line saying what the excuse held fixed and why, and the switch that frees it (empty: nothing)."""
+    parts = [f"{spellings.get(name, name)} ({why})" for name, why in structure.items()]
+    if parts:
+        return (f"held fixed as the world's structure: {'; '.join(parts)}; --change-structure lets the excuse "
+                "change them")
+    others = [spellings.get(name, name) for name in fixed]
+    if others and model is not None:
+        them = "it" if len(others) == 1 else "them"
+        return (f"held fixed: {', '.join(others)} (no action of the model {model.name} changes {them}); without "
+                f"--fixed-from or --human the excuse may change {them}")
+    return ""
 
 
 def _prefer(report: ExcuseReport, human, dom, prob, keep_all: bool, deadline: float | None) -> None:

@@ -10,10 +10,10 @@ something else there, so it is refused (exit 34) before any work.
 
 from __future__ import annotations
 
-from guided_lfd.errors import MismatchError
+from guided_lfd.errors import Location, MismatchError
 from guided_lfd.pddl.model import Domain, Problem, type_ancestors
 
-__all__ = ["check_model_fits"]
+__all__ = ["check_model_fits", "check_human_model"]
 
 
 def _related(a: str, b: str, *domains: Domain) -> bool:
@@ -54,6 +54,31 @@ def check_model_fits(robot: Domain, model: Domain, option: str) -> None:
                 raise MismatchError(f"{option}: argument {k} of predicate {spelled} is of type {theirs} here and of "
                                     f"type {ours} in the robot's domain {robot.path}; expected the same or a related "
                                     "type", where)
+
+
+def check_human_model(human: Domain, problem: Problem) -> None:
+    """Refuse (exit 34) a human model written for another domain: one lacking a predicate or an object type
+    the task uses (its plans could not say anything about this world), before any round or search."""
+
+    def refuse(what: str) -> None:
+        raise MismatchError(f"the human model (domain '{human.name}') is for another domain than the task's "
+                            f"('{problem.domain_name}'): {what} (expected a model of the task's world)",
+                            Location(human.path))
+
+    used = {a for a in problem.init} | {lit.atom for lit in problem.goal}
+    for atom in sorted(used):
+        if atom.predicate == "=":
+            continue
+        declared = human.predicates.get(atom.predicate)
+        if declared is None:
+            refuse(f"it has no predicate {atom.predicate}, which the task uses in {atom}")
+        elif declared.arity != len(atom.args):
+            refuse(f"its predicate {atom.predicate} takes {declared.arity} argument(s), the task's {atom} "
+                   f"{len(atom.args)}")
+    types = set(human.types) | {"object"}
+    for obj, kind in sorted(problem.objects.items()):
+        if kind not in types:
+            refuse(f"it has no type {kind}, the type of the task's object {obj}")
 
 
 def refuse_adl(command: str, problem: Problem | None, *domains: Domain | None) -> None:

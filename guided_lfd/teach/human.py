@@ -8,6 +8,7 @@ from pathlib import Path
 
 from guided_lfd.excuse.change import Change, describe_change
 from guided_lfd.io import write_text
+from guided_lfd.pddl.fit import check_human_model
 from guided_lfd.pddl.model import Atom, Domain, Problem
 from guided_lfd.planning.validation import PlanStep
 from guided_lfd.teach.request import first_unreachable
@@ -137,29 +138,4 @@ class GivenTraces:
         trace = self.traces.pop(0)
         return trace, Path(default_state_path(str(trace)))
 
-
-def check_human_model(human: Domain, problem: Problem) -> None:
-    """Refuse (exit 34) a human model written for another domain: one lacking a predicate or an object type
-    the task uses (its plans could not say anything about this world), before any round."""
-    from guided_lfd.errors import Location, MismatchError
-
-    def refuse(what: str) -> None:
-        raise MismatchError(f"the human model (domain '{human.name}') is for another domain than the task's "
-                            f"('{problem.domain_name}'): {what} (expected a model of the task's world)",
-                            Location(human.path))
-
-    used = {a for a in problem.init} | {lit.atom for lit in problem.goal}
-    for atom in sorted(used):
-        if atom.predicate == "=":
-            continue
-        declared = human.predicates.get(atom.predicate)
-        if declared is None:
-            refuse(f"it has no predicate {atom.predicate}, which the task uses in {atom}")
-        elif declared.arity != len(atom.args):
-            refuse(f"its predicate {atom.predicate} takes {declared.arity} argument(s), the task's {atom} "
-                   f"{len(atom.args)}")
-    types = set(human.types) | {"object"}
-    for obj, kind in sorted(problem.objects.items()):
-        if kind not in types:
-            refuse(f"it has no type {kind}, the type of the task's object {obj}")
 

@@ -1,0 +1,55 @@
+"""A courier robot in its own vocabulary (doors as the STRIPS pair door-open / door-closed, the robot lacks
+open-door): what the excuse holds fixed is said on stderr, and a human model of another world is refused."""
+
+from __future__ import annotations
+
+import json
+
+from conftest import DATA
+
+COURIER = DATA / "courier"
+ROBOT, HUMAN, PROBLEM = COURIER / "robot.pddl", COURIER / "human.pddl", COURIER / "problem.pddl"
+
+
+def excuse(runner, app, *args):
+    return runner.invoke(app, ["excuse", str(ROBOT), str(PROBLEM), *map(str, args)])
+
+
+def changes(result) -> list[str]:
+    return [c["change"] for c in json.loads(result.stdout)["excuse"]["changes"]]
+
+
+def test_a_human_model_of_another_world_is_refused_naming_what_it_lacks(runner, app):
+    result = excuse(runner, app, "--human", DATA.parent.parent / "data" / "domains" / "kitchen-1" / "human.pddl")
+    assert result.exit_code == 34
+    assert "human.pddl: mismatch: the human model (domain 'kitchen') is for another domain than the task's " \
+           "('courier'): it has no predicate at-obj, which the task uses in (at-obj mail corridor)" in result.stderr
+    assert result.stdout == ""
+
+
+def test_the_excuse_says_in_one_line_what_it_held_fixed_and_the_switch_that_frees_it(runner, app):
+    result = excuse(runner, app, "--json")
+    assert result.exit_code == 0
+    held = [line for line in result.stderr.splitlines() if line.startswith("held fixed")]
+    assert held == ["held fixed as the world's structure: connects (a fixed graph over room objects); door-closed "
+                    "(a kind: classifies door objects with door-open); door-open (a kind: classifies door objects "
+                    "with door-closed); --change-structure lets the excuse change them"]
+
+
+def test_with_the_human_model_what_it_cannot_change_is_said_held(runner, app):
+    result = excuse(runner, app, "--human", HUMAN, "--json")
+    assert result.exit_code == 0
+    assert changes(result) == ["+(door-open office-door)"]
+    assert "held fixed: connects (no action of the model courier changes it); without --fixed-from or --human " \
+           "the excuse may change it" in result.stderr.splitlines()
+
+
+def test_the_human_models_invariants_open_the_door_and_no_longer_close_it(runner, app):
+    result = excuse(runner, app, "--human", HUMAN, "--invariants-from", HUMAN, "--json")
+    assert result.exit_code == 0
+    assert changes(result) == ["-(door-closed office-door)", "+(door-open office-door)"]
+
+
+def test_quiet_holds_its_tongue(runner, app):
+    result = excuse(runner, app, "--quiet", "--json")
+    assert result.exit_code == 0 and "held fixed" not in result.stderr
