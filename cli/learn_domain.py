@@ -7,7 +7,7 @@ from typing import Annotated
 
 import typer
 
-from cli.common import OutputOption, QuietOption, check_files, command, help_footer, ui
+from cli.common import JsonOption, OutputOption, QuietOption, check_files, command, help_footer, output_format, ui
 from guided_lfd import errors
 from guided_lfd.demonstration.learn import learn_domain as learn
 from guided_lfd.demonstration.action_model import MODELS
@@ -15,7 +15,7 @@ from guided_lfd.demonstration.segments_document import load_segments
 from guided_lfd.demonstration.trajectory import is_trajectory, learn_from_trajectories, read_trajectory
 from guided_lfd.pddl.fit import check_model_fits
 from guided_lfd.errors import Location, MismatchError, OptionError
-from guided_lfd.io import write_text
+from guided_lfd.io import json_document, write_text
 from guided_lfd.pddl.model import pddl_name_defect
 from guided_lfd.pddl.reader import parse_domain, parse_problem_for
 from guided_lfd.io import read_text
@@ -57,6 +57,7 @@ def learn_domain(
                                "fewer conditions, no such guarantee).")
     ] = "safe",
     output: OutputOption = "-",
+    json_out: JsonOption = False,
     quiet: QuietOption = False,
 ) -> None:
     """Learn PDDL actions from demonstrations or trajectories.
@@ -69,11 +70,15 @@ def learn_domain(
     the hand's facts are the prior's own (unless the demonstration's state
     file declares them), steps the prior already makes are not learned again,
     and a skill that could never run beside the prior's is refused.
+    Each learned precondition's evidence (in how many demonstrations it
+    held) is a comment above its action; --json writes a document holding
+    the domain and each skill's evidence.
     """
     why = pddl_name_defect(name.lower()) if name is not None else None
     if why:
         raise OptionError(f"--name {name!r}: expected {why}")
     check_files([*segments, prior, human, *(problem or [])], {"--output": output})
+    json_out = output_format(output, json_out, default="pddl") == "json"
     if model not in MODELS:
         raise OptionError(f"--model {model!r}: expected one of {', '.join(MODELS)}")
     texts = [(path, read_text(path, "segments JSON or a PDDL trajectory")) for path in segments]
@@ -83,7 +88,7 @@ def learn_domain(
         if kept:
             raise OptionError(f"{kept[0]} holds segments and {trajectories[0]} a trajectory; expected one kind "
                               "per run")
-        return _from_trajectories(texts, prior, problem or [], model, human, name, output)
+        return _from_trajectories(texts, prior, problem or [], model, human, name, output, json_out)
     if problem or model != "safe":
         raise OptionError(f"{'--problem' if problem else '--model'} is for trajectories; "
                           f"{segments[0]} holds segments")
@@ -106,15 +111,26 @@ def learn_domain(
     # Demonstrations the learner left out or reconciled (their effects disagree with the others').
     ui.reading_warnings(domain)
     header = "Learned by guided-lfd learn-domain from: " + ", ".join(segments)
-    write_text(output, domain_to_pddl(domain, header=header))
     # With --prior the result keeps the prior's actions under their names; the rest were demonstrated.
     known = {a.name for a in prior_domain.actions} if prior_domain is not None else set()
+    _write(output, domain, header, known, segments, json_out)
     learned = [a for a in domain.actions if a.name not in known]
     ui.info(f"[dim]{len(learned)} demonstrated skill(s): {', '.join(a.name for a in learned)}[/]")
 
 
+def _write(output: str, domain, header: str, known: set[str], inputs: list[str], json_out: bool) -> None:
+    """The learned domain as PDDL, or with ``json_out`` a ``guided-lfd/learned`` document holding it and the
+    evidence of each skill not in ``known``."""
+    from guided_lfd.demonstration.learn import learned_skills
+
+    text = domain_to_pddl(domain, header=header)
+    if json_out:
+        text = json_document("learned", {"inputs": inputs, "domain": text, "skills": learned_skills(domain, known)})
+    write_text(output, text)
+
+
 def _from_trajectories(texts: list[tuple[str, str]], prior: str | None, problems: list[str], model: str,
-                       human: str | None, name: str | None, output: str) -> None:
+                       human: str | None, name: str | None, output: str, json_out: bool = False) -> None:
     """learn-domain on PDDL trajectories: the prior's empty-bodied operators learned (``--model``)."""
     if prior is None:
         raise OptionError(f"{texts[0][0]} is a trajectory: expected --prior DOMAIN with the operators' signatures")
@@ -134,8 +150,8 @@ def _from_trajectories(texts: list[tuple[str, str]], prior: str | None, problems
         domain = replace(domain, name=name.lower())
     ui.reading_warnings(domain)
     header = f"Learned by guided-lfd learn-domain (--model {model}) from: " + ", ".join(p for p, _ in texts)
-    write_text(output, domain_to_pddl(domain, header=header))
     steps = sum(len(t.steps) for t in trajectories)
     learned = [a.name for a in domain.actions if a.origin and a.origin.startswith("learned from")]
+    _write(output, domain, header, {a.name for a in domain.actions} - set(learned), [p for p, _ in texts], json_out)
     ui.info(f"[dim]{len(learned)} operator(s) learned from {steps} step(s) of {len(trajectories)} "
             f"trajectory(ies), {model} model: {', '.join(learned)}[/]")

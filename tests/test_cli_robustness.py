@@ -573,6 +573,7 @@ BY_EXTENSION = [
     (["plan", "human.pddl", "problem.pddl"], "json", "guided-lfd/plan"),
     (["validate", "human.pddl", "problem.pddl", "plan.txt"], "json", "guided-lfd/validation"),
     (["merge", "robot.pddl", "learned.pddl"], "json", "guided-lfd/merge"),
+    (["learn-domain", "s.json"], "json", "guided-lfd/learned"),
     (["evaluate", "robot.pddl", "problem.pddl", "--human", "human.pddl", "--excuse", "e.json"], "json",
      "guided-lfd/evaluation"),
     (["evaluate", "robot.pddl", "problem.pddl", "--human", "human.pddl", "--excuse", "e.json"], "csv", "measure"),

@@ -80,3 +80,35 @@ def test_an_operator_learned_from_trajectories_keeps_every_precondition_they_sho
     assert {a.name for a in learned} == {a.name for a in truth.actions}
     for operator in learned:
         assert missing_preconditions(operator, truth, positive_only=model == "general") == [], operator.name
+
+
+def test_each_precondition_learned_from_a_hand_trace_records_its_evidence(runner, app, tmp_path):
+    """In the learned domain's comments and in --json: shown in 1 of 1 demonstration, not varied."""
+    segments = tmp_path / "s.json"
+    assert runner.invoke(app, ["segment", str(SERVICE / "demo-round-1.csv"), "-o", str(segments)]).exit_code == 0
+    out = tmp_path / "learned.json"
+    result = runner.invoke(app, ["learn-domain", str(segments), "--prior", str(SERVICE / "robot.pddl"), "--human",
+                                 str(SERVICE / "human.pddl"), "-o", str(out), "--quiet"])
+    assert result.exit_code == 0, result.output
+    doc = json.loads(out.read_text())
+    assert (doc["format"], doc["format_version"]) == ("guided-lfd/learned", 1)
+    [skill] = doc["skills"]
+    assert skill["name"] == "open-door" and skill["demonstrations"] == 1 and skill["varied"] == []
+    assert {p["literal"]: (p["shown"], p["demonstrations"], p["varied"]) for p in skill["preconditions"]} == {
+        "(connects ?d ?from ?to)": (1, 1, False), "(connects ?d ?to ?from)": (1, 1, False),
+        "(not (door-open ?d))": (1, 1, False), "(gripper-free)": (1, 1, False), "(robot-at ?from)": (1, 1, False)}
+    assert ";; evidence (held in / demonstrations): (connects ?d ?from ?to) 1/1," in doc["domain"]
+
+
+def test_each_precondition_learned_from_trajectories_records_its_evidence_and_what_varied(runner, app, tmp_path):
+    """go is shown twice, once with the cup in hand: (gripper-free) varied (1 of 2), so it is not required."""
+    out = tmp_path / "learned.json"
+    result = runner.invoke(app, ["learn-domain", "--prior", str(SERVICE / "prior.pddl"),
+                                 str(SERVICE / "fetch-cup.traj"), "--json", "-o", str(out), "--quiet"])
+    assert result.exit_code == 0, result.output
+    doc = json.loads(out.read_text())
+    go = next(s for s in doc["skills"] if s["name"] == "go")
+    assert go["demonstrations"] == 2
+    assert all((p["shown"], p["varied"]) == (2, False) for p in go["preconditions"]) and go["preconditions"]
+    assert [(v["literal"], v["shown"], v["varied"]) for v in go["varied"]] == [("(gripper-free)", 1, True)]
+    assert "varied, so not required: (gripper-free) 1/2" in doc["domain"]

@@ -58,12 +58,13 @@ when it changed in some step and held after every one.  Two models:
 
 from __future__ import annotations
 
+from collections import Counter
 from collections.abc import Iterable
 from dataclasses import dataclass, field, replace
 from itertools import product
 
 from guided_lfd.demonstration.static_facts import drop_ruled_out_static_guards
-from guided_lfd.pddl.model import ActionSchema, Atom, Domain, Literal
+from guided_lfd.pddl.model import ActionSchema, Atom, Domain, Evidence, Literal
 
 __all__ = ["Observation", "MODELS", "bound_by", "facts_about", "static_relations", "changes", "learn_operators"]
 
@@ -184,6 +185,7 @@ class _Evidence:
     ambiguous_true: list[frozenset[Atom]] = field(default_factory=list)
     ambiguous_false: list[frozenset[Atom]] = field(default_factory=list)
     steps: list[tuple[_Lifting, Observation]] = field(default_factory=list)
+    held: Counter[Atom] = field(default_factory=Counter)   # in how many steps each lifted atom held before
 
     def __post_init__(self) -> None:
         # Only well-typed atoms: a shaker's fact is no fact of every container passed where a shaker was.
@@ -196,6 +198,7 @@ class _Evidence:
         before, after = lift.lifted(obs.before) & typed, lift.lifted(obs.after) & typed
         added, deleted = changes(obs.before, obs.after, lift.objects)
         false_before = {c for c in self.candidates if lift.ground(c) not in obs.before}
+        self.held.update(before)
         if self.seen == 0:
             self.before_always, self.after_always, self.never_before = before, after, false_before
         else:
@@ -253,8 +256,12 @@ def _learned(schema: ActionSchema, ev: _Evidence, model: str, negative: bool) ->
     delete = ev.deletes(ev.changed(ev.made_false, ev.ambiguous_false) - adds)
     pre = [Literal(a) for a in sorted(ev.before_always)]
     pre += [Literal(a, False) for a in _guards(ev, model, negative, adds, delete)]
+    # The shared evidence rule: a precondition held in every step (a guard's atom was false in every one);
+    # atoms that held in some steps only were varied.
+    varied = [Evidence(Literal(a), n, ev.seen) for a, n in sorted(ev.held.items()) if n < ev.seen]
+    evidence = tuple(Evidence(l, ev.seen, ev.seen) for l in pre) + tuple(varied)
     return replace(schema, precondition=tuple(pre), add=tuple(sorted(adds)), delete=tuple(sorted(delete)),
-                   origin=f"learned from {ev.seen} observed step(s)")
+                   origin=f"learned from {ev.seen} observed step(s)", evidence=evidence)
 
 
 def learn_operators(prior: Domain, observations: Iterable[Observation], objects: dict[str, str],

@@ -4,7 +4,9 @@ Repeats are grouped by what they *do*: two demonstrations of an activity are
 one skill when their lifted effects are equal under some renaming of their
 parameters (taking a block from the table and from another block are two
 skills, both labelled Take).  A skill's preconditions are the intersection of
-its repeats' (aligned) preconditions; parameters no longer used are dropped;
+its repeats' (aligned) preconditions, each recorded with its evidence (held in
+all n demonstrations), beside the literals some repeat varied (held in fewer:
+not required); parameters no longer used are dropped;
 differing parameter types become their closest common supertype.
 
 A demonstration whose effects are a strict part or a strict extension of a
@@ -17,9 +19,10 @@ near-duplicate skill is made.
 
 from __future__ import annotations
 
+from collections import Counter
 from dataclasses import dataclass, field
 
-from guided_lfd.pddl.model import ActionSchema, Atom, Literal, common_supertype
+from guided_lfd.pddl.model import ActionSchema, Atom, Evidence, Literal, common_supertype
 
 Effects = frozenset[tuple[str, Atom]]
 
@@ -38,10 +41,12 @@ class Skill:
     precondition: set[Literal]
     effects: Effects
     demonstrations: list[ActionSchema] = field(default_factory=list)
+    shown: Counter[Literal] = field(default_factory=Counter)  # in how many demonstrations each literal held
 
     @classmethod
     def of(cls, action: ActionSchema) -> "Skill":
-        return cls(action, dict(action.params), set(action.precondition), _effects(action, {}), [action])
+        return cls(action, dict(action.params), set(action.precondition), _effects(action, {}), [action],
+                   Counter(action.precondition))
 
     def absorb(self, other: ActionSchema, mapping: dict[str, str], parents: dict[str, str | None]) -> None:
         """Add a repeat (renamed by ``mapping``): intersect preconditions and effects, widen types."""
@@ -49,7 +54,9 @@ class Skill:
             target = mapping[var]
             if target in self.types:
                 self.types[target] = common_supertype(parents, self.types[target], typ)
-        self.precondition &= {lit.substitute(mapping) for lit in other.precondition}
+        renamed = {lit.substitute(mapping) for lit in other.precondition}
+        self.precondition &= renamed
+        self.shown.update(renamed)
         self.effects &= _effects(other, mapping)
         self.demonstrations.append(other)
 
@@ -61,7 +68,15 @@ class Skill:
         origin = f"learned from {len(acts)} demonstration(s): " + "; ".join(a.origin or "" for a in acts[:3])
         return ActionSchema(name, params, tuple(sorted(self.precondition)),
                             tuple(sorted(a for s, a in self.effects if s == "+")),
-                            tuple(sorted(a for s, a in self.effects if s == "-")), origin)
+                            tuple(sorted(a for s, a in self.effects if s == "-")), origin,
+                            evidence=self.evidence({v for v, _ in params}))
+
+    def evidence(self, params: set[str]) -> tuple[Evidence, ...]:
+        """What the demonstrations showed of each literal over ``params`` that held in any of them: the
+        preconditions (held in all), then those some demonstration varied."""
+        n = len(self.demonstrations)
+        known = [lit for lit in self.shown if all(x in params for x in lit.atom.args)]
+        return tuple(Evidence(lit, self.shown[lit], n) for lit in sorted(known, key=lambda l: (self.shown[l] < n, l)))
 
 
 #: Renamings tried at most in each phase of an alignment (beyond, the best found so far).

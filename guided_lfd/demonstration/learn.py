@@ -521,3 +521,29 @@ def check_usable(merged: Domain, robot: Domain, learned: set[str], where: str) -
                             "never makes true: the skill could never run (expected demonstrations in the robot's "
                             "vocabulary; declare the hand facts with vocabulary(held=...) rows, or "
                             "vocabulary(none) for a world without them)", Location(where))
+
+
+def learned_skills(domain: Domain, known: set[str]) -> list[dict]:
+    """Each action of ``domain`` not in ``known`` (the prior's) as the ``skills`` of a ``guided-lfd/learned``
+    document: name, parameters, effects, origin, and each precondition's evidence (held in how many of its
+    demonstrations; ``varied``: some demonstration showed it false) beside the conditions its demonstrations
+    varied, which it does not require."""
+    out = []
+    for action in domain.actions:
+        if action.name in known:
+            continue
+        required, varied = action.learned_evidence()
+        shown = {e.literal: e.to_json() for e in required}
+        unknown = {"shown": None, "demonstrations": None, "varied": None}  # a precondition of no recorded evidence
+        out.append({
+            "name": action.name,
+            "parameters": [{"name": v, "type": t} for v, t in action.params],
+            "demonstrations": max((e.demonstrations for e in action.evidence), default=None),
+            "preconditions": [shown.get(l) or {"literal": str(l), **unknown} for l in action.precondition],
+            "varied": [e.to_json() for e in varied],
+            "add": [str(a) for a in action.add],
+            "delete": [str(a) for a in action.delete],
+            "origin": action.origin,
+        })
+    return out
+

@@ -76,5 +76,5 @@ def name_after(skills: list[ActionSchema], human: Domain) -> list[ActionSchema]:
             tuple(sorted(l.substitute(names) for l in skill.precondition)),
             tuple(sorted(a.substitute(names) for a in skill.add)),
             tuple(sorted(a.substitute(names) for a in skill.delete)),
-            skill.origin))
+            skill.origin, evidence=tuple(e.substitute(names) for e in skill.evidence)))
     return out

@@ -80,6 +80,31 @@ class Predicate:
 
 
 @dataclass(frozen=True)
+class Evidence:
+    """What the demonstrations of a learned action showed about one of its conditions: ``literal`` held in
+    ``shown`` of its ``demonstrations`` (segments, or a trajectory's steps).  ``varied``: some demonstration
+    showed it false, so the action does not require it; a learned precondition held in every one."""
+
+    literal: Literal
+    shown: int
+    demonstrations: int
+
+    @property
+    def varied(self) -> bool:
+        return self.shown < self.demonstrations
+
+    def substitute(self, mapping: dict[str, str]) -> "Evidence":
+        return Evidence(self.literal.substitute(mapping), self.shown, self.demonstrations)
+
+    def __str__(self) -> str:
+        return f"{self.literal} {self.shown}/{self.demonstrations}"
+
+    def to_json(self) -> dict[str, Any]:
+        return {"literal": str(self.literal), "shown": self.shown, "demonstrations": self.demonstrations,
+                "varied": self.varied}
+
+
+@dataclass(frozen=True)
 class ActionSchema:
     """A lifted STRIPS action (a robot skill or a demonstrated one).
 
@@ -95,6 +120,9 @@ class ActionSchema:
     literals, which every state it applies in satisfies); ``effects`` are the
     conditional and universally quantified effects (``add`` and ``delete``
     hold the plain ones).
+
+    ``evidence``: for a learned action, what its demonstrations showed about each precondition and each
+    condition they varied (see :class:`Evidence`; the writer prints it as comments); not compared.
     """
 
     name: str
@@ -106,11 +134,18 @@ class ActionSchema:
     cost: "int | Atom | None" = None
     condition: "Formula | None" = None
     effects: "tuple[ConditionalEffect, ...]" = ()
+    evidence: tuple[Evidence, ...] = field(default=(), compare=False)
 
     @property
     def is_adl(self) -> bool:
         """Whether the action needs more than STRIPS (a formula precondition or conditional effects)."""
         return self.condition is not None or bool(self.effects)
+
+    def learned_evidence(self) -> tuple[list[Evidence], list[Evidence]]:
+        """(evidence of each precondition it has, in its order; of each condition its demonstrations varied)."""
+        by_literal = {e.literal: e for e in self.evidence}
+        return ([by_literal[l] for l in self.precondition if l in by_literal],
+                [e for e in self.evidence if e.varied])
 
     def reversed(self) -> "ActionSchema":
         """The action undone: pre' = pre - del + add, add' = del, del' = add - pre.

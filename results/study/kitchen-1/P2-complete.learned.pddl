@@ -11,24 +11,28 @@
                (open ?x0 - drawer))
 
   ;; learned from 12 demonstration(s): kitchen-1/P2-complete segment 3 (Open pinkdrawer); kitchen-1/P2-complete segment 16 (Open pinkdrawer); kitchen-1/P2-complete segment 24 (Open pinkdrawer)
+  ;; evidence (held in / demonstrations): (clear ?o1) 12/12, (hand_free) 12/12, (not (open ?o1)) 12/12
   (:action open_drawer
     :parameters (?o1 - drawer)
     :precondition (and (clear ?o1) (hand_free) (not (open ?o1)))
     :effect (open ?o1))
 
   ;; learned from 1 demonstration(s): kitchen-1/P2-complete segment 7 (Take redplate)
+  ;; evidence (held in / demonstrations): (clear ?o2) 1/1, (graspable ?o1) 1/1, (hand_free) 1/1, (on_top ?o1 ?o2) 1/1
   (:action take_item
     :parameters (?o1 - item ?o2 - surface)
     :precondition (and (clear ?o2) (graspable ?o1) (hand_free) (on_top ?o1 ?o2))
     :effect (and (in_hand ?o1) (not (hand_free)) (not (on_top ?o1 ?o2))))
 
   ;; learned from 1 demonstration(s): kitchen-1/P2-complete segment 8 (Put redplate pinkdrawer)
+  ;; evidence (held in / demonstrations): (clear ?o2) 1/1, (in_hand ?o1) 1/1, (open ?o2) 1/1
   (:action put_item_drawer
     :parameters (?o1 - item ?o2 - drawer)
     :precondition (and (clear ?o2) (in_hand ?o1) (open ?o2))
     :effect (and (hand_free) (inside ?o1 ?o2) (not (in_hand ?o1))))
 
   ;; learned from 11 demonstration(s): kitchen-1/P2-complete segment 12 (Close pinkdrawer); kitchen-1/P2-complete segment 20 (Close pinkdrawer); kitchen-1/P2-complete segment 28 (Close pinkdrawer)
+  ;; evidence (held in / demonstrations): (clear ?o1) 11/11, (hand_free) 11/11, (open ?o1) 11/11
   (:action close_drawer
     :parameters (?o1 - drawer)
     :precondition (and (clear ?o1) (hand_free) (open ?o1))

@@ -11,18 +11,21 @@
                (open ?x0 - drawer))
 
   ;; learned from 1 demonstration(s): kitchen-1/P3-complete segment 3 (Take redplate)
+  ;; evidence (held in / demonstrations): (clear ?o2) 1/1, (graspable ?o1) 1/1, (hand_free) 1/1, (on_top ?o1 ?o2) 1/1
   (:action take_item
     :parameters (?o1 - item ?o2 - surface)
     :precondition (and (clear ?o2) (graspable ?o1) (hand_free) (on_top ?o1 ?o2))
     :effect (and (in_hand ?o1) (not (hand_free)) (not (on_top ?o1 ?o2))))
 
   ;; learned from 1 demonstration(s): kitchen-1/P3-complete segment 4 (Open pinkdrawer)
+  ;; evidence (held in / demonstrations): (clear ?o1) 1/1, (hand_free) 1/1, (not (open ?o1)) 1/1
   (:action open_drawer
     :parameters (?o1 - drawer)
     :precondition (and (clear ?o1) (hand_free) (not (open ?o1)))
     :effect (open ?o1))
 
   ;; learned from 1 demonstration(s): kitchen-1/P3-complete segment 8 (Put redplate pinkdrawer)
+  ;; evidence (held in / demonstrations): (clear ?o2) 1/1, (in_hand ?o1) 1/1, (open ?o2) 1/1
   (:action put_item_drawer
     :parameters (?o1 - item ?o2 - drawer)
     :precondition (and (clear ?o2) (in_hand ?o1) (open ?o2))

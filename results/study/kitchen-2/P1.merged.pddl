@@ -51,6 +51,7 @@
 
   ;; from <learned> (action push_obstacle)
   ;;   learned from 1 demonstration(s): kitchen-2/P1-excuse segment 3 (Push chair)
+  ;; evidence (held in / demonstrations): (blocking ?o1 ?o3) 1/1, (clear ?o2) 1/1, (hand_free) 1/1
   (:action push_obstacle
     :parameters (?o1 - obstacle ?o2 - furniture ?o3 - drawer)
     :precondition (and (blocking ?o1 ?o3) (clear ?o2) (hand_free))

@@ -51,6 +51,7 @@
 
   ;; from <learned> (action push_obstacle)
   ;;   learned from 3 demonstration(s): kitchen-2/P2-excuse segment 3 (Push chair); kitchen-2/P2-excuse segment 7 (Push chair); kitchen-2/P2-excuse segment 11 (Push chair)
+  ;; evidence (held in / demonstrations): (blocking ?o1 ?o3) 3/3, (clear ?o2) 3/3, (hand_free) 3/3
   (:action push_obstacle
     :parameters (?o1 - obstacle ?o2 ?o3 - object)
     :precondition (and (blocking ?o1 ?o3) (clear ?o2) (hand_free))
