@@ -8,8 +8,9 @@ things are or how places connect:
 
 * **kinds**: a one-argument predicate no action changes, true of some objects,
   and true of every object of a type it is true of, or of exactly the objects of a
-  type another such predicate is false of (``is-goal`` beside ``is-nongoal``); in a
-  domain without types, any such predicate (the domain's types are written as
+  type another such predicate is false of (``is-goal`` beside ``is-nongoal``) unless a
+  skill that changes the pair seems missing (``door-open`` beside ``door-closed`` for a
+  robot that cannot open doors: :meth:`_World.on_the_way`); in a domain without types, any such predicate (the domain's types are written as
   predicates there) but a marker of one place (``(at-robby rooma)``);
 * **a fixed graph or map**: a predicate no action changes, with true atoms,
   relating two or more objects of one type (rooms, floors, grid positions),
@@ -86,7 +87,7 @@ class _World:
     """What the structure rules look at: the objects, the true atoms of each predicate, which types move."""
 
     def __init__(self, domain: Domain, problem: Problem, static: set[str], models: Sequence[Domain]) -> None:
-        self.domain, self.static = domain, static
+        self.domain, self.problem, self.static = domain, problem, static
         self.objects = {**domain.constants, **problem.objects}
         self.typed = any(t != "object" for t in self.objects.values())
         self.true_args = _true_args(problem)
@@ -115,7 +116,36 @@ class _World:
         # predicate is true of exactly the others ((is-goal p) beside (is-nongoal p)): the two classify them.
         rest = set(eligible) - holders
         partner = next((p for p in sorted(unary) if self.holders(p) & set(eligible) == rest), None)
-        return None if partner is None else f"a kind: classifies {param_type} objects with {partner}"
+        if partner is None or self.on_the_way(name, partner):
+            return None
+        return f"a kind: classifies {param_type} objects with {partner}"
+
+    def on_the_way(self, *pair: str) -> bool:
+        """Whether a skill that changes ``pair`` seems missing: the delete-relaxed robot does not reach the goal
+        with the pair as it is, and does with every atom of the pair made true (a door the robot cannot open,
+        ``door-open`` beside ``door-closed``, is state; sokoban's ``is-goal`` beside ``is-nongoal`` is not)."""
+        task = self.ground_task(pair)
+        if task is None or _relaxed_reaches(task.actions, task.init, task.goal_pos):
+            return False
+        freed = 0
+        for i, atom in enumerate(task.atoms):
+            if atom.predicate in pair:
+                freed |= 1 << i
+        freed &= ~task.init
+        # On the way, not at its end: an action that reaches a goal atom only through a freed atom is left out
+        # (sokoban's push-to-goal onto a square made a goal square says what the goal is, not how to get there).
+        ways = [act for act in task.actions if not (act.add & task.goal_pos and act.pre_pos & freed)]
+        return _relaxed_reaches(ways, task.init | freed, task.goal_pos)
+
+    def ground_task(self, pair: tuple[str, ...]):
+        """The task grounded with the other static predicates kept as they are (None: too large to ground)."""
+        from guided_lfd.errors import TaskTooLarge
+        from guided_lfd.planning.grounding import ground
+
+        try:
+            return ground(self.domain, self.problem, fixed=sorted(self.static - set(pair)))
+        except TaskTooLarge:
+            return None
 
     def relation(self, name: str, types: list[str]) -> str | None:
         """Why a static relation over arguments of ``types`` is the world's structure (None: it may place things
@@ -132,6 +162,16 @@ class _World:
         if self.typed and not self.places & set(types[1:]):
             return f"a fixed attribute: each {types[0]} has one {types[1]}, which is no place things move to"
         return None
+
+
+def _relaxed_reaches(actions, state: int, goal: int) -> bool:
+    """Whether ``actions``, deletes and negative preconditions ignored, reach the ``goal`` atoms from ``state``."""
+    from guided_lfd.planning.search import reachable_actions
+
+    reached = state
+    for act in reachable_actions(actions, state):
+        reached |= act.add
+    return goal & ~reached == 0
 
 
 def placing_predicates(source: Domain, problem: Problem) -> dict[str, str]:
