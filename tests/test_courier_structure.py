@@ -50,9 +50,9 @@ def test_the_excuse_says_in_one_line_what_it_held_fixed_and_the_switch_that_free
 
 
 @pytest.mark.parametrize("removed", ["move", "push-to-nongoal", "push-to-goal"])
-def test_a_pair_that_says_where_the_goal_is_stays_a_kind(removed):
-    """Sokoban's is-goal / is-nongoal: freed, they let push-to-goal reach the goal anywhere, which says what the
-    goal is, not how to get there: the pair stays held."""
+def test_a_pair_that_classifies_places_stays_a_kind(removed):
+    """Sokoban's is-goal / is-nongoal classify the squares (places things are pushed to): the pair stays held
+    whichever skill is missing, though freed it would let push-to-goal end anywhere."""
     domain, problem = parse_task(SOKOBAN / "domain.pddl", SOKOBAN / "task01.pddl")
     robot = replace(domain, actions=[a for a in domain.actions if a.name != removed])
     held = structural_predicates(robot, problem)
@@ -77,3 +77,26 @@ def test_the_human_models_invariants_open_the_door_and_no_longer_close_it(runner
 def test_quiet_holds_its_tongue(runner, app):
     result = excuse(runner, app, "--quiet", "--json")
     assert result.exit_code == 0 and "held fixed" not in result.stderr
+
+
+PAIRS = DATA / "pairs"
+
+
+@pytest.mark.parametrize(("world", "expected"), [
+    ("light", ["+(on desk-lamp)"]),  # no skill changes on / off: the rule above frees the pair
+    ("gripper", ["-(gripper-closed hand)", "+(gripper-open hand)"]),  # grasp closes it: the robot's invariants
+    ("container", ["-(empty green-can)", "+(full green-can)"]),  # watering empties a can: likewise
+])
+def test_a_complementary_pair_gets_the_excuse_a_person_would_name(runner, app, world, expected):
+    robot, problem = PAIRS / world / "robot.pddl", PAIRS / world / "problem.pddl"
+    result = runner.invoke(app, ["excuse", str(robot), str(problem), "--json"])
+    assert result.exit_code == 0, result.stderr
+    assert changes(result) == expected
+
+
+def test_the_lamps_human_model_keeps_on_and_off_apart(runner, app):
+    light = PAIRS / "light"
+    result = runner.invoke(app, ["excuse", str(light / "robot.pddl"), str(light / "problem.pddl"), "--human",
+                                 str(light / "human.pddl"), "--invariants-from", str(light / "human.pddl"), "--json"])
+    assert result.exit_code == 0
+    assert changes(result) == ["-(off desk-lamp)", "+(on desk-lamp)"]

@@ -8,9 +8,10 @@ things are or how places connect:
 
 * **kinds**: a one-argument predicate no action changes, true of some objects,
   and true of every object of a type it is true of, or of exactly the objects of a
-  type another such predicate is false of (``is-goal`` beside ``is-nongoal``) unless a
-  skill that changes the pair seems missing (``door-open`` beside ``door-closed`` for a
-  robot that cannot open doors: :meth:`_World.on_the_way`); in a domain without types, any such predicate (the domain's types are written as
+  type another such predicate is false of (``is-goal`` beside ``is-nongoal``), unless the
+  pair is over things that are no places and a skill that changes it seems missing
+  (``door-open`` beside ``door-closed`` for a robot that cannot open doors:
+  :meth:`_World.on_the_way`); in a domain without types, any such predicate (the domain's types are written as
   predicates there) but a marker of one place (``(at-robby rooma)``);
 * **a fixed graph or map**: a predicate no action changes, with true atoms,
   relating two or more objects of one type (rooms, floors, grid positions),
@@ -116,26 +117,24 @@ class _World:
         # predicate is true of exactly the others ((is-goal p) beside (is-nongoal p)): the two classify them.
         rest = set(eligible) - holders
         partner = next((p for p in sorted(unary) if self.holders(p) & set(eligible) == rest), None)
-        if partner is None or self.on_the_way(name, partner):
+        # A pair over things that are no places (doors, lamps) is state where a skill that changes it seems
+        # missing; one that classifies places (sokoban's goal squares) says what the places are.
+        if partner is None or (param_type not in self.places and self.on_the_way(name, partner)):
             return None
         return f"a kind: classifies {param_type} objects with {partner}"
 
     def on_the_way(self, *pair: str) -> bool:
         """Whether a skill that changes ``pair`` seems missing: the delete-relaxed robot does not reach the goal
         with the pair as it is, and does with every atom of the pair made true (a door the robot cannot open,
-        ``door-open`` beside ``door-closed``, is state; sokoban's ``is-goal`` beside ``is-nongoal`` is not)."""
+        ``door-open`` beside ``door-closed``)."""
         task = self.ground_task(pair)
         if task is None or _relaxed_reaches(task.actions, task.init, task.goal_pos):
             return False
-        freed = 0
+        freed = task.init
         for i, atom in enumerate(task.atoms):
             if atom.predicate in pair:
                 freed |= 1 << i
-        freed &= ~task.init
-        # On the way, not at its end: an action that reaches a goal atom only through a freed atom is left out
-        # (sokoban's push-to-goal onto a square made a goal square says what the goal is, not how to get there).
-        ways = [act for act in task.actions if not (act.add & task.goal_pos and act.pre_pos & freed)]
-        return _relaxed_reaches(ways, task.init | freed, task.goal_pos)
+        return _relaxed_reaches(task.actions, freed, task.goal_pos)
 
     def ground_task(self, pair: tuple[str, ...]):
         """The task grounded with the other static predicates kept as they are (None: too large to ground)."""
@@ -168,10 +167,9 @@ def _relaxed_reaches(actions, state: int, goal: int) -> bool:
     """Whether ``actions``, deletes and negative preconditions ignored, reach the ``goal`` atoms from ``state``."""
     from guided_lfd.planning.search import reachable_actions
 
-    reached = state
     for act in reachable_actions(actions, state):
-        reached |= act.add
-    return goal & ~reached == 0
+        state |= act.add
+    return goal & ~state == 0
 
 
 def placing_predicates(source: Domain, problem: Problem) -> dict[str, str]:

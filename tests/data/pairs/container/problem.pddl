@@ -1,0 +1,5 @@
+(define (problem water-the-fern)
+  (:domain watering)
+  (:objects green-can red-can - can fern - plant)
+  (:init (hand-free) (can-on-floor green-can) (can-on-floor red-can) (empty green-can) (empty red-can))
+  (:goal (watered fern)))

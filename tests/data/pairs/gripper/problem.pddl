@@ -1,0 +1,5 @@
+(define (problem pack-a-bolt)
+  (:domain packing)
+  (:objects hand - gripper bolt - part crate - box)
+  (:init (gripper-closed hand) (empty hand) (on-table bolt))
+  (:goal (in bolt crate)))
