@@ -7,8 +7,10 @@ from typing import Annotated
 
 import typer
 
-from cli.common import JsonOption, OutputOption, QuietOption, check_files, command, help_footer, output_format, ui
+from cli.common import (JsonOption, MemoryLimitOption, OutputOption, QuietOption, TimeLimitOption, apply_memory_limit,
+                        check_files, check_time_limit, command, help_footer, output_format, started_at, ui)
 from guided_lfd import errors
+from guided_lfd.deadline import deadline_after, watchdog
 from guided_lfd.demonstration.learn import learn_domain as learn
 from guided_lfd.demonstration.action_model import MODELS
 from guided_lfd.demonstration.segments_document import load_segments
@@ -25,7 +27,8 @@ from guided_lfd.pddl.writer import domain_to_pddl
 @help_footer(
     example="guided-lfd learn-domain p1.segments.json -o p1.learned.pddl",
     exit_codes=(errors.EXIT_INPUT_FILE, errors.EXIT_PDDL_SYNTAX, errors.EXIT_PDDL_SEMANTIC, errors.EXIT_UNSUPPORTED,
-                errors.EXIT_MISMATCH, errors.EXIT_TRACE, errors.EXIT_BAD_OPTION, errors.EXIT_TOO_LARGE, errors.EXIT_OUTPUT),
+                errors.EXIT_MISMATCH, errors.EXIT_TRACE, errors.EXIT_BAD_OPTION, errors.EXIT_TOO_LARGE, errors.EXIT_OUTPUT,
+                errors.EXIT_TIME_LIMIT, errors.EXIT_MEMORY),
     success="domain written",
 )
 @command
@@ -58,6 +61,8 @@ def learn_domain(
     ] = "safe",
     output: OutputOption = "-",
     json_out: JsonOption = False,
+    time_limit: TimeLimitOption = None,
+    memory_limit: MemoryLimitOption = None,
     quiet: QuietOption = False,
 ) -> None:
     """Learn PDDL actions from demonstrations or trajectories.
@@ -77,10 +82,20 @@ def learn_domain(
     why = pddl_name_defect(name.lower()) if name is not None else None
     if why:
         raise OptionError(f"--name {name!r}: expected {why}")
+    time_limit = check_time_limit(time_limit)
+    apply_memory_limit(memory_limit)
     check_files([*segments, prior, human, *(problem or [])], {"--output": output})
     json_out = output_format(output, json_out, default="pddl") == "json"
     if model not in MODELS:
         raise OptionError(f"--model {model!r}: expected one of {', '.join(MODELS)}")
+    # The time limit bounds the whole run, reading included; nothing is written when it strikes.
+    with watchdog(deadline_after(time_limit, started_at()), "learn-domain", grace=0.0):
+        _learn(segments, prior, human, name, problem, model, output, json_out)
+
+
+def _learn(segments: list[str], prior: str | None, human: str | None, name: str | None, problem: list[str] | None,
+           model: str, output: str, json_out: bool) -> None:
+    """Read the demonstrations or trajectories, learn, write (see :func:`learn_domain`)."""
     texts = [(path, read_text(path, "segments JSON or a PDDL trajectory")) for path in segments]
     trajectories = [path for path, text in texts if is_trajectory(text)]
     if trajectories:
