@@ -185,6 +185,7 @@ def teach(
     def show(rnd) -> None:
         """The request as the demonstrator reads it: on a terminal always, else as a diagnostic."""
         lines = [f"round {rnd.index}, please demonstrate: {'; '.join(rnd.request_text)}",
+                 *(f"  asked again: {line}" for line in rnd.asked_again),
                  *([f"  {rnd.excuse_text()}"] if rnd.excuse_text() else []), *(f"  why: {w}" for w in rnd.why)]
         if rnd.keep_text:
             lines.append("  leave as it is: " + "; ".join(rnd.keep_text))
@@ -210,6 +211,8 @@ def _report(session_obj, session: Path) -> None:
         ui.info(f"round {r.index}: {'; '.join(r.request_text)}; demonstrated {r.demonstration_length} action(s), "
                 f"learned {', '.join(r.learned_actions) or 'nothing new'}"
                 + ("" if r.request_met is not False else f"; not done: {', '.join(str(c) for c in r.unmet)}"))
+        if r.check is not None:  # the demonstration against its request: its outcome and why
+            ui.info_plain(f"round {r.index}: {r.check.outcome}: {r.check.reason}")
         if r.vocabulary:  # which hand facts were chosen, and from where, so a wrong binding shows
             ui.info(f"[dim]round {r.index}: hand facts: {r.vocabulary}[/]")
     if session_obj.error is not None:  # the demonstration's own error, its own exit code

@@ -224,11 +224,12 @@ def _check_writable_target(name: str, target: Path) -> None:
         raise OutputError("no permission to write there", Location(name))
 
 
-def json_document(kind: str, body: dict[str, Any]) -> str:
-    """Serialise a versioned JSON document (stable key order, trailing newline)."""
+def json_document(kind: str, body: dict[str, Any], version: int = FORMAT_VERSION) -> str:
+    """Serialise a versioned JSON document (stable key order, trailing newline); ``version``: the format's own
+    where it moved on (``guided-lfd/teach`` is at 2)."""
     import json  # here, not at start-up: only --json and JSON inputs need it
 
-    doc = {"format": f"guided-lfd/{kind}", "format_version": FORMAT_VERSION, **body}
+    doc = {"format": f"guided-lfd/{kind}", "format_version": version, **body}
     return json.dumps(doc, indent=2, sort_keys=False) + "\n"
 
 

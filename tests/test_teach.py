@@ -22,11 +22,13 @@ SESSION_KEYS = {"format": str, "format_version": int, "robot": str, "problem": s
 ROUND_KEYS = {"round": int, "excuse": list, "request": list, "request_text": list, "why": list, "keep": list,
               "keep_text": list, "demonstration_length": (int, type(None)), "new_actions": (int, type(None)), "learned_actions": list,
               "request_met": (bool, type(None)), "unmet": list, "solvable_after": (bool, type(None)), "files": dict,
-              "preference": (str, type(None)), "error": (str, type(None)), "vocabulary": (str, type(None))}
+              "preference": (str, type(None)), "error": (str, type(None)), "vocabulary": (str, type(None)),
+              "asked_again": list, "outcome": (str, type(None)), "outcome_reason": (str, type(None)),
+              "check": (dict, type(None))}
 
 
 def _check_schema(doc: dict) -> None:
-    assert set(doc) == set(SESSION_KEYS) and (doc["format"], doc["format_version"]) == ("guided-lfd/teach", 1)
+    assert set(doc) == set(SESSION_KEYS) and (doc["format"], doc["format_version"]) == ("guided-lfd/teach", 2)
     for key, kind in SESSION_KEYS.items():
         assert isinstance(doc[key], kind), key
     for rnd in doc["rounds"]:

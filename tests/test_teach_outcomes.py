@@ -23,7 +23,8 @@ HUMAN = {k: str(DOMAINS / f"kitchen-{k}" / "human.pddl") for k in (1, 2)}
 NO_PUT = str(TEACH / "no-put-robot.pddl")  # Kitchen I's robot without put_inside: no skill makes (inside ..)
 
 
-def _goal_reached_by_the_demonstration(rnd, folder, out, robot, task, given, human=None, original=None, history=None):
+def _goal_reached_by_the_demonstration(rnd, folder, out, robot, task, given, human=None, original=None, history=None,
+                                       time_limit=None):
     """Stands for ``guided_lfd.teach.learning.learn_round`` after a demonstration of the whole of Kitchen II's task
     (chair pushed to the corner, PinkDrawer opened, RedPlate put inside) from which the robot learned a skill
     it can never use (push_obstacle needing a hand fact of another vocabulary)."""

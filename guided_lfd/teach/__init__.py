@@ -19,16 +19,18 @@ The package, one job per module: :mod:`~guided_lfd.teach.session` (the
 session's model and its documents), :mod:`~guided_lfd.teach.request` (what a
 round asks for and why, in words), :mod:`~guided_lfd.teach.human` (the
 demonstrators: the simulated human, recorded traces), :mod:`~guided_lfd.teach.learning`
-(a round's demonstration learned and merged), :mod:`~guided_lfd.teach.folder`
+(a round's demonstration learned and merged), :mod:`~guided_lfd.teach.check` (each demonstration checked
+against its request: accepted, partial, misdirected, unhelpful or inconsistent), :mod:`~guided_lfd.teach.folder`
 (the session folder) and :mod:`~guided_lfd.teach.loop` (the rounds).
 """
 
 from __future__ import annotations
 
+from guided_lfd.teach.check import OUTCOMES, DemonstrationCheck
 from guided_lfd.teach.human import GivenTraces, SimulatedHuman, check_human_model
 from guided_lfd.teach.loop import teach
 from guided_lfd.teach.request import keep_facts
 from guided_lfd.teach.session import Demonstrator, Round, TeachSession
 
 __all__ = ["Round", "TeachSession", "SimulatedHuman", "GivenTraces", "teach", "keep_facts", "check_human_model",
-           "Demonstrator"]
+           "Demonstrator", "DemonstrationCheck", "OUTCOMES"]

@@ -10,6 +10,7 @@ from guided_lfd.demonstration.vocabulary import KITCHEN, HandVocabulary
 from guided_lfd.io import json_document, write_text
 from guided_lfd.pddl.model import Atom, Domain, Problem
 from guided_lfd.pddl.writer import domain_to_pddl
+from guided_lfd.teach.check import check_demonstration
 from guided_lfd.teach.session import Round
 
 __all__ = ["learn_round"]
@@ -17,14 +18,19 @@ __all__ = ["learn_round"]
 
 def learn_round(rnd: Round, folder: Path, out: Path, robot: Domain, task: Problem,
                  given: tuple[Path, Path], human: Domain | None = None, original: Domain | None = None,
-                 history: list[tuple[str, dict]] | None = None) -> tuple[Domain, frozenset[Atom]]:
+                 history: list[tuple[str, dict]] | None = None,
+                 time_limit: float | None = None) -> tuple[Domain, frozenset[Atom]]:
     """Segment the demonstration, learn its skills (in the robot's hand facts, named after the ``human``
     model's actions), merge them into the robot; (new domain, state it left).  A skill that could never run
     beside the robot's is a MismatchError.
 
     With the ``original`` robot and the ``history`` of earlier rounds' demonstrations, the skills are learned
     from all of them and merged into the original: a skill shown again from another situation (unstacking off
-    a block, not the table) is generalised, not learned twice."""
+    a block, not the table) is generalised, not learned twice.
+
+    The demonstration is checked against the round's request first (:mod:`guided_lfd.teach.check`,
+    ``rnd.check``): skills from a demonstration that is ``inconsistent`` or ``unhelpful``, or that do not reach
+    what was asked, are not merged (the robot's domain stays as it was); the world stays as it left it."""
     from guided_lfd.demonstration.learn import (check_usable, document_vocabulary, ground_actions, learn_domain,
                                                 robot_declarations)
     from guided_lfd.demonstration.segment import segment, segments_document
@@ -46,7 +52,8 @@ def learn_round(rnd: Round, folder: Path, out: Path, robot: Domain, task: Proble
     rnd.vocabulary = f"{vocabulary.describe()} (from {vocabulary.origin})"
     demonstrated = ground_actions(doc, str(trace), vocabulary=vocabulary)
     rnd.demonstration_length = len(demonstrated)
-    rnd.new_actions = usefulness(demonstrated, robot, doc.get("objects", {})).useful
+    types = doc.get("objects", {})
+    rnd.new_actions = usefulness(demonstrated, robot, types).useful
     documents = [*(history or []), (str(trace), doc)]
     learned = learn_domain(documents, name=f"learned-round-{rnd.index}", context=base, human=human, skip_known=True)
     # The robot's declaration of a predicate stands: merging a learned one would widen its argument types.
@@ -55,17 +62,23 @@ def learn_round(rnd: Round, folder: Path, out: Path, robot: Domain, task: Proble
     merged = merge_domains([base, learned], name=robot.name).domain
     # New skills, and skills this demonstration generalised (the same name, another body).
     known = {a.name: (a.params, a.precondition, a.add, a.delete) for a in robot.actions}
-    rnd.learned_actions = [a.name for a in merged.actions
-                           if known.get(a.name) != (a.params, a.precondition, a.add, a.delete)]
+    changed = [a.name for a in merged.actions if known.get(a.name) != (a.params, a.precondition, a.add, a.delete)]
     check_usable(merged, base, {a.name for a in merged.actions} - {a.name for a in base.actions}, str(trace))
-    write_text(folder / "robot.pddl", domain_to_pddl(merged, header=f"The robot's domain after round {rnd.index}"))
-    write_text(out / "robot.pddl", domain_to_pddl(merged, header=f"The robot's domain after round {rnd.index}"))
-    rnd.files.update(learned=str(folder / "learned.pddl"), robot=str(folder / "robot.pddl"))
     state = _state_after(demo, task, merged, vocabulary)
     rnd.unmet = [c for c in rnd.request if (c.atom in state) != c.added]
     rnd.request_met = not rnd.unmet
-    if history is not None:
-        history.append((str(trace), doc))
+    # Checked against the request before anything learned from it is kept (#52).
+    rnd.check = check_demonstration(rnd, task.init, state, demonstrated, types, robot, merged, changed, task,
+                                    set(vocabulary.predicates), human, time_limit=time_limit)
+    if not rnd.check.keep_skills:
+        merged = robot
+    else:
+        rnd.learned_actions = changed
+        if history is not None:
+            history.append((str(trace), doc))
+    write_text(folder / "robot.pddl", domain_to_pddl(merged, header=f"The robot's domain after round {rnd.index}"))
+    write_text(out / "robot.pddl", domain_to_pddl(merged, header=f"The robot's domain after round {rnd.index}"))
+    rnd.files.update(learned=str(folder / "learned.pddl"), robot=str(folder / "robot.pddl"))
     return merged, state
 
 

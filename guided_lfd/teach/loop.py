@@ -15,6 +15,7 @@ from guided_lfd.pddl.fit import check_model_fits, refuse_adl
 from guided_lfd.pddl.model import Domain, Problem
 from guided_lfd.pddl.writer import domain_to_pddl
 from guided_lfd.planning.validation import PlanStep
+from guided_lfd.teach.check import asked_again
 from guided_lfd.teach.folder import check_session_folder, make_folder, replacing_previous_session
 from guided_lfd.teach.human import SimulatedHuman, check_human_model
 from guided_lfd.teach.learning import learn_round
@@ -125,6 +126,8 @@ def _rounds(robot: Domain, problem: Problem, demonstrator: Demonstrator, out: Pa
                    excuse_request(k, current, task, report, human if prefer else None, human if redundancy else None,
                                   human, deadline))
             rnd.files.update(excuse=str(folder / "excuse.json"), picture=str(folder / "excuse.svg"))
+            if rounds:  # after a partial or unhelpful demonstration: what is still missing, in the domain's words
+                rnd.asked_again = asked_again(rounds[-1], rnd.request, report.spellings)
             rounds.append(rnd)
             if on_request:
                 on_request(rnd)
@@ -133,7 +136,8 @@ def _rounds(robot: Domain, problem: Problem, demonstrator: Demonstrator, out: Pa
                 if given is None:
                     status, reason = no_demonstration(demonstrator, state, rnd, task, report)
                     break
-                current, state = learn_round(rnd, folder, out, current, task, given, human, robot, history)
+                current, state = learn_round(rnd, folder, out, current, task, given, human, robot, history,
+                                             seconds_left(deadline))
             except SearchTimeout:
                 raise
             except GuidedLfdError as exc:  # the demonstration's fault: the session so far stays
@@ -147,12 +151,23 @@ def _rounds(robot: Domain, problem: Problem, demonstrator: Demonstrator, out: Pa
                 break
     except SearchTimeout:
         status = "timeout"
+    if status == "max-rounds":
+        reason = _rounds_ran_out(rounds) or reason
     write_text(out / "robot.pddl", domain_to_pddl(current, header=f"The robot's domain after teaching {problem.path}"))
     original, status, reason = _judge_original(current, problem, rounds, status, reason, options, deadline)
     session = TeachSession(robot.path, problem.path, status, rounds, final_plan, original, str(out / "robot.pddl"),
                            reason=reason, task=problem.name)
     session.error = error
     return session
+
+
+def _rounds_ran_out(rounds: list[Round]) -> str | None:
+    """Why a session whose rounds ran out ends unsolved: how its last demonstration was judged (None: unchecked)."""
+    if not rounds or rounds[-1].check is None:
+        return None
+    last = rounds[-1]
+    return (f"the robot still cannot plan the task after {len(rounds)} round(s); round {last.index}'s "
+            f"demonstration was {last.check.outcome}: {last.check.reason}")
 
 
 def _judge_original(taught: Domain, problem: Problem, rounds: list[Round], status: str, reason: str | None,

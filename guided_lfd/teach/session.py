@@ -16,7 +16,11 @@ from guided_lfd.io import json_document
 from guided_lfd.pddl.model import Atom, Problem
 from guided_lfd.planning.validation import PlanStep
 
-__all__ = ["Demonstrator", "Round", "TeachSession"]
+__all__ = ["SESSION_VERSION", "Demonstrator", "Round", "TeachSession"]
+
+#: ``session.json``'s format version: 2 added each round's ``outcome``, ``outcome_reason``, ``check`` and
+#: ``asked_again`` (issue #52); a version-1 session folder is still read back (its task, to replace it).
+SESSION_VERSION = 2
 
 
 class Demonstrator(Protocol):
@@ -53,6 +57,14 @@ class Round:
     preference: str | None = None  # why this excuse among the minimal ones (--prefer demonstration)
     error: str | None = None  # why the demonstration could not be used (it ended the session)
     vocabulary: str | None = None  # the hand facts the demonstration was learned in, and where they came from
+    #: the demonstration checked against the request (a teach.check.DemonstrationCheck): its outcome and why
+    check: Any = None
+    asked_again: list[str] = field(default_factory=list)  # the request reworded after the last demonstration
+
+    @property
+    def outcome(self) -> str | None:
+        """The demonstration's outcome (accepted, partial, misdirected, unhelpful, inconsistent), or None."""
+        return None if self.check is None else self.check.outcome
 
     def excuse_text(self) -> str | None:
         """How the request relates to the minimal excuse when it asks for only part of it, else None."""
@@ -71,6 +83,9 @@ class Round:
             "learned_actions": self.learned_actions, "request_met": self.request_met,
             "unmet": [str(c) for c in self.unmet], "solvable_after": self.solvable_after, "files": self.files,
             "preference": self.preference, "error": self.error, "vocabulary": self.vocabulary,
+            "asked_again": self.asked_again, "outcome": self.outcome,
+            "outcome_reason": None if self.check is None else self.check.reason,
+            "check": None if self.check is None else self.check.to_dict(),
         }
 
 
@@ -97,7 +112,7 @@ class TeachSession:
         return self.status in ("solved", "already-solvable")
 
     def to_dict(self) -> dict[str, Any]:
-        """The body of ``session.json`` (format ``guided-lfd/teach``, version 1)."""
+        """The body of ``session.json`` (format ``guided-lfd/teach``, version :data:`SESSION_VERSION`)."""
         return {"robot": self.robot, "problem": self.problem, "solved": self.solved, "status": self.status,
                 "rounds": [r.to_dict() for r in self.rounds],
                 "plan": None if self.plan is None else [str(s) for s in self.plan],
@@ -106,7 +121,7 @@ class TeachSession:
 
     def to_json(self) -> str:
         """The ``session.json`` document."""
-        return json_document("teach", self.to_dict())
+        return json_document("teach", self.to_dict(), version=SESSION_VERSION)
 
     def to_markdown(self) -> str:
         """``session.md``: the rounds as a person reads them."""
@@ -115,6 +130,7 @@ class TeachSession:
             lines += [f"Why: {self.reason}.", ""]
         for r in self.rounds:
             lines += [f"## Round {r.index}", "", "Request: " + "; ".join(r.request_text) + ".", ""]
+            lines += [f"- asked again: {line}" for line in r.asked_again]
             if not r.excuse:
                 lines.append("- no excuse exists: a new skill that makes this true must be demonstrated")
             elif r.excuse_text():
@@ -132,6 +148,8 @@ class TeachSession:
                 lines.append(f"- the demonstration could not be used: {r.error}")
             if r.request_met is False:
                 lines.append("- the demonstration did not make: " + ", ".join(str(c) for c in r.unmet))
+            if r.check is not None:
+                lines.append(f"- outcome: **{r.check.outcome}**: {r.check.reason}")
             lines.append("")
         if self.plan is not None:
             lines += ["## The robot's plan", ""] + [f"{i}. `{s}`" for i, s in enumerate(self.plan, 1)] + [""]
