@@ -200,11 +200,23 @@ def _translating(src: SourceMap, warnings: list[str]):
             warnings.append(f"{src.path}: warning: {text}")
 
 
+def _cost_alone_in_and(lists: list[Any]) -> list[Any]:
+    """``lists`` with an action's effect that is a cost alone, ``:effect (increase (total-cost) 1)``, written as
+    ``(and (increase ...))``: valid PDDL, on which the translator's parser fails (an AssertionError)."""
+    for item in lists:
+        if isinstance(item, list) and item[:1] == [":action"]:
+            for k in range(len(item) - 1):
+                effect = item[k + 1]
+                if item[k] == ":effect" and isinstance(effect, list) and effect[:1] == ["increase"]:
+                    item[k + 1] = ["and", effect]
+    return lists
+
+
 def _parse_domain_lists(src: SourceMap, warnings: list[str]) -> tuple:
     from fast_downward.translate.pddl_parser.parsing_functions import Context, parse_domain_pddl
 
     with _translating(src, warnings):
-        return tuple(parse_domain_pddl(Context(), _nested(src.define())))
+        return tuple(parse_domain_pddl(Context(), _cost_alone_in_and(_nested(src.define()))))
 
 
 def read_domain(src: SourceMap, path: str) -> Domain:

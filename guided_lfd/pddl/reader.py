@@ -902,7 +902,7 @@ def _task_of(dsrc: SourceMap, dname: str, psrc: SourceMap, pname: str) -> tuple[
         domain = adl_reader.read_domain(dsrc, dname)
         _check_domain_reference(psrc, domain)
         return domain, adl_reader.read_problem(psrc, pname, domain)
-    if adl_reader.needs_adl(psrc):  # a STRIPS domain, an ADL goal
+    if adl_reader.needs_adl(psrc) or _equality_in_goal(psrc):  # a STRIPS domain, an ADL goal (or one with '=')
         domain = _strips_domain(dsrc, dname)
         _check_domain_reference(psrc, domain)
         return domain, adl_reader.read_problem(psrc, pname, domain)
@@ -921,6 +921,13 @@ def _task_of(dsrc: SourceMap, dname: str, psrc: SourceMap, pname: str) -> tuple[
             return domain, adl_reader.read_problem(psrc, pname, domain)
 
         return _or_raise(exc, read)
+
+
+def _equality_in_goal(psrc: SourceMap) -> bool:
+    """Whether the problem's goal compares objects, ``(= a b)``: valid PDDL with ``:equality`` that the STRIPS
+    paths do not read (their goal is a list of atoms); the ADL reader's goal formula holds it."""
+    goal = psrc.section(":goal")
+    return goal is not None and any(not isinstance(node, Token) and node.head() == EQUALITY for node in goal.walk())
 
 
 def _strips_task(dsrc: SourceMap, dname: str, psrc: SourceMap, pname: str) -> tuple[Domain, Problem]:

@@ -94,8 +94,10 @@ def action_to_pddl(action: ActionSchema, indent: str = "  ") -> str:
     effects += [effect_text(eff) for eff in action.effects]
     if action.cost is not None:
         effects.append(f"(increase ({TOTAL_COST}) {action.cost})")
-    # An empty effect is '(and)': tarski's grammar has no '()' there.
-    lines.append(f"{indent}  :effect {_conj(effects) if effects else '(and)'})")
+    # An empty effect is '(and)': tarski's grammar has no '()' there. A cost alone stays in '(and ...)': Fast
+    # Downward's parser fails on an action whose whole effect is '(increase ...)' (an AssertionError).
+    text = _conj(effects) if effects and (len(effects) > 1 or action.cost is None) else f"(and {' '.join(effects)})"
+    lines.append(f"{indent}  :effect {text})")
     return "\n".join(lines)
 
 

@@ -1,0 +1,5 @@
+(define (problem make-p)
+  (:domain cost-alone)
+  (:init (= (total-cost) 0))
+  (:goal (p))
+  (:metric minimize (total-cost)))
