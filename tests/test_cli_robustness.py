@@ -233,7 +233,8 @@ def test_action_named_like_a_reversed_action_is_fine(runner, app, tmp_path):
     domain.write_text(open(DOMAIN).read().replace("(:action put_on", "(:action take__reversed"))
     result = runner.invoke(app, ["excuse", str(domain), PROBLEM])
     assert result.exit_code == 0
-    assert result.stderr.count("\n") <= 1  # no translator warnings
+    said = [line for line in result.stderr.splitlines() if not line.startswith("held fixed")]
+    assert len(said) <= 1  # the search's effort; no translator warnings
 
 
 def test_endless_input_is_refused(runner, app):
