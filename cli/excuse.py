@@ -13,7 +13,7 @@ from cli.common import (
 )
 from guided_lfd import errors
 from guided_lfd.deadline import deadline_after, watchdog
-from guided_lfd.excuse.document import candidate_text, cut_short, excuse_summary
+from guided_lfd.excuse.document import candidate_text, cut_short, excuse_summary, held_fixed_text
 from guided_lfd.excuse.engine import ExcuseOptions, find_excuses
 from guided_lfd.excuse.report import ExcuseReport
 from guided_lfd.excuse.progress import Progress as SearchProgress
@@ -189,25 +189,11 @@ def excuse(
 def _diagnostics(report: ExcuseReport, model: Domain | None) -> None:
     """On stderr: what the excuse held fixed and why, and the search's effort."""
     stats = report.statistics
-    held = held_line(stats.structure_held or {}, stats.fixed_predicates or [], report.spellings, model)
+    held = held_fixed_text(report, model)
     if held:
         ui.info_plain(held)
     ui.info(f"[dim]{report.strategy} search: {stats.candidates or 0} candidate(s), "
             f"{stats.planner_calls or 0} reachability check(s), {stats.time_s or 0:.2f} s[/]")
-
-
-def held_line(structure: dict[str, str], fixed: list[str], spellings: dict[str, str], model: Domain | None) -> str:
-    """One line saying what the excuse held fixed and why, and the switch that frees it (empty: nothing)."""
-    parts = [f"{spellings.get(name, name)} ({why})" for name, why in structure.items()]
-    if parts:
-        return (f"held fixed as the world's structure: {'; '.join(parts)}; --change-structure lets the excuse "
-                "change them")
-    others = [spellings.get(name, name) for name in fixed]
-    if others and model is not None:
-        them = "it" if len(others) == 1 else "them"
-        return (f"held fixed: {', '.join(others)} (no action of the model {model.name} changes {them}); without "
-                f"--fixed-from or --human the excuse may change {them}")
-    return ""
 
 
 def _prefer(report: ExcuseReport, human, dom, prob, keep_all: bool, deadline: float | None) -> None:

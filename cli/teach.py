@@ -189,6 +189,8 @@ def teach(
                  *([f"  {rnd.excuse_text()}"] if rnd.excuse_text() else []), *(f"  why: {w}" for w in rnd.why)]
         if rnd.keep_text:
             lines.append("  leave as it is: " + "; ".join(rnd.keep_text))
+        if rnd.held:
+            lines.append(f"  {rnd.held}")
         for line in lines:
             typer.echo(line, err=True) if prompt else ui.info_plain(line)
 

@@ -100,3 +100,14 @@ def test_the_lamps_human_model_keeps_on_and_off_apart(runner, app):
                                  str(light / "human.pddl"), "--invariants-from", str(light / "human.pddl"), "--json"])
     assert result.exit_code == 0
     assert changes(result) == ["-(off desk-lamp)", "+(on desk-lamp)"]
+
+
+def test_teach_says_what_each_rounds_excuse_held_fixed_and_teaches_the_door(runner, app, tmp_path):
+    result = runner.invoke(app, ["teach", str(ROBOT), str(PROBLEM), "--simulate", str(HUMAN), "-o",
+                                 str(tmp_path / "session")])
+    assert result.exit_code == 0, result.stderr
+    lines = result.stderr.splitlines()
+    assert lines[0] == "round 1, please demonstrate: Door-open office-door"
+    assert ("  held fixed: connects (no action of the model courier changes it); without --fixed-from or --human "
+            "the excuse may change it") in lines
+    assert json.loads((tmp_path / "session" / "session.json").read_text())["status"] == "solved"

@@ -18,7 +18,25 @@ from guided_lfd.pddl.model import Atom, Domain, Problem
 if TYPE_CHECKING:  # the report's types, for annotations: the report calls these renderers
     from guided_lfd.excuse.report import Excuse, ExcuseReport
 
-__all__ = ["candidate_text", "excuse_document", "excuse_summary", "excuse_text", "read_excuse", "cut_short"]
+__all__ = ["candidate_text", "excuse_document", "excuse_summary", "excuse_text", "held_fixed_text", "read_excuse",
+           "cut_short"]
+
+
+def held_fixed_text(report: ExcuseReport, model: Domain | None = None) -> str:
+    """One line saying what the excuse held fixed and why, and the switch that frees it (empty: nothing held).
+
+    ``model`` is the domain that said what can change (``--fixed-from``, ``--human``), if any."""
+    stats, spellings = report.statistics, report.spellings
+    parts = [f"{spellings.get(name, name)} ({why})" for name, why in (stats.structure_held or {}).items()]
+    if parts:
+        return (f"held fixed as the world's structure: {'; '.join(parts)}; --change-structure lets the excuse "
+                "change them")
+    others = [spellings.get(name, name) for name in stats.fixed_predicates or []]
+    if others and model is not None:
+        them = "it" if len(others) == 1 else "them"
+        return (f"held fixed: {', '.join(others)} (no action of the model {model.name} changes {them}); without "
+                f"--fixed-from or --human the excuse may change {them}")
+    return ""
 
 
 def excuse_summary(report: ExcuseReport, spellings: dict[str, str]) -> str:

@@ -8,6 +8,7 @@ from pathlib import Path
 from typing import Callable
 
 from guided_lfd.deadline import seconds_left
+from guided_lfd.excuse.document import held_fixed_text
 from guided_lfd.excuse.engine import ExcuseOptions, check_option_names, find_excuses
 from guided_lfd.excuse.status import ExcuseStatus
 from guided_lfd.io import write_text
@@ -126,6 +127,7 @@ def _rounds(robot: Domain, problem: Problem, demonstrator: Demonstrator, out: Pa
                    excuse_request(k, current, task, report, human if prefer else None, human if redundancy else None,
                                   human, deadline))
             rnd.files.update(excuse=str(folder / "excuse.json"), picture=str(folder / "excuse.svg"))
+            rnd.held = held_fixed_text(report, options.fixed_from)
             if rounds:  # after a partial or unhelpful demonstration: what is still missing, in the domain's words
                 rnd.asked_again = asked_again(rounds[-1], rnd.request, report.spellings)
             rounds.append(rnd)

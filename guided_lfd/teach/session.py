@@ -60,6 +60,7 @@ class Round:
     #: the demonstration checked against the request (a teach.check.DemonstrationCheck): its outcome and why
     check: Any = None
     asked_again: list[str] = field(default_factory=list)  # the request reworded after the last demonstration
+    held: str = ""  # what the round's excuse held fixed and why, in one line (said to the teacher, not stored)
 
     @property
     def outcome(self) -> str | None:
