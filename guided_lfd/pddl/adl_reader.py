@@ -276,7 +276,10 @@ def read_problem(psrc: SourceMap, path: str, domain: Domain) -> Problem:
     objects = {o.name: _type_name(o.type_name) for o in fd_objects}
     init = frozenset(Atom(a.predicate, tuple(a.args)) for a in fd_init
                      if isinstance(a, pddl.Atom) and a.predicate != EQUALITY)
-    goal, goal_condition = _precondition(from_translator(fd_goal))
+    formula = from_translator(fd_goal)
+    goal, goal_condition = _precondition(formula)
+    if goal_condition is None and any(lit.atom.predicate == EQUALITY for lit in goal):
+        goal_condition = formula  # '(= a b)' is no atom of a state: the formula's paths evaluate it, the STRIPS ones not
     from guided_lfd.pddl import costs
 
     values = costs.read_function_values(psrc, domain, objects) if domain.functions else {}
