@@ -147,3 +147,13 @@ def test_fixed_from_fixes_what_no_action_of_that_domain_changes(runner, app):
     assert all("graspable" not in c["atom"] for e in every for c in e["changes"])
     every_change = json.loads(run(runner, app, *kitchen(1), "--change-structure", "--json").stdout)
     assert doc["statistics"]["changeable_atoms"] < every_change["statistics"]["changeable_atoms"]
+
+
+def test_a_goal_that_can_never_hold_is_said_in_the_domains_terms_not_an_internal_atom(runner, app):
+    """(not (= a a)): the translator proves the goal unreachable; the reason names no internal atom."""
+    fuzz = DATA / "adl" / "fuzz"
+    result = run(runner, app, fuzz / "goal-equality.pddl", fuzz / "goal-equality-self.pddl")
+    assert result.exit_code == 11
+    assert "guided-lfd-unreachable-goal" not in result.stderr
+    assert ("no excuse exists: the goal can never hold, in any state (Fast Downward's translator proves it: an "
+            "equality or another condition no state satisfies); no demonstration helps") in result.stderr

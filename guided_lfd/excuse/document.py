@@ -14,6 +14,7 @@ from guided_lfd.excuse.change import Change, describe_change
 from guided_lfd.io import read_json_document
 from guided_lfd.excuse.status import ExcuseStatus
 from guided_lfd.pddl.model import Atom, Domain, Problem
+from guided_lfd.planning.task import UNREACHABLE_GOAL
 
 if TYPE_CHECKING:  # the report's types, for annotations: the report calls these renderers
     from guided_lfd.excuse.report import Excuse, ExcuseReport
@@ -52,6 +53,9 @@ def excuse_summary(report: ExcuseReport, spellings: dict[str, str]) -> str:
         while_fixed = f" with {', '.join(fixed)} held fixed" if fixed else ""
         if structure:
             while_fixed += f"{' and' if fixed else ' with'} the world's structure ({', '.join(structure)}) kept"
+        if any(g.atom == UNREACHABLE_GOAL for g in report.unachievable_goals):
+            return ("no excuse exists: the goal can never hold, in any state (Fast Downward's translator proves it: "
+                    "an equality or another condition no state satisfies); no demonstration helps")
         if report.unachievable_goals:
             goals = ", ".join(str(g) for g in report.unachievable_goals)
             return (f"no excuse exists: no robot skill achieves {goals}{while_fixed}, and no change of the initial "

@@ -23,8 +23,8 @@ from guided_lfd.errors import Location, SearchTimeout, TaskTooLarge
 from guided_lfd.pddl.model import Atom, Domain, Problem
 from guided_lfd.pddl.translator import quiet, translator_options, translator_task
 from guided_lfd.planning.relaxation import RelaxedTask
-from guided_lfd.planning.task import (MAX_GROUND_ACTIONS, AxiomClosure, GroundAction, GroundAxiom, GroundEffect,
-                                      GroundTask, ground_atoms, mask_of)
+from guided_lfd.planning.task import (MAX_GROUND_ACTIONS, UNREACHABLE_GOAL, AxiomClosure, GroundAction, GroundAxiom,
+                                      GroundEffect, GroundTask, ground_atoms, mask_of)
 
 
 def _changeable(task: Any, domain: Domain, problem: Problem, predicates: set[str]) -> None:
@@ -103,10 +103,9 @@ def ground_adl(domain: Domain, problem: Problem, deadline: float | None = None,
     init = mask_of(index[a] for a in problem.init if a in index)
     goal_pos, goal_neg = _masks(fd_goal, index) if reachable and fd_goal is not None else (None, 0)
     if goal_pos is None:  # the translator proved the goal unreachable
-        never = Atom("guided-lfd-unreachable-goal")
-        index[never] = len(atoms)
-        atoms.append(never)
-        goal_pos, goal_neg = 1 << index[never], 0
+        index[UNREACHABLE_GOAL] = len(atoms)
+        atoms.append(UNREACHABLE_GOAL)
+        goal_pos, goal_neg = 1 << index[UNREACHABLE_GOAL], 0
     task = GroundTask(domain, problem, atoms, index, init, goal_pos, goal_neg, actions, closure)
     task.init = task.close(init)
     return task

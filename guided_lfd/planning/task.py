@@ -17,6 +17,9 @@ from typing import Iterable
 from guided_lfd.errors import Location, TaskTooLarge
 from guided_lfd.pddl.model import Atom, Domain, Problem, objects_by_type
 
+#: The goal of a task whose goal the translator proves can never hold (an atom nothing makes true).
+UNREACHABLE_GOAL = Atom("guided-lfd-unreachable-goal")
+
 #: Grounding limits: beyond them the task is refused (exit 21) instead of
 #: exhausting memory.  Both are far above what the searches can handle.
 MAX_GROUND_ATOMS = 1_000_000
