@@ -417,25 +417,24 @@ class RelaxedExcuseTask:
         first = [initial_h]
 
         def hmax_of(cost):
+            """h^max and its costliest goal fact (the first of equals, as np.argmax)."""
             if first[0] is not None:
                 h, first[0] = first[0], None
-                return h
-            h = self._hmax_lists(true, cost) if small else self._hmax(true, cost)
-            if self._first_hmax is None:
-                self._first_hmax = h
-            return h
+            else:
+                h = self._hmax_lists(true, cost) if small else self._hmax(true, cost)
+                if self._first_hmax is None:
+                    self._first_hmax = h
+            return h, (max(goal, key=lambda g: h[g]) if small else int(goal[int(np.argmax(h[goal]))]))
 
-        def goal_fact(h) -> int:
-            return max(goal, key=lambda g: h[g]) if small else int(goal[int(np.argmax(h[goal]))])  # first maximum
-
-        def cut_of(h, cost) -> list[int]:
+        def cut_of(h_goal, cost) -> list[int]:
+            h, goal_fact = h_goal
             if small:
-                zone = self._goal_zone_lists(goal_fact(h), h, last)
+                zone = self._goal_zone_lists(goal_fact, h, last)
                 return sorted(f for f in zone if cost[f] > 0 and cost[f] != INF)
-            zone = self._goal_zone(goal_fact(h), h, self._pcf(h, last))
+            zone = self._goal_zone(goal_fact, h, self._pcf(h, last))
             return np.flatnonzero(zone & (cost > 0) & np.isfinite(cost)).tolist()
 
-        total, cuts = lmcut(hmax_of, lambda h: h[goal_fact(h)], cut_of, cost)
+        total, cuts = lmcut(hmax_of, lambda h_goal: h_goal[0][h_goal[1]], cut_of, cost)
         if total == INF:
             return Bound(INF, [], [])
         atoms = self.fact_atom_list

@@ -93,6 +93,7 @@ class _World:
         self.typed = any(t != "object" for t in self.objects.values())
         self.true_args = _true_args(problem)
         self.moved = set().union(*(_moved_types(d) for d in (domain, *models)))
+        self._on_the_way: dict[frozenset[str], bool] = {}  # by pair: each of its two predicates asks
         self.places = _place_types(domain, static, models, self.true_args)
 
     def holders(self, name: str) -> set[str]:
@@ -127,6 +128,12 @@ class _World:
         """Whether a skill that changes ``pair`` seems missing: the delete-relaxed robot does not reach the goal
         with the pair as it is, and does with every atom of the pair made true (a door the robot cannot open,
         ``door-open`` beside ``door-closed``)."""
+        key = frozenset(pair)
+        if key not in self._on_the_way:
+            self._on_the_way[key] = self._freeing_reaches_the_goal(key)
+        return self._on_the_way[key]
+
+    def _freeing_reaches_the_goal(self, pair: frozenset[str]) -> bool:
         task = self.ground_task(pair)
         if task is None or _relaxed_reaches(task.actions, task.init, task.goal_pos):
             return False
@@ -136,7 +143,7 @@ class _World:
                 freed |= 1 << i
         return _relaxed_reaches(task.actions, freed, task.goal_pos)
 
-    def ground_task(self, pair: tuple[str, ...]):
+    def ground_task(self, pair: frozenset[str]):
         """The task grounded with the other static predicates kept as they are (None: too large to ground)."""
         from guided_lfd.errors import TaskTooLarge
         from guided_lfd.planning.grounding import ground
@@ -165,11 +172,9 @@ class _World:
 
 def _relaxed_reaches(actions, state: int, goal: int) -> bool:
     """Whether ``actions``, deletes and negative preconditions ignored, reach the ``goal`` atoms from ``state``."""
-    from guided_lfd.planning.search import reachable_actions
+    from guided_lfd.planning.search import relaxed_reach
 
-    for act in reachable_actions(actions, state):
-        state |= act.add
-    return goal & ~state == 0
+    return goal & ~relaxed_reach(actions, state)[0] == 0
 
 
 def placing_predicates(source: Domain, problem: Problem) -> dict[str, str]:

@@ -155,10 +155,10 @@ def lmcut(hmax_of: Callable[[Any], Any], goal_value: Callable[[Any], float],
     """LM-cut (Helmert and Domshlak 2009) over any relaxed task: the lower bound and its cuts (each a
     disjunctive landmark with the cost it took).
 
-    Repeats: h^max under ``cost`` (``hmax_of(cost)``); stop when the goal's value (``goal_value(h)``) is
-    infinite (INF: unsolvable) or 0; else take the cut ``cut_of(h, cost)`` (the positive-cost entries, actions
-    or changes, that enter the goal zone), add its cheapest cost to the bound and take that cost off each.
-    ``cost`` is consumed.
+    Repeats: h^max under ``cost`` (``hmax_of(cost)``, with whatever its cut needs beside it: the precondition
+    choice, the goal fact); stop when the goal's value (``goal_value(h)``) is infinite (INF: unsolvable) or 0;
+    else take the cut ``cut_of(h, cost)`` (the positive-cost entries, actions or changes, that enter the goal
+    zone), add its cheapest cost to the bound and take that cost off each.  ``cost`` is consumed.
     """
     total: float = 0
     cuts: list[tuple[list[int], float]] = []
@@ -242,15 +242,9 @@ class RelaxedTask:
         has one of its actions; the artificial goal action never is one, being free).
         """
         true = self._true_facts(state)
-        choice: list[list[int]] = []  # the precondition choice of the last h^max pass
-
-        def hmax_of(cost: list[int]) -> list[float]:
-            h, pcf = self._hmax(true, cost)
-            choice[:] = [pcf]
-            return h
-
-        total, found = lmcut(hmax_of, lambda h: h[1], lambda h, cost: self._cut(true, choice[0], cost),
-                             list(self.base_costs))
+        # Each h^max pass comes with its precondition choice, which the cut follows; fact 1 is the goal.
+        total, found = lmcut(lambda cost: self._hmax(true, cost), lambda h_pcf: h_pcf[0][1],
+                             lambda h_pcf, cost: self._cut(true, h_pcf[1], cost), list(self.base_costs))
         if cuts is not None:
             cuts.extend(cut for cut, _ in found)
         return total

@@ -53,6 +53,16 @@ def reachable_actions(actions: Sequence[GroundAction], state: int) -> list[Groun
     return [act for act, left in zip(actions, unsat) if not left]
 
 
+def relaxed_reach(actions: Sequence[GroundAction], state: int) -> tuple[int, int]:
+    """(``state`` with every atom the actions a delete-relaxed run from it reaches add: no atom outside it is ever
+    true, a proof; the atoms those actions delete), negative preconditions taken as satisfiable."""
+    reached, deletable = state, 0
+    for act in reachable_actions(actions, state):
+        reached |= act.add
+        deletable |= act.delete
+    return reached, deletable
+
+
 def relevant_actions(task: GroundTask, actions: Sequence[GroundAction]) -> list[GroundAction]:
     """The actions backward relevance from the goal keeps (see :func:`~guided_lfd.planning.relevance.relevance`)."""
     return relevance(task, list(actions))[1]

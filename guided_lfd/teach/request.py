@@ -11,8 +11,7 @@ from guided_lfd.excuse.change import Change, describe_change, excuse_state
 from guided_lfd.excuse.engine import ExcuseOptions, find_excuses
 from guided_lfd.pddl.model import Atom, Domain, Problem
 from guided_lfd.planning.validation import PlanStep
-from guided_lfd.planning.search import reachable_actions
-from guided_lfd.planning.task import GroundTask
+from guided_lfd.planning.search import relaxed_reach
 from guided_lfd.teach.session import Demonstrator, Round
 
 __all__ = ["keep_facts", "robot_vocabulary", "excuse_request", "new_skill_request", "no_excuse_reason",
@@ -191,7 +190,7 @@ def _what_it_lacks(taught: Domain, problem: Problem, learned: list[str], options
     from guided_lfd.planning.task import bits
 
     ground_task = ground(taught, problem, deadline=deadline)
-    reached, _ = _relaxed_reach(ground_task)
+    reached, _ = relaxed_reach(ground_task.actions, ground_task.init)
     true_somewhere = {ground_task.atoms[i].predicate for i in bits(reached)}
     for schema in taught.actions:
         if schema.name not in learned:
@@ -207,16 +206,6 @@ def _what_it_lacks(taught: Domain, problem: Problem, learned: list[str], options
     return None
 
 
-def _relaxed_reach(task: GroundTask) -> tuple[int, int]:
-    """(atoms some state reachable from ``task``'s initial state may hold, atoms some action there may delete),
-    ignoring deletes and negative preconditions: an atom outside the first is never true (a proof)."""
-    reached, deletable = task.init, 0
-    for act in reachable_actions(task.actions, task.init):
-        reached |= act.add
-        deletable |= act.delete
-    return reached, deletable
-
-
 def first_unreachable(domain: Domain, task: Problem, changes: list[Change]) -> Change | None:
     """The first of ``changes`` that no plan of ``domain`` makes from ``task``'s state on its own (a relaxed
     check first, then each change's own optimal plan), or None when each one alone can be made."""
@@ -224,7 +213,7 @@ def first_unreachable(domain: Domain, task: Problem, changes: list[Change]) -> C
     from guided_lfd.planning.grounding import ground
 
     ground_task = ground(domain, task)
-    reached, deletable = _relaxed_reach(ground_task)
+    reached, deletable = relaxed_reach(ground_task.actions, ground_task.init)
     for change in changes:
         i = ground_task.index.get(change.atom)
         if i is None:
