@@ -106,6 +106,16 @@ def excuse(
                                 "((at bot hall), no robot action moving it) in at most one place (default), or let "
                                 "the excuse put it in several.")
     ] = True,
+    skill_changes: Annotated[
+        str, typer.Option("--skill-changes", metavar="[on|off]",
+                          help="'on' (default): the excuse may also drop a learned precondition no demonstration "
+                               "tested ('-(ontable ?y) in unstack': show that skill once more where it is false); "
+                               "'off': state changes alone.")
+    ] = "on",
+    relax_prior: Annotated[
+        bool, typer.Option("--relax-prior", help="Skill changes may drop preconditions of the robot's given skills "
+                                                 "too (those without learned evidence).")
+    ] = False,
     verify: Annotated[
         bool, typer.Option("--verify", help="Re-verify the minimum: enumerate every cheaper change set and refuse "
                                             "each with the checker's own invariants and another planner (up to "
@@ -125,16 +135,7 @@ def excuse(
     robot's own skills reach the goal: the human then demonstrates only how to
     reach it. The robot's plan from the excuse state is printed, validated.
     """
-    if prefer not in (None, "demonstration"):
-        raise errors.OptionError(f"--prefer {prefer}: expected 'demonstration'")
-    if prefer and not human:
-        raise errors.OptionError("--prefer demonstration: needs the human model (--human DOMAIN)")
-    if slack and not (all_minimal or prefer):
-        raise errors.OptionError(f"--slack {slack}: needs --all or --prefer (it widens the excuses listed)")
-    if strategy not in STRATEGIES:
-        raise errors.OptionError(f"--strategy {strategy}: unknown strategy (expected one of: {', '.join(STRATEGIES)})")
-    if max_size is not None and max_size < 0:
-        raise errors.OptionError(f"--max-size {max_size}: expected a number of changes >= 0")
+    _check_choices(prefer, human, slack, all_minimal, strategy, max_size, skill_changes, relax_prior)
     time_limit = check_time_limit(time_limit)
     apply_memory_limit(memory_limit)
     check_files([domain, problem, invariants_from, fixed_from, human],
@@ -149,6 +150,7 @@ def excuse(
             invariants_from=parse_domain(invariants_from) if invariants_from else None,
             fixed_from=parse_domain(fixed_from) if fixed_from else None, started=started,
             verify=verify, change_structure=change_structure, one_place=one_place,
+            skill_changes=skill_changes.lower() == "on", relax_prior=relax_prior,
         )
         human_domain = parse_domain(human) if human else None
         if human_domain is not None:
@@ -185,6 +187,25 @@ def excuse(
     if code:
         raise typer.Exit(code)
 
+
+
+def _check_choices(prefer: str | None, human: str | None, slack: int | None, all_minimal: bool, strategy: str,
+                   max_size: int | None, skill_changes: str, relax_prior: bool) -> None:
+    """Options that contradict each other or take no such value, refused before anything is read."""
+    if prefer not in (None, "demonstration"):
+        raise errors.OptionError(f"--prefer {prefer}: expected 'demonstration'")
+    if prefer and not human:
+        raise errors.OptionError("--prefer demonstration: needs the human model (--human DOMAIN)")
+    if slack and not (all_minimal or prefer):
+        raise errors.OptionError(f"--slack {slack}: needs --all or --prefer (it widens the excuses listed)")
+    if strategy not in STRATEGIES:
+        raise errors.OptionError(f"--strategy {strategy}: unknown strategy (expected one of: {', '.join(STRATEGIES)})")
+    if max_size is not None and max_size < 0:
+        raise errors.OptionError(f"--max-size {max_size}: expected a number of changes >= 0")
+    if skill_changes.lower() not in ("on", "off"):
+        raise errors.OptionError(f"--skill-changes {skill_changes}: expected 'on' or 'off'")
+    if relax_prior and skill_changes.lower() == "off":
+        raise errors.OptionError("--relax-prior: needs skill changes (it contradicts --skill-changes off)")
 
 def _diagnostics(report: ExcuseReport, model: Domain | None) -> None:
     """On stderr: what the excuse held fixed and why, and the search's effort."""

@@ -43,6 +43,15 @@ class _Prompted:
                 return trace, states
             typer.echo(f"not found: {', '.join(missing)} (the trace and its .state.csv beside it)", err=True)
 
+    def answer_skill(self, request) -> str | None:
+        """A skill asked for once more: whether the teacher can do it there (no: the answer, yes: None)."""
+        try:
+            can = typer.confirm(f"Can {' '.join((request.step.action, *request.step.args))} be done here?",
+                                default=True, err=True)
+        except typer.Abort:
+            return None  # no answer: the trace prompt that follows decides
+        return None if can else "the teacher answered at the prompt that it cannot be done there"
+
     def why_none(self, state, request, problem) -> str:
         """The demonstrator stopped: an empty answer at the prompt."""
         return "the demonstrator gave no trace at the prompt (an empty answer stops the session)"
@@ -63,6 +72,16 @@ class _Chain:
         if self.simulate is not None:
             return self.simulate.demonstrate(folder, state, request, problem)
         return _Prompted().demonstrate(folder, state, request, problem) if self.prompt else None
+
+    def answer_skill(self, request) -> str | None:
+        """The answer to a skill asked for once more: ``--demo cannot`` next, the simulated human's, the prompt's."""
+        from guided_lfd.teach import GivenTraces
+
+        if self.traces:
+            return GivenTraces(self.traces).answer_skill(request)
+        if self.simulate is not None:
+            return self.simulate.answer_skill(request)
+        return _Prompted().answer_skill(request) if self.prompt else None
 
     def why_none(self, state, request, problem) -> str:
         """Why :meth:`demonstrate` gave None: the simulated human's reason, the prompt's, or no demonstrator."""
@@ -119,7 +138,9 @@ def teach(
                                                "session.md.")] = Path("session"),
     demo: Annotated[list[Path] | None, typer.Option("--demo", parser=path_name, metavar="TRACE",
                                                     help="A demonstration's trace CSV (its state file beside it, "
-                                                         "TRACE.state.csv); repeatable, one per round, in order.")] = None,
+                                                         "TRACE.state.csv); repeatable, one per round, in order; "
+                                                         "'cannot' answers a round that asks for a skill once "
+                                                         "more that it cannot be done there.")] = None,
     simulate: Annotated[str | None, typer.Option("--simulate", metavar="HUMAN",
                                                  help="Simulate the demonstrator with this human domain: its "
                                                       "shortest plan to each request, rendered as a hand trace.")] = None,
@@ -208,6 +229,8 @@ def teach(
 def _report(session_obj, session: Path) -> None:
     """Each round on stderr, then the session's end: its exit code and, when not taught, why."""
     for r in session_obj.rounds:
+        if r.answer:  # a skill asked for once more, answered instead of shown
+            ui.info_plain(f"round {r.index}: the teacher answered: {r.answer}; the precondition is confirmed")
         if r.demonstration_length is None:
             continue
         ui.info(f"round {r.index}: {'; '.join(r.request_text)}; demonstrated {r.demonstration_length} action(s), "

@@ -11,6 +11,9 @@ The robot's prior domain and one or more learned domains become one domain:
   :class:`MergeError`.
 * actions equal up to a renaming (and reordering) of their parameters are
   kept once, under the first name; the later copy is reported as a duplicate.
+* two learned actions with the same name, parameters and effects are one
+  skill shown in more situations: it is kept once, requiring what both
+  require, its evidence summed (a precondition one of them lacks was varied).
 * two different actions with the same name are both kept: the later one is
   renamed (``open_drawer_2``) and the clash reported.
 * every action keeps a comment saying which file (and which action there) it
@@ -24,7 +27,9 @@ from dataclasses import dataclass, field, replace
 
 from guided_lfd.errors import Location, MergeError
 from guided_lfd.pddl.formula import ConditionalEffect, substitute
-from guided_lfd.pddl.model import ActionSchema, Atom, Domain, Predicate, common_supertype, type_ancestors
+from guided_lfd.pddl.evidence import EVIDENCE_HEAD
+from guided_lfd.pddl.model import (ActionSchema, Atom, Domain, Evidence, Predicate, common_supertype,
+                                   type_ancestors)
 
 #: Actions with more parameters than this are compared by position only
 #: (all orderings of 8 parameters would be 40320 comparisons per pair).
@@ -43,6 +48,8 @@ class MergeResult:
     refined: list[str] = field(default_factory=list)
     #: skills without a cost effect given cost 1 in a library with action costs
     costed: list[str] = field(default_factory=list)
+    #: learned skills shown again in another situation, kept once with the preconditions both require
+    generalised: list[str] = field(default_factory=list)
 
     def locate(self, action: str) -> Location:
         """Where a merged action is written in the file it came from."""
@@ -53,8 +60,8 @@ class MergeResult:
 
     @property
     def notes(self) -> list[str]:
-        """Every decision, in the order: refinements, duplicates, renames, costs given."""
-        return [*self.refined, *self.duplicates, *self.renamed, *self.costed]
+        """Every decision, in the order: refinements, generalisations, duplicates, renames, costs given."""
+        return [*self.refined, *self.generalised, *self.duplicates, *self.renamed, *self.costed]
 
 
 def _merge_types(merged: dict[str, str | None], declared_by_prior: set[str], domain: Domain,
@@ -197,13 +204,57 @@ def _comments_above(domain: Domain, name: str) -> list[str]:
         if not stripped.startswith(";"):
             break
         out.append(stripped.lstrip(";").strip())
-    return [c for c in reversed(out) if c]
+    notes = [c for c in reversed(out) if c]
+    # The evidence comment is the action's own (the writer prints it again from its evidence), not an origin.
+    heads = [i for i, c in enumerate(notes) if c.startswith(EVIDENCE_HEAD)]
+    return notes[:heads[0]] if heads else notes
 
 
 def _origin(action: ActionSchema, domain: Domain) -> str:
     where = f"from {domain.path} (action {action.name})"
     notes = ([action.origin] if action.origin else []) + _comments_above(domain, action.name)
     return where + "".join(f"\n  {n}" for n in notes)
+
+
+def _positional(kept: ActionSchema, action: ActionSchema) -> dict[str, str] | None:
+    """``action``'s parameters renamed to ``kept``'s by position, if their types agree (else None)."""
+    if [t for _, t in kept.params] != [t for _, t in action.params]:
+        return None
+    return {v: w for (v, _), (w, _) in zip(action.params, kept.params)}
+
+
+def _shown_again(kept: ActionSchema, action: ActionSchema) -> bool:
+    """Whether two learned STRIPS actions are one skill shown in more situations: both with evidence, the same
+    parameters (by position) and the same effects; only their preconditions differ."""
+    if not kept.evidence or not action.evidence or kept.is_adl or action.is_adl or kept.cost != action.cost:
+        return False
+    binding = _positional(kept, action)
+    return (binding is not None and {a.substitute(binding) for a in action.add} == set(kept.add)
+            and {a.substitute(binding) for a in action.delete} == set(kept.delete))
+
+
+def generalise(kept: ActionSchema, action: ActionSchema) -> ActionSchema:
+    """One learned skill from two of its learnings (:func:`_shown_again`): the preconditions both require, each
+    condition's evidence summed (a positive condition one learning lacks was false there: the learners look at
+    every atom over the parameters), the teacher's answers kept."""
+    binding = _positional(kept, action)
+    assert binding is not None
+    other = {e.literal.substitute(binding): e for e in action.evidence}
+    mine = {e.literal: e for e in kept.evidence}
+    n_kept = max(e.demonstrations for e in kept.evidence)
+    n_other = max(e.demonstrations for e in action.evidence)
+    pre = {l.substitute(binding) for l in action.precondition}
+    evidence = []
+    for lit in dict.fromkeys([*mine, *other]):
+        a, b = mine.get(lit), other.get(lit)
+        if (a is None or b is None) and not lit.positive:
+            continue  # a learner that did not record a negative condition may not have looked for one: no claim
+        confirmed = bool(a and a.confirmed) or bool(b and b.confirmed)
+        evidence.append(Evidence(lit, (a.shown if a else 0) + (b.shown if b else 0), n_kept + n_other, confirmed))
+    kept_pre = tuple(l for l in kept.precondition if l in pre)
+    both = {l for l in kept_pre}
+    evidence = [e for e in evidence if e.literal in both or e.varied]
+    return replace(kept, precondition=kept_pre, evidence=tuple(evidence))
 
 
 def merge_domains(domains: list[Domain], name: str | None = None) -> MergeResult:
@@ -267,6 +318,14 @@ def _merge_actions(domains: list[Domain], result: MergeResult) -> list[ActionSch
     costed = any(domain.functions for domain in domains)
     for domain in domains:
         for action in domain.actions:
+            shown = next((kept for kept in actions if kept.name == action.name and _shown_again(kept, action)), None)
+            if shown is not None:
+                result.generalised.append(f"{action.name} ({domain.path}) is {shown.name} shown in another "
+                                          "situation: kept once, requiring what both require")
+                generalised = generalise(shown, action)
+                actions[actions.index(shown)] = replace(
+                    generalised, origin=f"{shown.origin}\nalso {_origin(action, domain)}")
+                continue
             twin = next((kept for kept in actions if same_up_to_renaming(kept, action)), None)
             if twin is not None:
                 result.duplicates.append(

@@ -164,10 +164,10 @@ def test_evaluate_and_teach_measure_a_demonstration_alike(runner, app, tmp_path)
     assert demo["excuse_reached"] is True and demo["misdirected"] == rnd["check"]["misdirected"]
 
 
-@pytest.mark.parametrize("version", [1, 2])
-def test_a_previous_session_of_either_version_is_replaced(runner, app, tmp_path, version):
+@pytest.mark.parametrize("version", [1, 2, 3])
+def test_a_previous_session_of_any_version_is_replaced(runner, app, tmp_path, version):
     first, doc = _teach(runner, app, tmp_path, "wrong-object")
     record = tmp_path / "session.json"
-    record.write_text(record.read_text().replace('"format_version": 2', f'"format_version": {version}'))
+    record.write_text(record.read_text().replace('"format_version": 3', f'"format_version": {version}'))
     again, doc = _teach(runner, app, tmp_path, "wrong-object")
-    assert again.exit_code == 0 and doc["format_version"] == 2, again.output
+    assert again.exit_code == 0 and doc["format_version"] == 3, again.output

@@ -24,11 +24,11 @@ ROUND_KEYS = {"round": int, "excuse": list, "request": list, "request_text": lis
               "request_met": (bool, type(None)), "unmet": list, "solvable_after": (bool, type(None)), "files": dict,
               "preference": (str, type(None)), "error": (str, type(None)), "vocabulary": (str, type(None)),
               "asked_again": list, "outcome": (str, type(None)), "outcome_reason": (str, type(None)),
-              "check": (dict, type(None))}
+              "check": (dict, type(None)), "skill_request": (dict, type(None)), "answer": (str, type(None))}
 
 
 def _check_schema(doc: dict) -> None:
-    assert set(doc) == set(SESSION_KEYS) and (doc["format"], doc["format_version"]) == ("guided-lfd/teach", 2)
+    assert set(doc) == set(SESSION_KEYS) and (doc["format"], doc["format_version"]) == ("guided-lfd/teach", 3)
     for key, kind in SESSION_KEYS.items():
         assert isinstance(doc[key], kind), key
     for rnd in doc["rounds"]:

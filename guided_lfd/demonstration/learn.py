@@ -534,7 +534,7 @@ def learned_skills(domain: Domain, known: set[str]) -> list[dict]:
             continue
         required, varied = action.learned_evidence()
         shown = {e.literal: e.to_json() for e in required}
-        unknown = {"shown": None, "demonstrations": None, "varied": None}  # a precondition of no recorded evidence
+        unknown = {"shown": None, "demonstrations": None, "varied": None, "confirmed": None}  # a precondition of no recorded evidence
         out.append({
             "name": action.name,
             "parameters": [{"name": v, "type": t} for v, t in action.params],

@@ -10,7 +10,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Any
 
 from guided_lfd.errors import InputFileError, Location
-from guided_lfd.excuse.change import Change, describe_change
+from guided_lfd.excuse.change import Change, describe_change, describe_skill_change
 from guided_lfd.io import read_json_document
 from guided_lfd.excuse.status import ExcuseStatus
 from guided_lfd.pddl.model import Atom, Domain, Problem
@@ -109,6 +109,11 @@ def _excuse_dict(e: Excuse, spellings: dict[str, str]) -> dict[str, Any]:
              "text": describe_change(c, spellings)}
             for c in e.changes
         ],
+        "skill_changes": [
+            {"change": str(c), "action": c.action, "precondition": str(c.literal),
+             "text": describe_skill_change(c, spellings)}
+            for c in e.skill_changes
+        ],
         "state": [str(a) for a in sorted(e.state)],
         "plan": [str(step) for step in e.plan],
         "plan_length": len(e.plan),
@@ -186,11 +191,18 @@ def candidate_text(report: ExcuseReport, prob: Problem, spellings: dict[str, str
 
 def _excuse_lines(title: str, e: Excuse, prob: Problem, spellings: dict[str, str]) -> list[str]:
     """An excuse's lines: ``title``, its changes, then the robot's plan from its state."""
-    lines = [f"{title}: demonstrate how to reach"]
-    width = max(len(describe_change(c, spellings)) for c in e.changes)
-    lines += [f"  {describe_change(c, spellings):<{width}}   {c}" for c in e.changes]
+    texts = [(describe_change(c, spellings), str(c)) for c in e.changes]
+    texts += [(describe_skill_change(c, spellings), str(c)) for c in e.skill_changes]
+    width = max(len(text) for text, _ in texts)
+    lines = [f"{title}: demonstrate how to reach"] if e.changes else [f"{title}: show a skill once more"]
+    lines += [f"  {text:<{width}}   {change}" for text, change in texts[:len(e.changes)]]
+    if e.changes and e.skill_changes:
+        lines.append("and show a skill once more")
+    lines += [f"  {text:<{width}}   {change}" for text, change in texts[len(e.changes):]]
     kind = "optimal, validated" if e.plan_optimal else "validated"
-    lines.append(f"then the robot's own plan ({_count(len(e.plan), 'step')}{_cost_words(e.plan_cost, prob)}, {kind}):")
+    dropped = ", with the precondition(s) dropped" if e.skill_changes else ""
+    lines.append(f"then the robot's own plan ({_count(len(e.plan), 'step')}{_cost_words(e.plan_cost, prob)}, "
+                 f"{kind}{dropped}):")
     lines += [f"  {i}. {step}" for i, step in enumerate(e.plan, 1)]
     return lines
 

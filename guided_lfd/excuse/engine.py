@@ -31,6 +31,7 @@ from guided_lfd.excuse.space import (
     ChangeSpace, Semantics, check_cost_predicates, check_fixed, cost_predicates,
 )
 from guided_lfd.excuse.report import Excuse, ExcuseReport
+from guided_lfd.excuse.skills import minimal_over_skills, relaxable_preconditions
 from guided_lfd.excuse.statistics import ExcuseStatistics
 from guided_lfd.excuse.status import ExcuseStatus
 from guided_lfd.excuse.strategies import DEFAULT_STRATEGY, STRATEGIES
@@ -73,6 +74,11 @@ class ExcuseOptions:
     #: Let the excuse change the world's structure (kinds of things, fixed graphs: see
     #: :mod:`guided_lfd.excuse.structure`), held fixed by default when no ``fixed_from`` model says what can change.
     change_structure: bool = False
+    #: Let the excuse drop learned preconditions that no demonstration tested (skill excuses, see
+    #: :mod:`guided_lfd.excuse.skills`); off: state changes alone.
+    skill_changes: bool = True
+    #: Skill excuses may drop preconditions of the user's own skills too (actions without evidence).
+    relax_prior: bool = False
     #: Under the consistent semantics, keep an object that a static predicate puts in one place (``(at bot hall)``,
     #: no robot action moving it) in at most one (:func:`guided_lfd.excuse.structure.placing_predicates`).
     one_place: bool = True
@@ -94,7 +100,8 @@ class ExcuseOptions:
             raise OptionError(f"strategy {self.strategy!r}: expected a strategy's name (a string)")
         if isinstance(self.slack, bool) or not isinstance(self.slack, int) or self.slack < 0:
             raise OptionError(f"slack {self.slack!r}: expected a whole cost >= 0")
-        for name in ("all_minimal", "optimal_plans", "verify", "change_structure", "one_place"):
+        for name in ("all_minimal", "optimal_plans", "verify", "change_structure", "one_place", "skill_changes",
+                     "relax_prior"):
             if not isinstance(getattr(self, name), bool):
                 raise OptionError(f"{name} {getattr(self, name)!r}: expected True or False")
         started = self.started
@@ -253,8 +260,19 @@ def find_excuses(
 
         raise OptionError(f"unknown strategy '{options.strategy}' (expected one of: {', '.join(STRATEGIES)})")
     start = time.monotonic() if options.started is None else options.started
-    deadline = deadline_after(options.time_limit, start)
     check_option_names(domain, options)
+    if options.skill_changes and relaxable_preconditions(domain, options.relax_prior):
+        return minimal_over_skills(domain, replace(options, started=start),
+                                   lambda relaxed, opts: _state_excuses(relaxed, problem, opts, on_progress))
+    return _state_excuses(domain, problem, replace(options, started=start), on_progress)
+
+
+def _state_excuses(domain: Domain, problem: Problem, options: ExcuseOptions,
+                   on_progress: ProgressCallback | None) -> ExcuseReport:
+    """The minimal excuses that change the initial state alone (``options.started`` set)."""
+    start = options.started
+    assert start is not None
+    deadline = deadline_after(options.time_limit, start)
     meter = ProgressMeter(on_progress, start) if on_progress is not None else None
     run = _Run(domain, problem, options, meter, start, deadline)
     linger(run)  # with its task, space and oracle (see guided_lfd.deadline.linger)
@@ -487,7 +505,7 @@ class _Run:
         time left); only its changes are wanted, so no optimal plan is searched for it."""
         other = replace(self.options, all_minimal=False, optimal_plans=False, started=self.start, **options)
         try:
-            return find_excuses(self.domain, self.problem, other).excuse
+            return _state_excuses(self.domain, self.problem, other, None).excuse
         except SearchTimeout:
             return None
 

@@ -11,7 +11,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Any
 
-from guided_lfd.excuse.change import Change
+from guided_lfd.excuse.change import Change, SkillChange
 from guided_lfd.excuse.space import MutexGroup, Semantics
 from guided_lfd.excuse.statistics import ExcuseStatistics
 from guided_lfd.excuse.status import ExcuseStatus
@@ -34,10 +34,13 @@ class Excuse:
     #: False for a timed-out run's best candidate (``ExcuseReport.best_candidate``) whose cost does not meet
     #: the proven lower bound.
     proven_minimal: bool = True
+    #: Learned preconditions the excuse drops (skill changes, :mod:`guided_lfd.excuse.skills`); the plan is the
+    #: robot's with them dropped.
+    skill_changes: list[SkillChange] = field(default_factory=list)
 
     @property
     def size(self) -> int:
-        return len(self.changes)
+        return len(self.changes) + len(self.skill_changes)
 
 
 @dataclass

@@ -54,6 +54,10 @@ class ExcuseStatistics:
     #: --verify: 'verified' (every cheaper change set enumerated and refused), 'too-many' or 'timeout'.
     minimality: str | None = None
     minimality_sets: int | None = None  # the cheaper change sets --verify counted
+    #: Learned preconditions a skill excuse could drop (none: the field is left out), and the state-excuse
+    #: searches the enumeration over them ran (:mod:`guided_lfd.excuse.skills`).
+    skill_changes_relaxable: int | None = None
+    skill_searches: int | None = None
     time_s: float | None = None  # the whole run
 
     def to_dict(self) -> dict[str, Any]:

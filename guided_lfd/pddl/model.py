@@ -83,25 +83,33 @@ class Predicate:
 class Evidence:
     """What the demonstrations of a learned action showed about one of its conditions: ``literal`` held in
     ``shown`` of its ``demonstrations`` (segments, or a trajectory's steps).  ``varied``: some demonstration
-    showed it false, so the action does not require it; a learned precondition held in every one."""
+    showed it false, so the action does not require it; a learned precondition held in every one.
+    ``confirmed``: the teacher answered that the action cannot be done without it (a request to show it there
+    was refused), so it is required for certain, never relaxed by a skill excuse."""
 
     literal: Literal
     shown: int
     demonstrations: int
+    confirmed: bool = False
 
     @property
     def varied(self) -> bool:
         return self.shown < self.demonstrations
 
+    @property
+    def untested(self) -> bool:
+        """Held in every demonstration and never refused without: whether the action needs it is not known."""
+        return not self.varied and not self.confirmed
+
     def substitute(self, mapping: dict[str, str]) -> "Evidence":
-        return Evidence(self.literal.substitute(mapping), self.shown, self.demonstrations)
+        return Evidence(self.literal.substitute(mapping), self.shown, self.demonstrations, self.confirmed)
 
     def __str__(self) -> str:
-        return f"{self.literal} {self.shown}/{self.demonstrations}"
+        return f"{self.literal} {self.shown}/{self.demonstrations}{' confirmed' if self.confirmed else ''}"
 
     def to_json(self) -> dict[str, Any]:
         return {"literal": str(self.literal), "shown": self.shown, "demonstrations": self.demonstrations,
-                "varied": self.varied}
+                "varied": self.varied, "confirmed": self.confirmed}
 
 
 @dataclass(frozen=True)

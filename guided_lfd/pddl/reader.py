@@ -36,6 +36,7 @@ from guided_lfd.pddl.model import (
     type_members,
 )
 from guided_lfd.pddl import adl_reader, costs, fast_reader, names
+from guided_lfd.pddl.evidence import with_evidence_comments
 from guided_lfd.pddl.source import SExpr, SourceMap, Token, check_ascii
 from guided_lfd.io import read_text
 
@@ -799,7 +800,7 @@ def parse_domain(path: str | Path) -> Domain:
     _check_kind(src, "domain")
     _check_features(src, "domain")
     src, notes = _declared_once(src)
-    return _noted(_domain_of(src, name), notes)
+    return with_evidence_comments(_noted(_domain_of(src, name), notes), src.text)
 
 
 def _domain_of(src: SourceMap, name: str) -> Domain:
@@ -894,7 +895,7 @@ def parse_task(domain_path: str | Path, problem_path: str | Path, *, domain_text
     _check_features(psrc, "problem")
     dsrc, notes = _declared_once(dsrc, psrc)
     domain, problem = _task_of(dsrc, dname, psrc, pname)
-    return _noted(domain, notes), problem
+    return with_evidence_comments(_noted(domain, notes), dsrc.text), problem
 
 
 def _task_of(dsrc: SourceMap, dname: str, psrc: SourceMap, pname: str) -> tuple[Domain, Problem]:

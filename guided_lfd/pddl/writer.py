@@ -6,6 +6,7 @@ golden-file tests and repeated runs compare byte for byte.
 
 from __future__ import annotations
 
+from guided_lfd.pddl.evidence import evidence_lines
 from guided_lfd.pddl.model import EQUALITY, TOTAL_COST, ActionSchema, Atom, Domain, Literal, Predicate, Problem
 
 
@@ -53,26 +54,6 @@ def _conj(parts: list[str]) -> str:
 
 def _literal(lit: Literal) -> str:
     return str(lit)
-
-
-def evidence_lines(action: ActionSchema, width: int = 112) -> list[str]:
-    """A learned action's evidence as comment lines: each precondition with the demonstrations it held in (of
-    all), then the conditions some demonstration varied (not required); none for an action without it."""
-    if not action.evidence:
-        return []
-    required, varied = action.learned_evidence()
-    items = [f"{e}," for e in required] or ["no precondition"]
-    items[-1] = items[-1].rstrip(",")
-    if varied:
-        items[-1] += ";"
-        items += ["varied, so not required:", *(f"{e}," for e in varied)]
-        items[-1] = items[-1].rstrip(",")
-    lines = ["evidence (held in / demonstrations):"]
-    for item in items:  # an item is never split (a literal stays on one line)
-        if len(lines[-1]) + 1 + len(item) > width:
-            lines.append(" ")
-        lines[-1] += f" {item}"
-    return lines
 
 
 def action_to_pddl(action: ActionSchema, indent: str = "  ") -> str:

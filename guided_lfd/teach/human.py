@@ -16,6 +16,9 @@ from guided_lfd.teach.request import first_unreachable
 __all__ = ["MIN_RATE_HZ", "MAX_RATE_HZ", "SimulatedHuman", "GivenTraces", "check_human_model"]
 
 
+#: What ``--demo`` takes instead of a trace where the teacher answers that a skill cannot be done there.
+CANNOT = "cannot"
+
 #: The frame rates a simulated demonstration is rendered at (the VR recorder's are 15-120 Hz).
 MIN_RATE_HZ, MAX_RATE_HZ = 1.0, 1000.0
 
@@ -70,6 +73,13 @@ class SimulatedHuman:
         write_text(states, rendering.state_csv)
         write_text(folder / "demonstration.labels.csv", rendering.labels_csv)
         return trace, states
+
+    def answer_skill(self, request) -> str | None:
+        """The human model's answer to "show this skill here" (a :class:`~guided_lfd.teach.skill_request.
+        SkillRequest`): why its action of that name cannot be done there, or None (it demonstrates)."""
+        from guided_lfd.teach.skill_request import human_refusal
+
+        return human_refusal(self.human, request)
 
     def why_none(self, state: frozenset[Atom], request: list[Change], problem: Problem) -> str:
         """Why :meth:`demonstrate` gave None: the human model has no plan to the request (the first change it
@@ -128,6 +138,16 @@ class GivenTraces:
             raise OptionError(f"GivenTraces: traces {self.traces!r}: expected a list of trace paths")
         self.traces[:] = [Path(t) for t in self.traces]  # in place: a caller may hold the list and see it used
 
+    def answer_skill(self, request) -> str | None:
+        """``cannot`` in the list, where a skill was asked for once more: the teacher's answer that it cannot be
+        done there (consumed); else None (the next trace is its demonstration)."""
+        if self.traces and str(self.traces[0]) == CANNOT:
+            self.traces.pop(0)
+            from guided_lfd.teach.skill_request import step_text
+
+            return f"{step_text(request.step)} cannot be done there (the teacher's answer, --demo {CANNOT})"
+        return None
+
     def demonstrate(self, folder: Path, state: frozenset[Atom], request: list[Change],
                     problem: Problem) -> tuple[Path, Path] | None:
         """The next trace and its state file (``TRACE.state.csv`` beside it), or None when none is left."""
@@ -136,6 +156,8 @@ class GivenTraces:
         if not self.traces:
             return None
         trace = self.traces.pop(0)
+        if str(trace) == CANNOT:
+            return None  # an answer where a demonstration was asked for: nothing to learn from
         return trace, Path(default_state_path(str(trace)))
 
 

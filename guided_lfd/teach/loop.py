@@ -23,6 +23,7 @@ from guided_lfd.teach.learning import learn_round
 from guided_lfd.teach.request import (excuse_request, new_skill_request, no_demonstration, no_excuse_reason,
                                       why_not_original)
 from guided_lfd.teach.session import Demonstrator, Round, TeachSession
+from guided_lfd.teach.skill_request import answer_of, confirm, skill_round
 
 __all__ = ["teach"]
 
@@ -107,6 +108,7 @@ def _rounds(robot: Domain, problem: Problem, demonstrator: Demonstrator, out: Pa
         options = replace(options, fixed_from=human, all_minimal=options.all_minimal or prefer)
     state, current, rounds = problem.init, robot, []
     history: list[tuple[str, dict]] = []  # every round's demonstration: skills are learned from all of them
+    confirmed: list = []  # preconditions the teacher said a skill cannot do without (SkillChange)
     status, final_plan, error, reason = "max-rounds", None, None, None
     try:
         for k in range(1, max_rounds + 1):
@@ -115,17 +117,14 @@ def _rounds(robot: Domain, problem: Problem, demonstrator: Demonstrator, out: Pa
             report = find_excuses(current, task, replace(options, time_limit=seconds_left(deadline)))
             write_text(folder / "excuse.json", report.to_json())
             write_text(folder / "excuse.svg", report.to_svg())
-            if report.status is ExcuseStatus.ALREADY_SOLVABLE:
-                status, final_plan = ("already-solvable" if k == 1 else "solved"), report.robot_plan
+            ended = _ended(report, k, task)
+            if ended is not None:
+                status, final_plan, reason = ended
                 break
-            if report.excuse is None and (report.status is ExcuseStatus.TIMEOUT or not report.unachievable_goals):
-                status = "no-excuse" if report.status is not ExcuseStatus.TIMEOUT else "timeout"
-                if status == "no-excuse":
-                    reason = no_excuse_reason(report, task)
-                break
-            rnd = (new_skill_request(k, current, task, report) if report.excuse is None else
-                   excuse_request(k, current, task, report, human if prefer else None, human if redundancy else None,
-                                  human, deadline))
+            rnd = _request(k, current, task, report, human, prefer, redundancy, deadline)
+            if rnd.skill is not None:  # the robot first made its own steps before the skill
+                state = rnd.skill.state
+                task = replace(problem, init=state)
             rnd.files.update(excuse=str(folder / "excuse.json"), picture=str(folder / "excuse.svg"))
             rnd.held = held_fixed_text(report, options.fixed_from)
             if rounds:  # after a partial or unhelpful demonstration: what is still missing, in the domain's words
@@ -134,12 +133,16 @@ def _rounds(robot: Domain, problem: Problem, demonstrator: Demonstrator, out: Pa
             if on_request:
                 on_request(rnd)
             try:
+                if _answered(rnd, demonstrator, confirmed):  # the precondition is real: never dropped again
+                    current = confirm(current, confirmed)
+                    continue
                 given = demonstrator.demonstrate(folder, state, rnd.request, task)
                 if given is None:
                     status, reason = no_demonstration(demonstrator, state, rnd, task, report)
                     break
                 current, state = learn_round(rnd, folder, out, current, task, given, human, robot, history,
                                              seconds_left(deadline))
+                current = confirm(current, confirmed)  # learned again from every demonstration: answers stand
             except SearchTimeout:
                 raise
             except GuidedLfdError as exc:  # the demonstration's fault: the session so far stays
@@ -153,14 +156,45 @@ def _rounds(robot: Domain, problem: Problem, demonstrator: Demonstrator, out: Pa
                 break
     except SearchTimeout:
         status = "timeout"
-    if status == "max-rounds":
-        reason = _rounds_ran_out(rounds) or reason
+    reason = (_rounds_ran_out(rounds) or reason) if status == "max-rounds" else reason
     write_text(out / "robot.pddl", domain_to_pddl(current, header=f"The robot's domain after teaching {problem.path}"))
     original, status, reason = _judge_original(current, problem, rounds, status, reason, options, deadline)
-    session = TeachSession(robot.path, problem.path, status, rounds, final_plan, original, str(out / "robot.pddl"),
-                           reason=reason, task=problem.name)
-    session.error = error
-    return session
+    return TeachSession(robot.path, problem.path, status, rounds, final_plan, original, str(out / "robot.pddl"),
+                        error=error, reason=reason, task=problem.name)
+
+
+def _answered(rnd: Round, demonstrator: Demonstrator, confirmed: list) -> bool:
+    """Whether the teacher answered a skill request that the skill cannot be done there (its preconditions then
+    join ``confirmed``); False for any other round, or when a demonstration follows."""
+    if rnd.skill is None:
+        return False
+    rnd.answer = answer_of(demonstrator, rnd.skill)
+    if rnd.answer:
+        confirmed += rnd.skill.dropped
+    return bool(rnd.answer)
+
+
+def _ended(report, k: int, task: Problem) -> tuple[str, list[PlanStep] | None, str | None] | None:
+    """(status, plan, reason) when round ``k``'s excuse report ends the session (nothing to ask), else None."""
+    if report.status is ExcuseStatus.ALREADY_SOLVABLE:
+        return ("already-solvable" if k == 1 else "solved"), report.robot_plan, None
+    if report.excuse is None and (report.status is ExcuseStatus.TIMEOUT or not report.unachievable_goals):
+        if report.status is ExcuseStatus.TIMEOUT:
+            return "timeout", None, None
+        return "no-excuse", None, no_excuse_reason(report, task)
+    return None
+
+
+def _request(k: int, robot: Domain, task: Problem, report, human: Domain | None, prefer: bool, redundancy: bool,
+             deadline: float | None) -> Round:
+    """Round ``k``'s request: a skill to show again (a skill excuse), the excuse (or its sufficient part), or a
+    new skill for goal atoms no skill makes true."""
+    if report.excuse is not None and report.excuse.skill_changes and not report.excuse.changes:
+        return skill_round(k, robot, task.init, report)
+    if report.excuse is None:
+        return new_skill_request(k, robot, task, report)
+    return excuse_request(k, robot, task, report, human if prefer else None, human if redundancy else None, human,
+                          deadline)
 
 
 def _rounds_ran_out(rounds: list[Round]) -> str | None:

@@ -162,7 +162,7 @@ def no_demonstration(demonstrator: Demonstrator, state: frozenset[Atom], rnd: Ro
     asked for a new skill (no excuse exists), ``no-demonstration`` otherwise; the reason says why none came."""
     why_none = getattr(demonstrator, "why_none", None)
     why = why_none(state, rnd.request, task) if why_none is not None else "the demonstrator gave no demonstration"
-    if not rnd.excuse:
+    if not rnd.excuse and rnd.skill is None:
         return "no-excuse", f"{no_excuse_reason(report, task)}; {why}"
     return "no-demonstration", why
 

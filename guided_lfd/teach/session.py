@@ -20,7 +20,9 @@ __all__ = ["SESSION_VERSION", "Demonstrator", "Round", "TeachSession"]
 
 #: ``session.json``'s format version: 2 added each round's ``outcome``, ``outcome_reason``, ``check`` and
 #: ``asked_again`` (issue #52); a version-1 session folder is still read back (its task, to replace it).
-SESSION_VERSION = 2
+#: 3 added ``skill_request`` (a round asking for a skill once more, from a skill excuse) and ``answer`` (the
+#: teacher's "cannot be done there").
+SESSION_VERSION = 3
 
 
 class Demonstrator(Protocol):
@@ -61,6 +63,9 @@ class Round:
     check: Any = None
     asked_again: list[str] = field(default_factory=list)  # the request reworded after the last demonstration
     held: str = ""  # what the round's excuse held fixed and why, in one line (said to the teacher, not stored)
+    #: A round from a skill excuse: the skill to show again and where (a teach.skill_request.SkillRequest).
+    skill: Any = None
+    answer: str | None = None  # the teacher's answer instead of a demonstration: the skill cannot be done there
 
     @property
     def outcome(self) -> str | None:
@@ -87,6 +92,7 @@ class Round:
             "asked_again": self.asked_again, "outcome": self.outcome,
             "outcome_reason": None if self.check is None else self.check.reason,
             "check": None if self.check is None else self.check.to_dict(),
+            "skill_request": None if self.skill is None else self.skill.to_dict(), "answer": self.answer,
         }
 
 
@@ -132,7 +138,7 @@ class TeachSession:
         for r in self.rounds:
             lines += [f"## Round {r.index}", "", "Request: " + "; ".join(r.request_text) + ".", ""]
             lines += [f"- asked again: {line}" for line in r.asked_again]
-            if not r.excuse:
+            if not r.excuse and r.skill is None:
                 lines.append("- no excuse exists: a new skill that makes this true must be demonstrated")
             elif r.excuse_text():
                 lines.append(f"- {r.excuse_text()}")
@@ -149,6 +155,10 @@ class TeachSession:
                 lines.append(f"- the demonstration could not be used: {r.error}")
             if r.request_met is False:
                 lines.append("- the demonstration did not make: " + ", ".join(str(c) for c in r.unmet))
+            if r.skill is not None and r.skill.robot_first:
+                lines.append("- the robot first did, itself: " + ", ".join(f"`{s}`" for s in r.skill.robot_first))
+            if r.answer:
+                lines.append(f"- the teacher answered: {r.answer}; the precondition is confirmed")
             if r.check is not None:
                 lines.append(f"- outcome: **{r.check.outcome}**: {r.check.reason}")
             lines.append("")

@@ -1,0 +1,86 @@
+"""teach over a second task: a learned skill shown once more where a skill excuse asks, or the teacher's "cannot".
+
+The blocks world's robot lacks unstack; the first task (tests/data/skills/table.pddl) teaches it from a block
+standing on the table, so the learned unstack requires (ontable ?y); the reverse tower (tower.pddl) needs it
+without.
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+
+from guided_lfd.pddl.reader import parse_domain
+
+BYO = Path("tests/data/byo/blocksworld")
+DATA = Path("tests/data/skills")
+
+
+@pytest.fixture
+def taught(runner, app, tmp_path):
+    """The robot after the first task, taught by the simulated human (its robot.pddl)."""
+    result = runner.invoke(app, ["teach", str(BYO / "robot.pddl"), str(DATA / "table.pddl"), "--simulate",
+                                 str(BYO / "human.pddl"), "-o", str(tmp_path / "first"), "-q"])
+    assert result.exit_code == 0, result.output
+    robot = tmp_path / "first" / "robot.pddl"
+    unstack = parse_domain(robot).action("unstack")
+    assert "(ontable ?y)" in {str(l) for l in unstack.precondition}
+    return robot
+
+
+def _session(folder: Path) -> dict:
+    return json.loads((folder / "session.json").read_text())
+
+
+def test_a_second_task_asks_for_the_skill_once_more_and_the_skill_generalises(runner, app, tmp_path, taught):
+    result = runner.invoke(app, ["teach", str(taught), str(DATA / "tower.pddl"), "--simulate",
+                                 str(BYO / "human.pddl"), "-o", str(tmp_path / "second")])
+    assert result.exit_code == 0, result.output
+    session = _session(tmp_path / "second")
+    (rnd,) = session["rounds"]
+    assert rnd["skill_request"] == {"step": "(unstack c b)", "dropped": ["-(ontable ?y) in unstack"],
+                                    "robot_first": []}
+    assert rnd["outcome"] == "accepted" and rnd["answer"] is None
+    assert session["status"] == "solved" and session["plans_original_task"] is True
+    learned = parse_domain(tmp_path / "second" / "robot.pddl")
+    human = parse_domain(BYO / "human.pddl").action("unstack")
+    assert set(learned.action("unstack").precondition) == set(human.precondition)  # no unstack_2 beside it
+    assert [a.name for a in learned.actions].count("unstack") == 1 and set(learned.action("unstack").add) == set(human.add)
+    assert "Show unstack c b here (Unstack where Ontable ?y is false)" in result.stderr
+
+
+def test_the_learned_skill_records_that_its_precondition_varied(runner, app, tmp_path, taught):
+    runner.invoke(app, ["teach", str(taught), str(DATA / "tower.pddl"), "--simulate", str(BYO / "human.pddl"),
+                        "-o", str(tmp_path / "second"), "-q"])
+    unstack = parse_domain(tmp_path / "second" / "robot.pddl").action("unstack")
+    required, varied = unstack.learned_evidence()
+    assert {str(e) for e in required} == {"(clear ?x) 2/2", "(handempty) 2/2", "(on ?x ?y) 2/2"}
+    assert [str(e) for e in varied] == ["(ontable ?y) 1/2"]
+
+
+def test_a_teacher_who_cannot_do_the_skill_there_confirms_the_precondition(runner, app, tmp_path, taught):
+    result = runner.invoke(app, ["teach", str(taught), str(DATA / "tower.pddl"), "--simulate",
+                                 str(DATA / "table-only-human.pddl"), "-o", str(tmp_path / "second"),
+                                 "--max-rounds", "2"])
+    session = _session(tmp_path / "second")
+    first = session["rounds"][0]
+    assert first["answer"] == "unstack c b cannot be done here: it needs (ontable b)"
+    assert first["demonstration_length"] is None and first["outcome"] is None
+    unstack = parse_domain(tmp_path / "second" / "robot.pddl").action("unstack")
+    assert [str(e) for e in unstack.evidence if e.confirmed] == ["(ontable ?y) 1/1 confirmed"]
+    second = session["rounds"][1]  # the search went on without that skill change: state changes now
+    assert second["skill_request"] is None and "+(clear b)" in second["request"]
+    assert "the teacher answered: unstack c b cannot be done here" in (tmp_path / "second" / "session.md").read_text()
+    assert "round 1: the teacher answered: unstack c b cannot be done here" in result.stderr
+
+
+def test_a_recorded_answer_cannot_stands_for_the_teachers_no(runner, app, tmp_path, taught):
+    result = runner.invoke(app, ["teach", str(taught), str(DATA / "tower.pddl"), "--demo", "cannot",
+                                 "-o", str(tmp_path / "second"), "--max-rounds", "2"])
+    session = _session(tmp_path / "second")
+    assert session["rounds"][0]["answer"] == "unstack c b cannot be done there (the teacher's answer, --demo cannot)"
+    assert session["status"] == "no-demonstration" and result.exit_code == 14
+    unstack = parse_domain(tmp_path / "second" / "robot.pddl").action("unstack")
+    assert any(e.confirmed for e in unstack.evidence)
