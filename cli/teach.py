@@ -132,7 +132,10 @@ def _check_session(session: Path, inputs: list[str | None]) -> None:
 @command
 def teach(
     robot: Annotated[str, typer.Argument(metavar="ROBOT", help="The robot's domain (its skills).")],
-    problem: Annotated[str, typer.Argument(metavar="PROBLEM", help="The task to teach.")],
+    problem: Annotated[list[str], typer.Argument(metavar="PROBLEM",
+                                                 help="The task to teach; several (or a folder of problem files, "
+                                                      "in name order): taught in sequence, each from the skills the "
+                                                      "earlier ones left.")],
     session: Annotated[Path, typer.Option("-o", "--output", parser=path_name, metavar="SESSION_DIR",
                                           help="Folder for every round's files, robot.pddl, session.json and "
                                                "session.md.")] = Path("session"),
@@ -183,11 +186,13 @@ def teach(
     time_limit = check_time_limit(time_limit)
     from guided_lfd.demonstration import default_state_path
 
-    _check_session(session, [robot, problem, simulate, human_model, *(str(d) for d in demo or []),
+    problems = _problem_files(problem)
+    _check_session(session, [robot, *problems, simulate, human_model, *(str(d) for d in demo or []),
                              *(default_state_path(str(d)) for d in demo or [])])
     deadline = deadline_after(time_limit, started_at())  # the whole run: reading, every round, re-planning
     with watchdog(deadline, "reading the input"):
-        robot_domain, task = parse_task(robot, problem)
+        robot_domain, task = parse_task(robot, problems[0])
+        tasks = [task, *(parse_task(robot, p)[1] for p in problems[1:])]
         human = SimulatedHuman(parse_domain(simulate), robot=robot_domain) if simulate else None
         model = parse_domain(human_model) if human_model else human.human if human else None
     ui.reading_warnings(robot_domain)
@@ -199,7 +204,8 @@ def teach(
                                  (human.human if human else None, "--simulate")):
         if human_domain is not None:  # a model of another world: exit 34 before any round
             check_model_fits(robot_domain, human_domain, option)  # a clash with the robot says more than a gap
-            check_human_model(human_domain, task)
+            for each in tasks:
+                check_human_model(human_domain, each)
     prompt = sys.stdin is not None and sys.stdin.isatty() and not json_out and human is None
     demonstrator = _Chain(human, list(demo or []), prompt=prompt)
 
@@ -215,15 +221,71 @@ def teach(
         for line in lines:
             typer.echo(line, err=True) if prompt else ui.info_plain(line)
 
+    options = dict(max_rounds=max_rounds, options=ExcuseOptions(slack=slack or 0), human=model,
+                   prefer=prefer is not None, redundancy=redundancy, deadline=deadline, on_request=show)
+    if len(tasks) > 1:
+        _teach_sequence(robot_domain, tasks, demonstrator, session, options, json_out)
+        return
     with watchdog(deadline, "teaching"):  # the rounds check it themselves; this ends what does not
-        session_obj = run_teach(robot_domain, task, demonstrator, session, max_rounds,
-                                ExcuseOptions(slack=slack or 0), human=model, prefer=prefer is not None,
-                                redundancy=redundancy, deadline=deadline, on_request=show)
+        session_obj = run_teach(robot_domain, task, demonstrator, session, **options)
     write_text(session / "session.json", session_obj.to_json())
     write_text(session / "session.md", session_obj.to_markdown())
     if json_out:
         write_text("-", session_obj.to_json())
     _report(session_obj, session)
+
+
+def _problem_files(arguments: list[str]) -> list[str]:
+    """The tasks named: each file as given, each folder's problem files (``(define (problem``) in name order."""
+    import re
+
+    from guided_lfd.errors import InputFileError, Location
+
+    out: list[str] = []
+    for argument in arguments:
+        folder = Path(argument)
+        if argument == "-" or not folder.is_dir():
+            out.append(argument)
+            continue
+        found = [str(p) for p in sorted(folder.glob("*.pddl"))
+                 if re.search(r"\(\s*define\s*\(\s*problem\b", _without_comments(p), re.IGNORECASE)]
+        if not found:
+            raise InputFileError("holds no problem file (expected *.pddl files that define a problem)",
+                                 Location(argument))
+        out += found
+    if out.count("-") > 1:
+        raise errors.OptionError("- (stdin) names a task twice: expected it at most once")
+    return out
+
+
+def _without_comments(path: Path) -> str:
+    from guided_lfd.pddl.reader import without_comments
+
+    try:
+        return without_comments(path.read_text(errors="replace"))
+    except OSError:
+        return ""
+
+
+def _teach_sequence(robot, tasks, demonstrator, session: Path, options: dict, json_out: bool) -> None:
+    """Several tasks: taught in sequence (guided_lfd.teach.library), each reported, the library's document."""
+    from guided_lfd.io import write_text
+    from guided_lfd.teach.library import teach_tasks
+
+    with watchdog(options["deadline"], "teaching"):
+        library = teach_tasks(robot, tasks, demonstrator, session, **options)
+    if json_out:
+        write_text("-", library.to_json())
+    code = 0
+    for k, (session_obj, folder) in enumerate(zip(library.sessions, library.folders), 1):
+        ui.info_plain(f"task {k} ({session_obj.problem}):")
+        try:
+            _report(session_obj, Path(folder))
+        except typer.Exit as ended:
+            code = code or ended.exit_code
+    ui.info(f"the library after {len(tasks)} task(s) is {session / 'robot.pddl'} (see {session / 'library.md'})")
+    if code:
+        raise typer.Exit(code)
 
 
 def _report(session_obj, session: Path) -> None:

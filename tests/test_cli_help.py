@@ -32,7 +32,7 @@ USAGES = {
     "bench": "guided-lfd bench [OPTIONS] STEP",
     "quality": "guided-lfd quality [OPTIONS]",
     "demos": "guided-lfd demos [OPTIONS] [OUT]",
-    "teach": "guided-lfd teach [OPTIONS] ROBOT PROBLEM",
+    "teach": "guided-lfd teach [OPTIONS] ROBOT PROBLEM...",
     "study": "guided-lfd study [OPTIONS]",
 }
 

@@ -178,3 +178,39 @@ def test_positive_compilation_reads_the_problem_against_the_merged_domain(runner
 def test_merge_refuses_a_name_that_is_not_pddl(runner, app, name):
     result = runner.invoke(app, ["merge", str(MERGE / "prior.pddl"), str(MERGE / "learned.pddl"), "--name", name])
     assert result.exit_code == 37 and "expected a PDDL name" in result.stderr
+
+
+_SKILL = """(define (domain blocks) (:requirements :strips :typing) (:types block)
+  (:predicates (on ?x ?y - block) (ontable ?x - block) (clear ?x - block) (handempty) (holding ?x - block))
+  ;; evidence (held in / demonstrations): {evidence}
+  (:action unstack :parameters (?x ?y - block)
+    :precondition (and {pre})
+    :effect (and (holding ?x) (clear ?y) (not (on ?x ?y)) (not (clear ?x)) (not (handempty)))))
+"""
+
+
+def _learned(tmp_path, name, evidence, pre):
+    path = tmp_path / name
+    path.write_text(_SKILL.format(evidence=evidence, pre=pre))
+    return parse_domain(path)
+
+
+def test_a_learned_skill_shown_again_is_kept_once_requiring_what_both_require(tmp_path):
+    table = _learned(tmp_path, "a.pddl", "(on ?x ?y) 1/1, (clear ?x) 1/1, (ontable ?y) 1/1 confirmed",
+                     "(on ?x ?y) (clear ?x) (ontable ?y)")
+    tower = _learned(tmp_path, "b.pddl", "(on ?x ?y) 2/2, (clear ?x) 2/2", "(on ?x ?y) (clear ?x)")
+    merged = merge_domains([table, tower])
+    (unstack,) = merged.domain.actions
+    assert unstack.name == "unstack" and {str(l) for l in unstack.precondition} == {"(on ?x ?y)", "(clear ?x)"}
+    assert {str(e) for e in unstack.evidence} == {"(on ?x ?y) 3/3", "(clear ?x) 3/3", "(ontable ?y) 1/3 confirmed"}
+    assert merged.generalised and not merged.renamed
+
+
+def test_given_skills_of_one_name_are_not_generalised_but_renamed(tmp_path):
+    table = _learned(tmp_path, "a.pddl", "(on ?x ?y) 1/1", "(on ?x ?y) (ontable ?y)")
+    given = parse_domain(tmp_path / "a.pddl")
+    text = (tmp_path / "a.pddl").read_text().replace(";; evidence (held in / demonstrations): (on ?x ?y) 1/1", "")
+    (tmp_path / "c.pddl").write_text(text.replace("(ontable ?y)", ""))
+    assert [a.name for a in merge_domains([given, parse_domain(tmp_path / "c.pddl")]).domain.actions] == \
+        ["unstack", "unstack_2"]
+    assert table.action("unstack").evidence

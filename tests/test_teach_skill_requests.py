@@ -84,3 +84,51 @@ def test_a_recorded_answer_cannot_stands_for_the_teachers_no(runner, app, tmp_pa
     assert session["status"] == "no-demonstration" and result.exit_code == 14
     unstack = parse_domain(tmp_path / "second" / "robot.pddl").action("unstack")
     assert any(e.confirmed for e in unstack.evidence)
+
+
+def test_one_teach_over_both_tasks_grows_one_library(runner, app, tmp_path):
+    result = runner.invoke(app, ["teach", str(BYO / "robot.pddl"), str(DATA / "table.pddl"), str(DATA / "tower.pddl"),
+                                 "--simulate", str(BYO / "human.pddl"), "-o", str(tmp_path / "seq"), "--json"])
+    assert result.exit_code == 0, result.output
+    doc = json.loads(result.stdout)
+    assert (doc["format"], doc["format_version"], doc["solved"]) == ("guided-lfd/teach-library", 1, True)
+    first, second = doc["tasks"]
+    assert (first["demonstrations"], first["skill_requests"], first["learned_actions"]) == (1, [], ["unstack"])
+    assert (second["demonstrations"], second["skill_requests"]) == (1, ["(unstack c b)"])
+    assert second["plans_original_task"] is True
+    library = parse_domain(tmp_path / "seq" / "robot.pddl")
+    assert set(library.action("unstack").precondition) == set(parse_domain(BYO / "human.pddl").action("unstack")
+                                                               .precondition)
+    assert json.loads((tmp_path / "seq" / "task-2" / "session.json").read_text())["status"] == "solved"
+    assert "2. `tests/data/skills/tower.pddl`: **solved**" in (tmp_path / "seq" / "library.md").read_text()
+
+
+def test_a_folder_of_tasks_is_taught_in_name_order(runner, app, tmp_path):
+    tasks = tmp_path / "tasks"
+    tasks.mkdir()
+    (tasks / "1-table.pddl").write_text((DATA / "table.pddl").read_text())
+    (tasks / "2-tower.pddl").write_text((DATA / "tower.pddl").read_text())
+    (tasks / "notes.pddl").write_text(";; not a problem\n(define (domain other) (:requirements :strips))\n")
+    result = runner.invoke(app, ["teach", str(BYO / "robot.pddl"), str(tasks), "--simulate", str(BYO / "human.pddl"),
+                                 "-o", str(tmp_path / "seq"), "--json"])
+    assert result.exit_code == 0, result.output
+    assert [t["problem"] for t in json.loads(result.stdout)["tasks"]] == [str(tasks / "1-table.pddl"),
+                                                                         str(tasks / "2-tower.pddl")]
+
+
+def test_the_library_api_teaches_a_sequence(tmp_path):
+    from guided_lfd.pddl.reader import parse_task
+    from guided_lfd.teach import SimulatedHuman, teach_tasks
+
+    robot, table = parse_task(BYO / "robot.pddl", DATA / "table.pddl")
+    _, tower = parse_task(BYO / "robot.pddl", DATA / "tower.pddl")
+    library = teach_tasks(robot, [table, tower], SimulatedHuman(parse_domain(BYO / "human.pddl")), tmp_path / "seq")
+    assert library.solved and [s.status for s in library.sessions] == ["solved", "solved"]
+    assert library.sessions[1].rounds[0].skill is not None
+
+
+def test_a_folder_without_problem_files_is_refused_in_one_line(runner, app, tmp_path):
+    (tmp_path / "empty").mkdir()
+    result = runner.invoke(app, ["teach", str(BYO / "robot.pddl"), str(tmp_path / "empty"), "-o",
+                                 str(tmp_path / "seq")])
+    assert result.exit_code == 30 and "holds no problem file" in result.stderr

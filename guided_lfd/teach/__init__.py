@@ -21,16 +21,19 @@ round asks for and why, in words), :mod:`~guided_lfd.teach.human` (the
 demonstrators: the simulated human, recorded traces), :mod:`~guided_lfd.teach.learning`
 (a round's demonstration learned and merged), :mod:`~guided_lfd.teach.check` (each demonstration checked
 against its request: accepted, partial, misdirected, unhelpful or inconsistent), :mod:`~guided_lfd.teach.folder`
-(the session folder) and :mod:`~guided_lfd.teach.loop` (the rounds).
+(the session folder), :mod:`~guided_lfd.teach.skill_request` (a round that asks for a skill once more, from a
+skill excuse, and the teacher's "cannot"), :mod:`~guided_lfd.teach.loop` (the rounds) and
+:mod:`~guided_lfd.teach.library` (a sequence of tasks, each from the skill library the earlier ones left).
 """
 
 from __future__ import annotations
 
 from guided_lfd.teach.check import OUTCOMES, DemonstrationCheck
 from guided_lfd.teach.human import GivenTraces, SimulatedHuman, check_human_model
+from guided_lfd.teach.library import TeachLibrary, teach_tasks
 from guided_lfd.teach.loop import teach
 from guided_lfd.teach.request import keep_facts
 from guided_lfd.teach.session import Demonstrator, Round, TeachSession
 
 __all__ = ["Round", "TeachSession", "SimulatedHuman", "GivenTraces", "teach", "keep_facts", "check_human_model",
-           "Demonstrator", "DemonstrationCheck", "OUTCOMES"]
+           "Demonstrator", "DemonstrationCheck", "OUTCOMES", "TeachLibrary", "teach_tasks"]
