@@ -217,10 +217,13 @@ def _origin(action: ActionSchema, domain: Domain) -> str:
 
 
 def _positional(kept: ActionSchema, action: ActionSchema) -> dict[str, str] | None:
-    """``action``'s parameters renamed to ``kept``'s by position, if their types agree (else None)."""
-    if [t for _, t in kept.params] != [t for _, t in action.params]:
-        return None
-    return {v: w for (v, _), (w, _) in zip(action.params, kept.params)}
+    """``action``'s parameters renamed to ``kept``'s: by position if their types agree; else, when one's
+    parameters are the other's with some left out (a static relation's object one learning did not need), by
+    name; None when neither fits."""
+    if [t for _, t in kept.params] == [t for _, t in action.params]:
+        return {v: w for (v, _), (w, _) in zip(action.params, kept.params)}
+    small, large = sorted((set(kept.params), set(action.params)), key=len)
+    return {v: v for v, _ in action.params} if small < large else None
 
 
 def _shown_again(kept: ActionSchema, action: ActionSchema) -> bool:
@@ -252,9 +255,12 @@ def generalise(kept: ActionSchema, action: ActionSchema) -> ActionSchema:
         confirmed = bool(a and a.confirmed) or bool(b and b.confirmed)
         evidence.append(Evidence(lit, (a.shown if a else 0) + (b.shown if b else 0), n_kept + n_other, confirmed))
     kept_pre = tuple(l for l in kept.precondition if l in pre)
-    both = {l for l in kept_pre}
-    evidence = [e for e in evidence if e.literal in both or e.varied]
-    return replace(kept, precondition=kept_pre, evidence=tuple(evidence))
+    # A parameter only a dropped precondition named (the other room of a door) is no longer the skill's.
+    used = {x for l in kept_pre for x in l.atom.args} | {x for a in (*kept.add, *kept.delete) for x in a.args}
+    params = tuple((v, t) for v, t in kept.params if v in used)
+    evidence = [e for e in evidence if (e.literal in kept_pre or e.varied)
+                and all(x in dict(params) for x in e.literal.atom.args if x.startswith("?"))]
+    return replace(kept, params=params, precondition=kept_pre, evidence=tuple(evidence))
 
 
 def merge_domains(domains: list[Domain], name: str | None = None) -> MergeResult:

@@ -132,3 +132,20 @@ def test_a_folder_without_problem_files_is_refused_in_one_line(runner, app, tmp_
     result = runner.invoke(app, ["teach", str(BYO / "robot.pddl"), str(tmp_path / "empty"), "-o",
                                  str(tmp_path / "seq")])
     assert result.exit_code == 30 and "holds no problem file" in result.stderr
+
+
+def test_a_door_that_leads_nowhere_drops_the_static_relations_and_their_parameter(runner, app, tmp_path):
+    """mobile: open-door learned at the kitchen door keeps (door-connects ?d ?r ?o3) both ways; the study door
+    needs no demonstration (the robot rebinds ?o3), a cupboard door is shown once more, and the skill becomes
+    the human's: two parameters, no door-connects."""
+    mobile = Path("tests/data/byo/mobile")
+    result = runner.invoke(app, ["teach", str(mobile / "robot.pddl"), str(mobile / "problem.pddl"),
+                                 str(mobile / "problem-2.pddl"), "--simulate", str(mobile / "human.pddl"), "-o",
+                                 str(tmp_path / "seq"), "--json", "-q"])
+    assert result.exit_code == 0, result.output
+    second = json.loads(result.stdout)["tasks"][1]
+    assert second["demonstrations"] == 1 and len(second["skill_requests"]) == 1
+    assert second["skill_requests"][0].split()[1] in {"pantry-door", "linen-door", "broom-door"}
+    opened = parse_domain(tmp_path / "seq" / "robot.pddl").action("open-door")
+    human = parse_domain(mobile / "human.pddl").action("open-door")
+    assert (opened.params, set(opened.precondition), opened.add) == (human.params, set(human.precondition), human.add)

@@ -11,6 +11,7 @@ again).
 
 from __future__ import annotations
 
+import itertools
 from dataclasses import dataclass, replace
 
 from guided_lfd.excuse.change import Change, SkillChange, describe_change, describe_skill_change
@@ -49,21 +50,52 @@ def _ground(schema: ActionSchema, step: PlanStep):
     return binding, {a.substitute(binding) for a in schema.add}, {a.substitute(binding) for a in schema.delete}
 
 
-def skill_request(robot: Domain, state: frozenset[Atom], plan: list[PlanStep],
-                  dropped: list[SkillChange]) -> SkillRequest | None:
+def _needed(schema: ActionSchema, step: PlanStep, dropped: list[SkillChange], current: set[Atom],
+            objects: dict[str, list[str]]) -> tuple[PlanStep, list[SkillChange]]:
+    """The dropped preconditions ``step`` needs false in ``current``, and the step: rebound where a parameter
+    only those preconditions name (the other room of a door) can be chosen so that none is needed."""
+    def false_ones(binding: dict[str, str]) -> list[SkillChange]:
+        return [c for c in dropped if c.action == step.action
+                and (c.literal.atom.substitute(binding) in current) != c.literal.positive]
+
+    binding = {v: a for (v, _), a in zip(schema.params, step.args)}
+    needed = false_ones(binding)
+    if not needed:
+        return step, []
+    named_elsewhere = {x for l in schema.precondition if SkillChange(schema.name, l) not in dropped
+                       for x in l.atom.args} | {x for a in (*schema.add, *schema.delete) for x in a.args}
+    free = [(v, t) for v, t in schema.params if v not in named_elsewhere]
+    for choice in itertools.product(*(objects.get(t, []) for _, t in free)):
+        rebound = {**binding, **dict(zip((v for v, _ in free), choice))}
+        if not false_ones(rebound) and all((l.atom.substitute(rebound) in current) == l.positive
+                                           for l in schema.precondition if l.atom.predicate != "="):
+            return PlanStep(step.action, tuple(rebound[v] for v, _ in schema.params)), []
+    return step, needed
+
+
+def skill_request(robot: Domain, state: frozenset[Atom], plan: list[PlanStep], dropped: list[SkillChange],
+                  objects: dict[str, str] | None = None) -> SkillRequest | None:
     """Where the robot's ``plan`` (from ``state``, with the ``dropped`` preconditions) first needs one dropped:
-    the steps before it, which the robot's own domain allows, and that step; None if no step needs one."""
+    the steps before it, which the robot's own domain allows (a step rebound over the task's ``objects`` where
+    that makes it so), and that step; None if no step needs one."""
     schemas = {a.name: a for a in robot.actions}
+    by_type: dict[str, list[str]] = {}
+    subtypes = robot.subtypes()
+    for obj, kind in sorted((objects or {}).items()):
+        for t, below in subtypes.items():
+            if kind in below:
+                by_type.setdefault(t, []).append(obj)
     current = set(state)
-    for k, step in enumerate(plan):
+    done: list[PlanStep] = []
+    for step in plan:
         schema = schemas[step.action]
-        binding, adds, dels = _ground(schema, step)
-        needed = [c for c in dropped if c.action == step.action
-                  and (c.literal.atom.substitute(binding) in current) != c.literal.positive]
+        step, needed = _needed(schema, step, dropped, current, by_type)
+        _, adds, dels = _ground(schema, step)
         if needed:
             effects = sorted([Change(a, True) for a in adds if a not in current]
                              + [Change(a, False) for a in dels - adds if a in current], key=lambda c: (c.atom, c.added))
-            return SkillRequest(step, needed, plan[:k], frozenset(current), effects)
+            return SkillRequest(step, needed, done, frozenset(current), effects)
+        done.append(step)
         current = (current - dels) | adds
     return None
 
@@ -110,7 +142,8 @@ def skill_round(k: int, robot: Domain, state: frozenset[Atom], report) -> Round:
     """Round ``k`` for a skill excuse (``report``'s first excuse, skill changes alone): show the skill where its
     plan first needs a dropped precondition, after the robot's own steps before it."""
     excuse = report.excuse
-    ask = skill_request(robot, state, excuse.plan, excuse.skill_changes)
+    objects = {**robot.constants, **report.problem.objects}
+    ask = skill_request(robot, state, excuse.plan, excuse.skill_changes, objects)
     if ask is None:  # the excuse would not be minimal: the robot could plan without dropping anything
         raise RuntimeError(f"internal check failed: no step of the plan needs {excuse.skill_changes}")
     spellings = report.spellings
