@@ -160,6 +160,12 @@ def teach(
     redundancy: Annotated[bool, typer.Option("--redundancy/--no-redundancy",
                                              help="Ask only for the part of the excuse that suffices "
                                                   "(with a human model).")] = True,
+    skill_changes: Annotated[str, typer.Option("--skill-changes", metavar="[on|off]",
+                                               help="'on' (default): an excuse may ask for a learned skill once "
+                                                    "more, where a precondition no demonstration tested is false; "
+                                                    "'off': state changes alone.")] = "on",
+    relax_prior: Annotated[bool, typer.Option("--relax-prior", help="Skill changes may drop preconditions of the "
+                                                                    "robot's given skills too.")] = False,
     max_rounds: Annotated[int, typer.Option("--max-rounds", metavar="N", help="Stop after N rounds.")] = 5,
     json_out: JsonOption = False,
     time_limit: TimeLimitOption = None,
@@ -184,6 +190,7 @@ def teach(
     if prefer not in (None, "demonstration"):
         raise errors.OptionError(f"--prefer {prefer}: expected 'demonstration'")
     time_limit = check_time_limit(time_limit)
+    switch = _switch(skill_changes, relax_prior)
     from guided_lfd.demonstration import default_state_path
 
     problems = _problem_files(problem)
@@ -209,20 +216,9 @@ def teach(
     prompt = sys.stdin is not None and sys.stdin.isatty() and not json_out and human is None
     demonstrator = _Chain(human, list(demo or []), prompt=prompt)
 
-    def show(rnd) -> None:
-        """The request as the demonstrator reads it: on a terminal always, else as a diagnostic."""
-        lines = [f"round {rnd.index}, please demonstrate: {'; '.join(rnd.request_text)}",
-                 *(f"  asked again: {line}" for line in rnd.asked_again),
-                 *([f"  {rnd.excuse_text()}"] if rnd.excuse_text() else []), *(f"  why: {w}" for w in rnd.why)]
-        if rnd.keep_text:
-            lines.append("  leave as it is: " + "; ".join(rnd.keep_text))
-        if rnd.held:
-            lines.append(f"  {rnd.held}")
-        for line in lines:
-            typer.echo(line, err=True) if prompt else ui.info_plain(line)
-
-    options = dict(max_rounds=max_rounds, options=ExcuseOptions(slack=slack or 0), human=model,
-                   prefer=prefer is not None, redundancy=redundancy, deadline=deadline, on_request=show)
+    excuse_options = ExcuseOptions(slack=slack or 0, skill_changes=switch, relax_prior=relax_prior)
+    options = dict(max_rounds=max_rounds, options=excuse_options, human=model,
+                   prefer=prefer is not None, redundancy=redundancy, deadline=deadline, on_request=_shower(prompt))
     if len(tasks) > 1:
         _teach_sequence(robot_domain, tasks, demonstrator, session, options, json_out)
         return
@@ -233,6 +229,31 @@ def teach(
     if json_out:
         write_text("-", session_obj.to_json())
     _report(session_obj, session)
+
+
+def _shower(prompt: bool):
+    """What shows each round's request as the demonstrator reads it: on a terminal always, else a diagnostic."""
+    def show(rnd) -> None:
+        lines = [f"round {rnd.index}, please demonstrate: {'; '.join(rnd.request_text)}",
+                 *(f"  asked again: {line}" for line in rnd.asked_again),
+                 *([f"  {rnd.excuse_text()}"] if rnd.excuse_text() else []), *(f"  why: {w}" for w in rnd.why)]
+        if rnd.keep_text:
+            lines.append("  leave as it is: " + "; ".join(rnd.keep_text))
+        if rnd.held:
+            lines.append(f"  {rnd.held}")
+        for line in lines:
+            typer.echo(line, err=True) if prompt else ui.info_plain(line)
+
+    return show
+
+
+def _switch(skill_changes: str, relax_prior: bool) -> bool:
+    """``--skill-changes on|off`` as a flag (``--relax-prior`` needs it on)."""
+    if skill_changes.lower() not in ("on", "off"):
+        raise errors.OptionError(f"--skill-changes {skill_changes}: expected 'on' or 'off'")
+    if relax_prior and skill_changes.lower() == "off":
+        raise errors.OptionError("--relax-prior: needs skill changes (it contradicts --skill-changes off)")
+    return skill_changes.lower() == "on"
 
 
 def _problem_files(arguments: list[str]) -> list[str]:

@@ -149,3 +149,10 @@ def test_a_door_that_leads_nowhere_drops_the_static_relations_and_their_paramete
     opened = parse_domain(tmp_path / "seq" / "robot.pddl").action("open-door")
     human = parse_domain(mobile / "human.pddl").action("open-door")
     assert (opened.params, set(opened.precondition), opened.add) == (human.params, set(human.precondition), human.add)
+
+
+def test_teach_with_skill_changes_off_asks_for_state_changes_instead(runner, app, tmp_path, taught):
+    runner.invoke(app, ["teach", str(taught), str(DATA / "tower.pddl"), "--simulate", str(BYO / "human.pddl"),
+                        "-o", str(tmp_path / "second"), "-q", "--skill-changes", "off"])
+    first = _session(tmp_path / "second")["rounds"][0]
+    assert first["skill_request"] is None and "+(clear b)" in first["excuse"]
