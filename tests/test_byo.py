@@ -24,14 +24,16 @@ BYO = DATA / "byo"
 DOMAINS = sorted(p.name for p in BYO.iterdir() if (p / "robot.pddl").is_file())
 #: Precondition precision below 1.00: a skill keeps the static relations among its objects that held in its
 #: demonstrations (issue #51); mobile's open-door keeps (door-connects ?d ?r ?o3) both ways, which the human's
-#: open-door (door-in ?d ?r) does not ask for.
-PRECISION = {"mobile": 0.667}
+#: open-door (door-in ?d ?r) does not ask for.  shelves' and lab's first tasks are over-specific by design (their
+#: problem-2.pddl asks for the skill once more): take-down keeps (low ?s), the only reachable boxes being on a low
+#: shelf (3 of 4 preconditions the human's); write-label keeps (capped ?t), every tube being capped (2 of 3).
+PRECISION = {"mobile": 0.667, "shelves": 0.75, "lab": 0.667}
 #: What the kitchens' learner used to put in every skill: none of these domains declares it.
 KITCHEN_HAND = ("in_hand", "hand_free")
 
 
-def test_the_corpus_has_six_domains_and_none_speaks_the_kitchens_hand():
-    assert len(DOMAINS) >= 6
+def test_the_corpus_has_eight_domains_and_none_speaks_the_kitchens_hand():
+    assert len(DOMAINS) >= 8
     for name in DOMAINS:
         human = parse_domain(str(BYO / name / "human.pddl"))
         assert not set(KITCHEN_HAND) & set(human.predicates), name
