@@ -160,6 +160,13 @@ def teach(
     redundancy: Annotated[bool, typer.Option("--redundancy/--no-redundancy",
                                              help="Ask only for the part of the excuse that suffices "
                                                   "(with a human model).")] = True,
+    mistakes: Annotated[str | None, typer.Option("--mistakes", metavar="SPEC",
+                                                 help="With --simulate: the simulated teacher makes mistakes at "
+                                                      "these rates per demonstration: KIND=RATE[,...] with KIND "
+                                                      "wrong-object, partial, extra-steps, wrong-order, misread, or "
+                                                      "any=RATE (e.g. any=25%).")] = None,
+    seed: Annotated[int, typer.Option("--seed", metavar="N", help="With --simulate: the seed of its mistakes and "
+                                                                  "the rendered trace's noise.")] = 0,
     skill_changes: Annotated[str, typer.Option("--skill-changes", metavar="[on|off]",
                                                help="'on' (default): an excuse may ask for a learned skill once "
                                                     "more, where a precondition no demonstration tested is false; "
@@ -184,6 +191,7 @@ def teach(
     from guided_lfd.io import write_text
     from guided_lfd.pddl.reader import parse_domain, parse_task
     from guided_lfd.teach import SimulatedHuman, check_human_model, teach as run_teach
+    from guided_lfd.teach.mistakes import Mistakes
 
     if max_rounds < 1:
         raise errors.OptionError(f"--max-rounds {max_rounds}: expected a number of rounds >= 1")
@@ -191,6 +199,11 @@ def teach(
         raise errors.OptionError(f"--prefer {prefer}: expected 'demonstration'")
     time_limit = check_time_limit(time_limit)
     switch = _switch(skill_changes, relax_prior)
+    if (mistakes or seed) and not simulate:
+        raise errors.OptionError(f"{'--mistakes' if mistakes else '--seed'}: needs the simulated teacher "
+                                 "(--simulate HUMAN)")
+    if mistakes:
+        Mistakes.parse(mistakes)  # refused before anything is read
     from guided_lfd.demonstration import default_state_path
 
     problems = _problem_files(problem)
@@ -200,7 +213,8 @@ def teach(
     with watchdog(deadline, "reading the input"):
         robot_domain, task = parse_task(robot, problems[0])
         tasks = [task, *(parse_task(robot, p)[1] for p in problems[1:])]
-        human = SimulatedHuman(parse_domain(simulate), robot=robot_domain) if simulate else None
+        human = (SimulatedHuman(parse_domain(simulate), robot=robot_domain, seed=seed,
+                                mistakes=Mistakes.parse(mistakes) if mistakes else None) if simulate else None)
         model = parse_domain(human_model) if human_model else human.human if human else None
     ui.reading_warnings(robot_domain)
     if slack and not prefer:

@@ -3,7 +3,7 @@ trace), demonstrations recorded beforehand, and the check that a human model is 
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 from guided_lfd.excuse.change import Change, describe_change
@@ -11,6 +11,7 @@ from guided_lfd.io import write_text
 from guided_lfd.pddl.fit import check_human_model
 from guided_lfd.pddl.model import Atom, Domain, Problem
 from guided_lfd.planning.validation import PlanStep
+from guided_lfd.teach.mistakes import Mistakes
 from guided_lfd.teach.request import first_unreachable
 
 __all__ = ["MIN_RATE_HZ", "MAX_RATE_HZ", "SimulatedHuman", "GivenTraces", "check_human_model"]
@@ -31,6 +32,10 @@ class SimulatedHuman:
     rate_hz: float = 90.0
     seed: int = 0
     robot: Domain | None = None  # whose hand facts the trace declares (else the human model's)
+    #: Mistakes the teacher makes, at their rates (:mod:`guided_lfd.teach.mistakes`); None: never.
+    mistakes: Mistakes | None = None
+    #: The mistake of each demonstration given so far (None: the plan as it is), in order.
+    made: list[str | None] = field(default_factory=list)
 
     def __post_init__(self) -> None:
         from guided_lfd.errors import OptionError
@@ -43,6 +48,9 @@ class SimulatedHuman:
                               f"{MAX_RATE_HZ:g} Hz")
         if isinstance(self.seed, bool) or not isinstance(self.seed, int):
             raise OptionError(f"SimulatedHuman: seed {self.seed!r}: expected a whole number")
+        if self.mistakes is not None and not isinstance(self.mistakes, Mistakes):
+            raise OptionError(f"SimulatedHuman: mistakes: expected Mistakes (Mistakes.parse(SPEC)) or None, got "
+                              f"{type(self.mistakes).__name__}")
         if self.robot is not None and not isinstance(self.robot, Domain):
             raise OptionError(f"SimulatedHuman: robot: expected a Domain or None, got {type(self.robot).__name__}")
 
@@ -55,6 +63,7 @@ class SimulatedHuman:
         plan = optimal_plan(self.human, replace(problem, init=state), goal=excuse_goal(request))
         if not plan:
             return None
+        plan = self._mistaken(plan, state, request, problem)
         _check_drawable([], None, plan, self.human)
         # The trace's state file declares the world's hand facts (none for a world without a hand): the robot's
         # where its grasping actions show them, else the human model's.
@@ -73,6 +82,23 @@ class SimulatedHuman:
         write_text(states, rendering.state_csv)
         write_text(folder / "demonstration.labels.csv", rendering.labels_csv)
         return trace, states
+
+    def _mistaken(self, plan: list[PlanStep], state: frozenset[Atom], request: list[Change],
+                  problem: Problem) -> list[PlanStep]:
+        """The plan as this teacher carries it out: with a mistake at its rates (recorded in ``made``)."""
+        import random
+
+        from guided_lfd.teach.mistakes import make_mistake
+
+        kind = None
+        if self.mistakes is not None:
+            rng = random.Random(f"{self.seed}:{len(self.made)}")  # one stream per demonstration: reproducible
+            kind = self.mistakes.draw(rng)
+            wrong = make_mistake(kind, plan, self.human, replace(problem, init=state), request, rng) if kind else None
+            kind = kind if wrong else None
+            plan = wrong or plan
+        self.made.append(kind)
+        return plan
 
     def answer_skill(self, request) -> str | None:
         """The human model's answer to "show this skill here" (a :class:`~guided_lfd.teach.skill_request.

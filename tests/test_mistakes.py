@@ -1,0 +1,101 @@
+"""The fallible simulated teacher (guided_lfd.teach.mistakes): each kind of mistake, its SPEC, its seed."""
+
+from __future__ import annotations
+
+import random
+from dataclasses import replace
+
+import pytest
+
+from guided_lfd.errors import OptionError
+from guided_lfd.evaluate import excuse_goal, optimal_plan
+from guided_lfd.excuse.change import Change
+from guided_lfd.pddl.model import Atom
+from guided_lfd.pddl.reader import parse_task
+from guided_lfd.planning.validation import PlanStep, validate_plan
+from guided_lfd.teach.mistakes import MISTAKE_KINDS, Mistakes, make_mistake
+
+BYO = "tests/data/byo/blocksworld"
+
+
+@pytest.fixture(scope="module")
+def blocks():
+    """The blocks world's human and its larger task (towers of 2-4 blocks, a loose one)."""
+    human, problem = parse_task(f"{BYO}/human.pddl", f"{BYO}/problem-large.pddl")
+    return human, problem
+
+
+def _request(problem, *atoms: str) -> list[Change]:
+    return [Change(Atom(a.split()[0], tuple(a.split()[1:])), True) for a in atoms]
+
+
+def _runs(human, problem, plan: list[PlanStep]) -> bool:
+    return validate_plan(human, problem.init, (), plan).valid
+
+
+def test_a_spec_gives_rates_per_kind_and_any_spreads_evenly():
+    assert Mistakes.parse("partial=0.1,wrong-object=10%").rates == {"partial": 0.1, "wrong-object": 0.1}
+    assert Mistakes.parse("any=25%").rates == {kind: pytest.approx(0.05) for kind in MISTAKE_KINDS}
+
+
+@pytest.mark.parametrize("spec, message", [
+    ("foo=1", "unknown kind 'foo'"),
+    ("partial", "expected KIND=RATE"),
+    ("partial=0.7,misread=0.5", "the rates sum to 1.2, expected at most 1"),
+])
+def test_a_bad_spec_is_refused_naming_what_was_expected(spec, message):
+    with pytest.raises(OptionError, match=message):
+        Mistakes.parse(spec)
+
+
+def test_draws_follow_the_rates_for_a_seed():
+    rng = random.Random(7)
+    draws = [Mistakes.parse("partial=0.5").draw(rng) for _ in range(2000)]
+    assert 900 < draws.count("partial") < 1100 and set(draws) == {"partial", None}
+    assert Mistakes.parse("partial=0").draw(random.Random(1)) is None
+
+
+def test_each_mistake_is_a_plan_the_human_can_carry_out_and_not_the_plan(blocks):
+    human, problem = blocks
+    found = {}
+    for seed in range(40):
+        for request in (_request(problem, "ontable block-a3", "ontable block-b2"),
+                        _request(problem, "holding block-a2")):
+            plan = optimal_plan(human, problem, goal=excuse_goal(request))
+            for kind in MISTAKE_KINDS:
+                wrong = make_mistake(kind, plan, human, problem, request, random.Random(seed))
+                if wrong is not None:
+                    assert wrong != plan and _runs(human, problem, wrong), (kind, wrong)
+                    found.setdefault(kind, wrong)
+    assert set(found) == set(MISTAKE_KINDS), found
+
+
+def test_partial_stops_halfway_and_extra_steps_go_on(blocks):
+    human, problem = blocks
+    request = _request(problem, "holding block-a2")
+    plan = optimal_plan(human, problem, goal=excuse_goal(request))
+    assert make_mistake("partial", plan, human, problem, request, random.Random(0)) == plan[: len(plan) // 2]
+    extra = make_mistake("extra-steps", plan, human, problem, request, random.Random(0))
+    assert extra[: len(plan)] == plan and 1 <= len(extra) - len(plan) <= 2
+
+
+def test_a_one_step_plan_cannot_be_halved(blocks):
+    human, problem = blocks
+    one = [PlanStep("unstack", ("block-a3", "block-a2"))]
+    assert make_mistake("partial", one, human, replace(problem), [], random.Random(0)) is None
+
+
+def test_the_teachers_mistakes_are_the_same_for_the_same_seed(runner, app, tmp_path):
+    def run(folder):
+        result = runner.invoke(app, ["teach", f"{BYO}/robot.pddl", f"{BYO}/problem-large.pddl", "--simulate",
+                                     f"{BYO}/human.pddl", "-o", str(tmp_path / folder), "--mistakes", "any=100%",
+                                     "--seed", "3", "--json", "-q"])
+        return result.stdout
+
+    assert run("a").replace(str(tmp_path / "a"), "") == run("b").replace(str(tmp_path / "b"), "")
+
+
+def test_mistakes_without_the_simulated_teacher_are_refused(runner, app, tmp_path):
+    result = runner.invoke(app, ["teach", f"{BYO}/robot.pddl", f"{BYO}/problem.pddl", "--mistakes", "any=10%",
+                                 "-o", str(tmp_path / "s")])
+    assert result.exit_code == 37 and "--mistakes: needs the simulated teacher (--simulate HUMAN)" in result.stderr
