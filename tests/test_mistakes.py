@@ -99,3 +99,16 @@ def test_mistakes_without_the_simulated_teacher_are_refused(runner, app, tmp_pat
     result = runner.invoke(app, ["teach", f"{BYO}/robot.pddl", f"{BYO}/problem.pddl", "--mistakes", "any=10%",
                                  "-o", str(tmp_path / "s")])
     assert result.exit_code == 37 and "--mistakes: needs the simulated teacher (--simulate HUMAN)" in result.stderr
+
+
+def test_a_skill_shown_between_pieces_of_furniture_keeps_the_robots_types(runner, app, tmp_path):
+    """Kitchen II, seed 0 at 50 %: the teacher pushes the chair three times (drawer, corner, table); the learned
+    move_chair's rooms are furniture, as the robot declares them, so its domain reads back (it was 'object')."""
+    result = runner.invoke(app, ["teach", "data/domains/kitchen-2/robot.pddl", "data/domains/kitchen-2/problem.pddl",
+                                 "--simulate", "data/domains/kitchen-2/human.pddl", "-o", str(tmp_path / "s"),
+                                 "--mistakes", "any=50%", "--seed", "0", "-q"])
+    assert result.exit_code == 0, result.output
+    from guided_lfd.pddl.reader import parse_domain
+
+    move = parse_domain(tmp_path / "s" / "robot.pddl").action("move_chair")
+    assert dict(move.params) == {"?c": "obstacle", "?from": "furniture", "?to": "furniture"}

@@ -24,7 +24,7 @@ NO_PUT = str(TEACH / "no-put-robot.pddl")  # Kitchen I's robot without put_insid
 
 
 def _goal_reached_by_the_demonstration(rnd, folder, out, robot, task, given, human=None, original=None, history=None,
-                                       time_limit=None):
+                                       time_limit=None, checks=True):
     """Stands for ``guided_lfd.teach.learning.learn_round`` after a demonstration of the whole of Kitchen II's task
     (chair pushed to the corner, PinkDrawer opened, RedPlate put inside) from which the robot learned a skill
     it can never use (push_obstacle needing a hand fact of another vocabulary)."""

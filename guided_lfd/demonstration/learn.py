@@ -429,6 +429,30 @@ def robot_declarations(predicates: dict[str, Predicate], robot: Domain) -> dict[
             and len(robot.predicates[name].params) == len(p.params) else p for name, p in predicates.items()}
 
 
+def within_declarations(actions: list[ActionSchema], robot: Domain) -> list[ActionSchema]:
+    """``actions`` with each parameter's type narrowed to the robot's declaration of an argument it fills, where
+    that is narrower: skills merged under the robot's predicates (:func:`robot_declarations`) must fit them (a
+    chair pushed from a drawer to a corner to a table, learned without the robot's type hierarchy, moves
+    between ``object``s; the robot's ``(blocking ?c - obstacle ?f - furniture)`` says furniture)."""
+    subtypes = robot.subtypes()
+    out = []
+    for act in actions:
+        declared: dict[str, list[str]] = {}
+        for atom in [l.atom for l in act.precondition] + list(act.add) + list(act.delete):
+            pred = robot.predicates.get(atom.predicate)
+            if pred is not None and len(pred.params) == len(atom.args):
+                for arg, (_, kind) in zip(atom.args, pred.params):
+                    declared.setdefault(arg, []).append(kind)
+        params = []
+        for var, kind in act.params:
+            narrower = [d for d in declared.get(var, []) if d != kind and d in subtypes.get(kind, {kind})]
+            # the narrowest declaration, when the declarations are one chain of types
+            best = next((d for d in narrower if all(d in subtypes.get(o, {o}) for o in narrower)), kind)
+            params.append((var, best))
+        out.append(replace(act, params=tuple(params)) if tuple(params) != act.params else act)
+    return out
+
+
 def _predicates_of(actions: list[ActionSchema]) -> dict[str, Predicate]:
     """The predicates the actions use, each argument typed by its parameters (``object`` where they differ)."""
     predicates: dict[str, Predicate] = {}

@@ -92,7 +92,8 @@ class SimulatedHuman:
 
         kind = None
         if self.mistakes is not None:
-            rng = random.Random(f"{self.seed}:{len(self.made)}")  # one stream per demonstration: reproducible
+            # One stream per task and demonstration: reproducible, and not the same draws in every task.
+            rng = random.Random(f"{self.seed}:{problem.name}:{len(self.made)}")
             kind = self.mistakes.draw(rng)
             wrong = make_mistake(kind, plan, self.human, replace(problem, init=state), request, rng) if kind else None
             kind = kind if wrong else None

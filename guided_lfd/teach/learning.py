@@ -19,7 +19,7 @@ __all__ = ["learn_round"]
 def learn_round(rnd: Round, folder: Path, out: Path, robot: Domain, task: Problem,
                  given: tuple[Path, Path], human: Domain | None = None, original: Domain | None = None,
                  history: list[tuple[str, dict]] | None = None,
-                 time_limit: float | None = None) -> tuple[Domain, frozenset[Atom]]:
+                 time_limit: float | None = None, checks: bool = True) -> tuple[Domain, frozenset[Atom]]:
     """Segment the demonstration, learn its skills (in the robot's hand facts, named after the ``human``
     model's actions), merge them into the robot; (new domain, state it left).  A skill that could never run
     beside the robot's is a MismatchError.
@@ -30,9 +30,11 @@ def learn_round(rnd: Round, folder: Path, out: Path, robot: Domain, task: Proble
 
     The demonstration is checked against the round's request first (:mod:`guided_lfd.teach.check`,
     ``rnd.check``): skills from a demonstration that is ``inconsistent`` or ``unhelpful``, or that do not reach
-    what was asked, are not merged (the robot's domain stays as it was); the world stays as it left it."""
+    what was asked, are not merged (the robot's domain stays as it was); the world stays as it left it.
+    ``checks`` False keeps whatever was learned, whatever the check says (the loop without checks, for
+    measuring what they prevent)."""
     from guided_lfd.demonstration.learn import (check_usable, document_vocabulary, ground_actions, learn_domain,
-                                                robot_declarations)
+                                                robot_declarations, within_declarations)
     from guided_lfd.demonstration.segment import segment, segments_document
     from guided_lfd.demonstration.trace import load_demonstration
     from guided_lfd.merge import merge_domains
@@ -57,7 +59,8 @@ def learn_round(rnd: Round, folder: Path, out: Path, robot: Domain, task: Proble
     documents = [*(history or []), (str(trace), doc)]
     learned = learn_domain(documents, name=f"learned-round-{rnd.index}", context=base, human=human, skip_known=True)
     # The robot's declaration of a predicate stands: merging a learned one would widen its argument types.
-    learned = replace(learned, predicates=robot_declarations(learned.predicates, base))
+    learned = replace(learned, predicates=robot_declarations(learned.predicates, base),
+                      actions=within_declarations(learned.actions, base))
     write_text(folder / "learned.pddl", domain_to_pddl(learned, header=f"Learned from {trace}"))
     merged = merge_domains([base, learned], name=robot.name).domain
     # New skills, and skills this demonstration generalised (the same name, another body).
@@ -70,7 +73,7 @@ def learn_round(rnd: Round, folder: Path, out: Path, robot: Domain, task: Proble
     # Checked against the request before anything learned from it is kept (#52).
     rnd.check = check_demonstration(rnd, task.init, state, demonstrated, types, robot, merged, changed, task,
                                     set(vocabulary.predicates), human, time_limit=time_limit)
-    if not rnd.check.keep_skills:
+    if not rnd.check.keep_skills and checks:
         merged = robot
     else:
         rnd.learned_actions = changed

@@ -31,7 +31,7 @@ __all__ = ["teach"]
 def teach(robot: Domain, problem: Problem, demonstrator: Demonstrator, out: Path, max_rounds: int = 5,
           options: ExcuseOptions | None = None, human: Domain | None = None, prefer: bool = False,
           redundancy: bool = True, deadline: float | None = None,
-          on_request: Callable[[Round], None] | None = None) -> TeachSession:
+          on_request: Callable[[Round], None] | None = None, checks: bool = True) -> TeachSession:
     """Teach the robot its task round by round (see :mod:`guided_lfd.teach`); every round's files go under ``out``.
 
     With a ``human`` model, excuses change only what the human can change
@@ -49,7 +49,8 @@ def teach(robot: Domain, problem: Problem, demonstrator: Demonstrator, out: Path
     from its original state; a goal reached only through the demonstration
     is ``demonstration-only`` (``reason`` says what the robot lacks).
     ``out/robot.pddl`` is the robot's domain after each round;
-    ``session.json`` and ``session.md`` are written by the caller.
+    ``session.json`` and ``session.md`` are written by the caller.  ``checks`` False keeps the skills of every
+    demonstration, whatever its check against the request says (to measure what the checks prevent).
     """
     out = _session_path(out)
     _check_teach_arguments(robot, problem, demonstrator, max_rounds, options, human, prefer, deadline, on_request)
@@ -58,7 +59,7 @@ def teach(robot: Domain, problem: Problem, demonstrator: Demonstrator, out: Path
     _prepare_session(robot, problem, demonstrator, out, options, human)
     with replacing_previous_session(out, was_there):
         return _rounds(robot, problem, demonstrator, out, max_rounds, options, human, prefer, redundancy, deadline,
-                       on_request)
+                       on_request, checks)
 
 
 def _check_teach_arguments(robot: object, problem: object, demonstrator: object, max_rounds: object,
@@ -100,7 +101,7 @@ def _session_path(out: object) -> Path:
 
 def _rounds(robot: Domain, problem: Problem, demonstrator: Demonstrator, out: Path, max_rounds: int,
             options: ExcuseOptions, human: Domain | None, prefer: bool, redundancy: bool, deadline: float | None,
-            on_request: Callable[[Round], None] | None) -> TeachSession:
+            on_request: Callable[[Round], None] | None, checks: bool = True) -> TeachSession:
     """The session's rounds, then its judgement on the original task (see :func:`teach`)."""
     from guided_lfd.errors import GuidedLfdError, SearchTimeout
 
@@ -141,7 +142,7 @@ def _rounds(robot: Domain, problem: Problem, demonstrator: Demonstrator, out: Pa
                     status, reason = no_demonstration(demonstrator, state, rnd, task, report)
                     break
                 current, state = learn_round(rnd, folder, out, current, task, given, human, robot, history,
-                                             seconds_left(deadline))
+                                             seconds_left(deadline), checks)
                 current = confirm(current, confirmed)  # learned again from every demonstration: answers stand
             except SearchTimeout:
                 raise
