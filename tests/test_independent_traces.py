@@ -21,10 +21,11 @@ TRACES = ROOT / "tests" / "data" / "traces"
 
 #: (scenario, condition): (lowest frame macro-F1, truth segments, found segments, demonstrations with exact
 #: counts, preconditions precision, recall, effects precision, recall, near-duplicate skills), as measured
-#: by `guided-lfd quality --traces tests/data/traces` after the rate-independent speed window (2026-12-02;
+#: by `guided-lfd quality --traces tests/data/traces` after the rate-independent speed window (2026-12-02; the
+#: tracking-loss, re-grasp and brief-grip conditions after the segmenter learned to hold through them, 2026-12-07;
 #: P/R rounded to 2 decimals).
 BASELINE = {
-    ('cupboard', 'all'): (0.972, 260, 260, 20, 1.00, 1.00, 1.00, 1.00, 0),
+    ('cupboard', 'all'): (0.972, 338, 338, 26, 1.00, 1.00, 1.00, 1.00, 0),
     ('cupboard', 'base'): (0.997, 26, 26, 2, 1.00, 1.00, 1.00, 1.00, 0),
     ('cupboard', 'drops-dups'): (0.991, 26, 26, 2, 1.00, 1.00, 1.00, 1.00, 0),
     ('cupboard', 'field-20hz'): (0.972, 26, 26, 2, 1.00, 1.00, 1.00, 1.00, 0),
@@ -35,7 +36,7 @@ BASELINE = {
     ('cupboard', 'rate-15hz'): (0.997, 26, 26, 2, 1.00, 1.00, 1.00, 1.00, 0),
     ('cupboard', 'rate-20hz'): (0.996, 26, 26, 2, 1.00, 1.00, 1.00, 1.00, 0),
     ('cupboard', 'rate-30hz'): (0.994, 26, 26, 2, 1.00, 1.00, 1.00, 1.00, 0),
-    ('kitchen-1', 'all'): (0.977, 210, 210, 20, 1.00, 1.00, 1.00, 1.00, 0),
+    ('kitchen-1', 'all'): (0.977, 273, 273, 26, 1.00, 1.00, 1.00, 1.00, 0),
     ('kitchen-1', 'base'): (0.994, 21, 21, 2, 1.00, 1.00, 1.00, 1.00, 0),
     ('kitchen-1', 'drops-dups'): (0.992, 21, 21, 2, 1.00, 1.00, 1.00, 1.00, 0),
     ('kitchen-1', 'field-20hz'): (0.977, 21, 21, 2, 1.00, 1.00, 1.00, 1.00, 0),
@@ -46,7 +47,7 @@ BASELINE = {
     ('kitchen-1', 'rate-15hz'): (0.996, 21, 21, 2, 1.00, 1.00, 1.00, 1.00, 0),
     ('kitchen-1', 'rate-20hz'): (0.991, 21, 21, 2, 1.00, 1.00, 1.00, 1.00, 0),
     ('kitchen-1', 'rate-30hz'): (0.991, 21, 21, 2, 1.00, 1.00, 1.00, 1.00, 0),
-    ('kitchen-2', 'all'): (0.980, 230, 230, 20, 1.00, 1.00, 1.00, 1.00, 0),
+    ('kitchen-2', 'all'): (0.980, 299, 299, 26, 1.00, 1.00, 1.00, 1.00, 0),
     ('kitchen-2', 'base'): (0.996, 23, 23, 2, 1.00, 1.00, 1.00, 1.00, 0),
     ('kitchen-2', 'drops-dups'): (0.986, 23, 23, 2, 1.00, 1.00, 1.00, 1.00, 0),
     ('kitchen-2', 'field-20hz'): (0.980, 23, 23, 2, 1.00, 1.00, 1.00, 1.00, 0),
@@ -57,7 +58,7 @@ BASELINE = {
     ('kitchen-2', 'rate-15hz'): (0.995, 23, 23, 2, 1.00, 1.00, 1.00, 1.00, 0),
     ('kitchen-2', 'rate-20hz'): (1.000, 23, 23, 2, 1.00, 1.00, 1.00, 1.00, 0),
     ('kitchen-2', 'rate-30hz'): (0.995, 23, 23, 2, 1.00, 1.00, 1.00, 1.00, 0),
-    ('stacking', 'all'): (0.962, 240, 240, 20, 1.00, 1.00, 1.00, 1.00, 0),
+    ('stacking', 'all'): (0.962, 312, 312, 26, 1.00, 1.00, 1.00, 1.00, 0),
     ('stacking', 'base'): (0.997, 24, 24, 2, 1.00, 1.00, 1.00, 1.00, 0),
     ('stacking', 'drops-dups'): (0.990, 24, 24, 2, 1.00, 1.00, 1.00, 1.00, 0),
     ('stacking', 'field-20hz'): (0.962, 24, 24, 2, 1.00, 1.00, 1.00, 1.00, 0),
@@ -68,6 +69,18 @@ BASELINE = {
     ('stacking', 'rate-15hz'): (0.993, 24, 24, 2, 1.00, 1.00, 1.00, 1.00, 0),
     ('stacking', 'rate-20hz'): (0.990, 24, 24, 2, 1.00, 1.00, 1.00, 1.00, 0),
     ('stacking', 'rate-30hz'): (0.997, 24, 24, 2, 1.00, 1.00, 1.00, 1.00, 0),
+    ('cupboard', 'tracking-loss'): (0.984, 26, 26, 2, 1.00, 1.00, 1.00, 1.00, 0),
+    ('cupboard', 'regrasp'): (0.996, 26, 26, 2, 1.00, 1.00, 1.00, 1.00, 0),
+    ('cupboard', 'brief-grip'): (0.995, 26, 26, 2, 1.00, 1.00, 1.00, 1.00, 0),
+    ('kitchen-1', 'tracking-loss'): (0.982, 21, 21, 2, 1.00, 1.00, 1.00, 1.00, 0),
+    ('kitchen-1', 'regrasp'): (0.996, 21, 21, 2, 1.00, 1.00, 1.00, 1.00, 0),
+    ('kitchen-1', 'brief-grip'): (0.994, 21, 21, 2, 1.00, 1.00, 1.00, 1.00, 0),
+    ('kitchen-2', 'tracking-loss'): (0.986, 23, 23, 2, 1.00, 1.00, 1.00, 1.00, 0),
+    ('kitchen-2', 'regrasp'): (0.994, 23, 23, 2, 1.00, 1.00, 1.00, 1.00, 0),
+    ('kitchen-2', 'brief-grip'): (0.994, 23, 23, 2, 1.00, 1.00, 1.00, 1.00, 0),
+    ('stacking', 'tracking-loss'): (0.976, 24, 24, 2, 1.00, 1.00, 1.00, 1.00, 0),
+    ('stacking', 'regrasp'): (0.995, 24, 24, 2, 1.00, 1.00, 1.00, 1.00, 0),
+    ('stacking', 'brief-grip'): (0.994, 24, 24, 2, 1.00, 1.00, 1.00, 1.00, 0),
 }
 F1_TOLERANCE = 0.01
 LEARNING_TOLERANCE = 0.02  # the pins are rounded to 2 decimals
@@ -94,11 +107,11 @@ def test_the_committed_files_are_what_the_generator_makes(tmp_path):
     made = sorted(p.relative_to(tmp_path) for p in tmp_path.rglob("*.csv"))
     committed = sorted(p.relative_to(TRACES) for p in TRACES.rglob("*.csv"))
     assert made == committed
-    assert len(written) == 80  # 4 scenarios x 10 conditions x 2 scripts
+    assert len(written) == 104  # 4 scenarios x 13 conditions x 2 scripts
     for rel in made:
         assert (tmp_path / rel).read_bytes() == (TRACES / rel).read_bytes(), rel
     total = sum(p.stat().st_size for p in TRACES.rglob("*") if p.is_file())
-    assert total < 3.3e6
+    assert total < 5e6  # about 45 kB a trace with its state and labels (the slow tracking-loss ones twice): small
 
 
 def test_the_generator_does_not_use_the_project_renderer():
@@ -191,7 +204,7 @@ def test_every_source_scenario_and_condition_meets_the_targets(rows, key):
 
 def test_a_held_out_draw_of_the_traces_meets_the_targets_too(tmp_path):
     """The rules were measured on the committed draw; a fresh one (every duration, speed profile, noise, drop
-    and lag drawn with other seeds) must meet the same targets, so they are not fitted to those 80 files."""
+    and lag drawn with other seeds) must meet the same targets, so they are not fitted to those 104 files."""
     import shutil
 
     from guided_lfd.demonstration.quality import sources_report

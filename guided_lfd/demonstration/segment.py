@@ -49,6 +49,13 @@ JITTER_S = 0.06
 MIN_SEGMENT_S = 0.15
 #: Frame gaps up to this long (dropped frames) do not split a segment (s).
 MAX_GAP_S = 0.5
+#: A longer gap (the tracker lost the hand) up to this long does not split an activity either, when the hand
+#: does the same on both sides of it: the same label, holding and targeting the same objects (s).
+MAX_LOSS_S = 2.0
+#: An activity interrupted this briefly on the object it works on stays one activity: a run shorter than this
+#: between two runs of the same activity on the same object (holding it: a re-grasp during a carry; reaching
+#: for it: an accidental grip on the way) (s).
+REGRASP_S = 0.3
 #: How late the object detector may name a reach's target (s): a reach whose first frames move
 #: without a target yet, after the hand was idle, is a reach from its start, not a Release.
 DETECTOR_LATENCY_S = 0.15
@@ -122,11 +129,20 @@ def _types(names: np.ndarray, objects: dict[str, str], missing: str) -> np.ndarr
     return kinds[codes]  # code -1 (no value) takes the last entry
 
 
-def _runs(times: np.ndarray, labels: np.ndarray) -> list[list]:
-    """[label, first index, last index] runs, split by label changes and long gaps."""
+def _runs(times: np.ndarray, labels: np.ndarray, held: np.ndarray | None = None,
+          target: np.ndarray | None = None) -> list[list]:
+    """[label, first index, last index] runs, split by label changes and long gaps: a gap longer than
+    :data:`MAX_GAP_S` splits unless the hand holds and targets the same on both sides and it is no longer than
+    :data:`MAX_LOSS_S` (a tracking loss inside one activity)."""
     if len(labels) == 0:
         return []
-    cut = np.flatnonzero((labels[1:] != labels[:-1]) | (np.diff(times) > MAX_GAP_S)) + 1
+    gap = np.diff(times)
+    same = np.zeros(len(gap), dtype=bool)  # without the hand's objects, no gap is known to be inside one activity
+    if held is not None and target is not None:
+        same = (held[1:] == held[:-1]) & (target[1:] == target[:-1])
+    # The loss is the time without frames: the gap less the frame period, and a few dropped frames beside it.
+    lost = (gap > MAX_GAP_S) & ~(same & (gap - 3 * frame_period(times) <= MAX_LOSS_S))
+    cut = np.flatnonzero((labels[1:] != labels[:-1]) | lost) + 1
     starts = np.concatenate(([0], cut))
     ends = np.concatenate((cut - 1, [len(labels) - 1]))
     return [[labels[s], int(s), int(e)] for s, e in zip(starts, ends)]
@@ -135,9 +151,12 @@ def _runs(times: np.ndarray, labels: np.ndarray) -> list[list]:
 class _RunList:
     """Runs as a doubly linked list (label, first and last frame of each), for debouncing in linear time."""
 
-    def __init__(self, times: np.ndarray, runs: list[list]) -> None:
+    def __init__(self, times: np.ndarray, runs: list[list], held: np.ndarray | None = None,
+                 target: np.ndarray | None = None) -> None:
         n = len(runs)
         self.times = times
+        # What the hand works on at each frame: what it holds, else what it acts on (None: not known).
+        self.on = None if held is None or target is None else np.where(held != "", held, target)
         self.frame = frame_period(times)
         self.label = [r[0] for r in runs]
         self.first = [r[1] for r in runs]
@@ -162,7 +181,15 @@ class _RunList:
             return True
         if self.prev[k] == -1 or self.nxt[k] == -1:
             return size < MIN_SEGMENT_S  # cut off by the trace's start or end
-        return size < MIN_SEGMENT_S and self.label[self.prev[k]] == self.label[self.nxt[k]]
+        same = self.label[self.prev[k]] == self.label[self.nxt[k]]
+        return size < MIN_SEGMENT_S and same or size < REGRASP_S and same and self.regrasp(k)
+
+    def regrasp(self, k: int) -> bool:
+        """Whether run ``k`` interrupts one activity on one object (the runs beside it work on the same one)."""
+        if self.on is None:
+            return False
+        before, after = self.on[self.last[self.prev[k]]], self.on[self.first[self.nxt[k]]]
+        return bool(before) and before == after
 
     def remove(self, k: int) -> None:
         """Unlink run ``k``."""
@@ -208,14 +235,15 @@ class _RunList:
         return touched
 
 
-def _debounce(times: np.ndarray, runs: list[list]) -> list[list]:
+def _debounce(times: np.ndarray, runs: list[list], held: np.ndarray | None = None,
+              target: np.ndarray | None = None) -> list[list]:
     """Absorb jitter runs into their neighbours, shortest first (see the module docstring).
 
     The noise runs wait in a heap keyed by (length, first frame), the rule's order; a merge changes only the
     runs beside it, which are keyed again: linear in the runs up to the heap's logarithm."""
     import heapq
 
-    rl = _RunList(times, runs)
+    rl = _RunList(times, runs, held, target)
     heap = [rl.keyed(k) for k in range(len(runs)) if rl.noise(k)]
     heapq.heapify(heap)
     while rl.count > 1 and heap:
@@ -269,7 +297,8 @@ def _hand_segments(demo: Demonstration, labels: np.ndarray, hand: str) -> list[S
     all_held, all_target = frames["in_hand"].to_numpy(dtype=object)[idx], frames["act_on"].to_numpy(dtype=object)[idx]
     onset = frames["hand_move"].to_numpy(dtype=bool)[idx] & (all_held != "") & (all_target == all_held)
     hand_labels = _late_transports(times, labels[idx].copy(), onset)
-    runs = _debounce(times, _lagged_reaches(times, _runs(times, hand_labels)))
+    runs = _debounce(times, _lagged_reaches(times, _runs(times, hand_labels, all_held, all_target)), all_held,
+                     all_target)
     held, target = all_held, all_target
     out = []
     for label, first, last in runs:

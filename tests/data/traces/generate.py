@@ -65,6 +65,13 @@ class Condition:
     liftoff: bool = False  # contact ends 0.12-0.19 s into the transport
     clock_start_s: float = 0.0  # time of the first frame
     lowercase: bool = False  # object names in the trace lowercased (the state keeps its spelling)
+    # One event per trace, its length drawn from the range: the tracker loses the hand inside a take, a
+    # transport or an opening (its rows missing); the hand re-grasps during a transport (grip open, nothing
+    # held, the object still the target); an accidental grip near the object during a reach.
+    loss_s: tuple[float, float] = (0.0, 0.0)
+    regrasp_s: tuple[float, float] = (0.0, 0.0)
+    brief_grip_s: tuple[float, float] = (0.0, 0.0)
+    tempo: float = 1.0  # every motion's duration times this (2.5: a slow demonstrator, motions of 1-3 s)
 
     def describe(self) -> str:
         parts = [f"{self.rate_hz:g} Hz", self.profile]
@@ -82,7 +89,19 @@ class Condition:
             parts.append(f"clock starts at {self.clock_start_s:g} s")
         if self.lowercase:
             parts.append("lowercase names in the trace")
+        if self.tempo != 1.0:
+            parts.append(f"motions {self.tempo:g} times as long")
+        parts += self.events()
         return "; ".join(parts)
+
+    def events(self) -> list[str]:
+        """The condition's one-off events, in words."""
+        out = []
+        for what, (low, high) in (("tracking loss", self.loss_s), ("re-grasp during a transport", self.regrasp_s),
+                                  ("accidental grip during a reach", self.brief_grip_s)):
+            if high:
+                out.append(f"{what} {low:g}-{high:g} s")
+        return out
 
 
 CONDITIONS = [
@@ -98,6 +117,9 @@ CONDITIONS = [
     Condition("liftoff", liftoff=True),
     Condition("field-20hz", rate_hz=20, profile="piecewise", tremor_m=0.0015, drop=0.03, duplicate=0.01,
               lag_s=(0.05, 0.15), liftoff=True, clock_start_s=1.0),
+    Condition("tracking-loss", tremor_m=0.001, drop=0.02, loss_s=(0.5, 2.0), tempo=2.5),
+    Condition("regrasp", tremor_m=0.001, regrasp_s=(0.18, 0.28)),
+    Condition("brief-grip", tremor_m=0.001, brief_grip_s=(0.05, 0.14)),
 ]
 
 
@@ -240,6 +262,7 @@ class Actor:
         self.pending_lift: tuple[str, str] | None = None
 
     def phase(self, label, duration, path, grip=False, held="", act_on=""):
+        duration *= self.cond.tempo
         ph = Phase(label, self.t, duration, path, grip, held, act_on, self.cond.profile, int(self.rng.integers(1 << 30)))
         self.phases.append(ph)
         self.t += duration
@@ -409,11 +432,46 @@ def sample(actor: Actor, cond: Condition, rng: np.random.Generator):
     return frames
 
 
+def _window(frames, labels: tuple[str, ...], length: float, rng: np.random.Generator, held: bool = False):
+    """Frame indices of a window of ``length`` s inside one phase labelled one of ``labels`` (clear of the
+    phase's ends by 0.1 s), drawn among the phases long enough; empty when none is."""
+    runs, start = [], 0
+    for i in range(1, len(frames) + 1):
+        if i == len(frames) or frames[i][5] != frames[start][5] or frames[i][3] != frames[start][3]:
+            t0, t1 = frames[start][0], frames[i - 1][0]
+            if frames[start][5] in labels and t1 - t0 >= length + 0.2 and (bool(frames[start][3]) or not held):
+                runs.append((t0, t1))
+            start = i
+    if not runs:
+        return []
+    t0, t1 = runs[int(rng.integers(len(runs)))]
+    begin = float(rng.uniform(t0 + 0.1, max(t0 + 0.1, t1 - 0.1 - length)))
+    return [i for i, f in enumerate(frames) if begin <= f[0] < begin + length]
+
+
+def perturb(frames, cond: Condition, rng: np.random.Generator):
+    """The condition's one-off events applied to the frames: (frames, indices of the frames the tracker lost).
+    A condition without events draws nothing (the other conditions' files stay as they were)."""
+    lost: set[int] = set()
+    frames = list(frames)
+    if cond.loss_s[1]:
+        lost = set(_window(frames, ("Take", "Put", "Open"), float(rng.uniform(*cond.loss_s)), rng))
+    if cond.regrasp_s[1]:
+        for i in _window(frames, ("Put",), float(rng.uniform(*cond.regrasp_s)), rng, held=True):
+            t, p, _, held, _, label = frames[i]
+            frames[i] = (t, p, False, "", held, label)  # the grip opens on the object and closes again
+    if cond.brief_grip_s[1]:
+        for i in _window(frames, ("Reach",), float(rng.uniform(*cond.brief_grip_s)), rng):
+            t, p, _, held, act_on, label = frames[i]
+            frames[i] = (t, p, True, held, act_on, label)  # a grip that closes on nothing and opens again
+    return frames, lost
+
+
 def write(scenario: Scenario, cond: Condition, script_name: str, seed: int, folder: Path) -> dict[str, str]:
     rng = np.random.default_rng(seed)
     actor = Actor(scenario, cond, rng)
     actor.play(scenario.scripts[script_name])
-    frames = sample(actor, cond, rng)
+    frames, lost = perturb(sample(actor, cond, rng), cond, rng)
 
     def name(x: str) -> str:
         return x.lower() if cond.lowercase else x
@@ -422,10 +480,10 @@ def write(scenario: Scenario, cond: Condition, script_name: str, seed: int, fold
     tw, lw = csv.writer(trace, lineterminator="\n"), csv.writer(labels, lineterminator="\n")
     tw.writerow(["time", "hand", "x", "y", "z", "grip", "in_hand", "act_on"])
     lw.writerow(["time", "hand", "activity"])
-    for t, p, grip, held, act_on, label in frames:
+    for i, (t, p, grip, held, act_on, label) in enumerate(frames):
         copies = 1
         r = rng.random()
-        if r < cond.drop:
+        if r < cond.drop or i in lost:
             copies = 0
         elif r < cond.drop + cond.duplicate:
             copies = 2
@@ -461,7 +519,7 @@ def generate(out: Path = HERE, seed_base: int = 14_000) -> list[Path]:
     conditions, every duration, speed profile, noise, drop and lag drawn anew."""
     written = []
     rows = [["file", "scenario", "condition", "rate_hz", "profile", "tremor_mm", "drop", "duplicate", "flicker",
-             "lag_s", "liftoff", "clock_start_s", "lowercase", "seed", "actions"]]
+             "lag_s", "liftoff", "clock_start_s", "lowercase", "seed", "actions", "events"]]
     for si, scenario in enumerate(SCENARIOS):
         for ci, cond in enumerate(CONDITIONS):
             for di, script in enumerate(sorted(scenario.scripts)):
@@ -474,7 +532,8 @@ def generate(out: Path = HERE, seed_base: int = 14_000) -> list[Path]:
                              f"{cond.tremor_m * 1000:g}", f"{cond.drop:g}", f"{cond.duplicate:g}", f"{cond.flicker:g}",
                              f"{cond.lag_s[0]:g}-{cond.lag_s[1]:g}", str(cond.liftoff).lower(),
                              f"{cond.clock_start_s:g}", str(cond.lowercase).lower(), str(seed),
-                             " ".join("(" + " ".join(a) + ")" for a in scenario.scripts[script])])
+                             " ".join("(" + " ".join(a) + ")" for a in scenario.scripts[script]),
+                             "; ".join(cond.events())])
     with open(out / "manifest.csv", "w", encoding="utf-8", newline="") as fh:
         csv.writer(fh, lineterminator="\n").writerows(rows)
     return written
