@@ -165,6 +165,11 @@ def teach(
                                                       "these rates per demonstration: KIND=RATE[,...] with KIND "
                                                       "wrong-object, partial, extra-steps, wrong-order, misread, or "
                                                       "any=RATE (e.g. any=25%).")] = None,
+    trace_noise: Annotated[str | None, typer.Option("--trace-noise", metavar="SPEC",
+                                                    help="With --simulate: a real tracker's noise in the rendered "
+                                                         "traces: KEY=VALUE[,...] with loss, regrasp, grip (s), "
+                                                         "drops, duplicates, bursts, flicker (rates), jitter (s); "
+                                                         "e.g. loss=2,regrasp=0.25,drops=0.05.")] = None,
     seed: Annotated[int, typer.Option("--seed", metavar="N", help="With --simulate: the seed of its mistakes and "
                                                                   "the rendered trace's noise.")] = 0,
     skill_changes: Annotated[str, typer.Option("--skill-changes", metavar="[on|off]",
@@ -199,11 +204,13 @@ def teach(
         raise errors.OptionError(f"--prefer {prefer}: expected 'demonstration'")
     time_limit = check_time_limit(time_limit)
     switch = _switch(skill_changes, relax_prior)
-    if (mistakes or seed) and not simulate:
-        raise errors.OptionError(f"{'--mistakes' if mistakes else '--seed'}: needs the simulated teacher "
-                                 "(--simulate HUMAN)")
+    given = [name for name, value in (("--mistakes", mistakes), ("--trace-noise", trace_noise), ("--seed", seed))
+             if value]
+    if given and not simulate:
+        raise errors.OptionError(f"{given[0]}: needs the simulated teacher (--simulate HUMAN)")
     if mistakes:
         Mistakes.parse(mistakes)  # refused before anything is read
+    noise = _trace_noise(trace_noise, seed)
     from guided_lfd.demonstration import default_state_path
 
     problems = _problem_files(problem)
@@ -213,7 +220,7 @@ def teach(
     with watchdog(deadline, "reading the input"):
         robot_domain, task = parse_task(robot, problems[0])
         tasks = [task, *(parse_task(robot, p)[1] for p in problems[1:])]
-        human = (SimulatedHuman(parse_domain(simulate), robot=robot_domain, seed=seed,
+        human = (SimulatedHuman(parse_domain(simulate), robot=robot_domain, seed=seed, noise=noise,
                                 mistakes=Mistakes.parse(mistakes) if mistakes else None) if simulate else None)
         model = parse_domain(human_model) if human_model else human.human if human else None
     ui.reading_warnings(robot_domain)
@@ -243,6 +250,18 @@ def teach(
     if json_out:
         write_text("-", session_obj.to_json())
     _report(session_obj, session)
+
+
+def _trace_noise(spec: str | None, seed: int):
+    """``--trace-noise SPEC`` as the renderer's Noise (None: the default noise)."""
+    if not spec:
+        return None
+    from guided_lfd.demonstration.render import Noise
+
+    try:
+        return Noise.parse(spec, seed)
+    except ValueError as exc:
+        raise errors.OptionError(f"--trace-noise: {exc}") from None
 
 
 def _shower(prompt: bool):

@@ -112,3 +112,35 @@ def test_a_skill_shown_between_pieces_of_furniture_keeps_the_robots_types(runner
 
     move = parse_domain(tmp_path / "s" / "robot.pddl").action("move_chair")
     assert dict(move.params) == {"?c": "obstacle", "?from": "furniture", "?to": "furniture"}
+
+
+NOISY = "loss=2,regrasp=0.28,grip=0.14,drops=0.1,duplicates=0.02,bursts=0.01,jitter=0.002"
+
+
+def test_a_change_after_the_traces_last_frame_still_happened(runner, app, tmp_path):
+    """tools, seed 19, 50 % mistakes, a noisy tracker: round 1 stops holding the wrong wrench, its last frames
+    lost before the state file records the wrench leaving the bench; round 2 must start with the wrench off the
+    bench (it started on it and in the hand, and learned a put_wrench that needs it on the bench)."""
+    tools = "tests/data/byo/tools"
+    result = runner.invoke(app, ["teach", f"{tools}/robot.pddl", f"{tools}/problem.pddl", "--simulate",
+                                 f"{tools}/human.pddl", "-o", str(tmp_path / "s"), "--mistakes", "any=50%",
+                                 "--trace-noise", NOISY, "--seed", "19", "-q"])
+    assert result.exit_code == 0, result.output
+    from guided_lfd.pddl.reader import parse_domain
+
+    learned = {a.name for a in parse_domain(tmp_path / "s" / "robot.pddl").actions}
+    assert learned == {a.name for a in parse_domain(f"{tools}/human.pddl").actions}
+
+
+def test_trace_noise_is_refused_in_one_line_when_its_spec_is_wrong(runner, app, tmp_path):
+    result = runner.invoke(app, ["teach", f"{BYO}/robot.pddl", f"{BYO}/problem.pddl", "--simulate",
+                                 f"{BYO}/human.pddl", "--trace-noise", "loss=2,foo=1", "-o", str(tmp_path / "s")])
+    assert result.exit_code == 37
+    assert "--trace-noise: 'foo=1': expected KEY=VALUE with KEY one of loss, regrasp, grip" in result.stderr
+
+
+def test_the_tracker_events_draw_from_their_own_stream_so_a_clean_trace_is_unchanged():
+    from guided_lfd.demonstration.render import Noise
+
+    assert not Noise().tracker and Noise.parse("loss=2", seed=3).tracker
+    assert Noise.parse("drops=0.1,jitter=0.002", seed=4) == Noise(seed=4, drop_rate=0.1, jitter_s=0.002)

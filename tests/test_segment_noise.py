@@ -72,3 +72,8 @@ def test_a_brief_grip_during_a_reach_is_absorbed(grip):
 def test_without_the_hands_objects_a_long_gap_splits_as_it_always_did():
     times, labels, _, _ = _frames(("Put", 1.0, "cup", "shelf"), ("lost", 1.0, "", ""), ("Put", 0.8, "cup", "shelf"))
     assert [r[0] for r in _runs(times, labels)] == ["Put", "Put"]
+
+
+def test_a_regrasp_as_the_transport_starts_stays_between_the_take_and_the_put():
+    assert _segments(("Take", 0.5, "marker", ""), ("Reach", 0.2, "", "marker"), ("Put", 0.8, "marker", "tube"),
+                     ("Release", 0.5, "", "")) == ["Take", "Put", "Release"]

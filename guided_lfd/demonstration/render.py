@@ -62,12 +62,57 @@ class Scene:
 
 @dataclass
 class Noise:
-    """Sensor imperfections of the rendered trace."""
+    """Sensor imperfections of the rendered trace.
+
+    Beside position noise, dropped frames and grip flicker (every trace has some), a real tracker's events, off
+    by default: ``loss_s``, one tracking loss of up to that long (drawn) inside a take, a carry or a
+    manipulation of one hand (its rows missing); ``regrasp_s``, one re-grasp during a carry (the grip opens on
+    the object for up to that long, drawn from half of it); ``brief_grip_s``, one grip closing on nothing
+    during a reach; ``duplicate_rate``, rows written twice; ``burst_rate``, the chance per frame that a burst of
+    3 to 8 frames is dropped; ``jitter_s``, timestamp noise (sd, clipped to a third of the frame period so
+    the frames keep their order).  The events draw from their own random stream: a trace without them is the
+    same as before they existed."""
 
     position_sd_m: float = 0.0015
     drop_rate: float = 0.02
     flicker_rate: float = 0.01
     seed: int = 0
+    loss_s: float = 0.0
+    regrasp_s: float = 0.0
+    brief_grip_s: float = 0.0
+    duplicate_rate: float = 0.0
+    burst_rate: float = 0.0
+    jitter_s: float = 0.0
+
+    #: ``--trace-noise`` names: KEY=VALUE -> field (seconds for the events and jitter, fractions for rates).
+    SPEC_KEYS = {"loss": "loss_s", "regrasp": "regrasp_s", "grip": "brief_grip_s", "drops": "drop_rate",
+                 "duplicates": "duplicate_rate", "bursts": "burst_rate", "jitter": "jitter_s",
+                 "flicker": "flicker_rate"}
+
+    @classmethod
+    def parse(cls, spec: str, seed: int = 0) -> "Noise":
+        """``KEY=VALUE[,...]`` (keys in :data:`SPEC_KEYS`; ``loss=2,regrasp=0.25,drops=0.05``) as Noise; a
+        ValueError naming what was expected otherwise."""
+        import re
+
+        values: dict[str, float] = {}
+        for part in (p.strip() for p in str(spec).split(",") if p.strip()):
+            match = re.fullmatch(r"([a-z]+)\s*=\s*([0-9]*\.?[0-9]+)", part)
+            if not match or match.group(1) not in cls.SPEC_KEYS:
+                raise ValueError(f"'{part}': expected KEY=VALUE with KEY one of {', '.join(cls.SPEC_KEYS)}")
+            key, value = cls.SPEC_KEYS[match.group(1)], float(match.group(2))
+            if key.endswith("_rate") and value > 1:
+                raise ValueError(f"'{part}': a rate is a fraction from 0 to 1")
+            if key == "loss_s" and value > 5:
+                raise ValueError(f"'{part}': a tracking loss of at most 5 s")
+            values[key] = value
+        return cls(seed=seed, **values)
+
+    @property
+    def tracker(self) -> bool:
+        """Whether any of the tracker's events is on."""
+        return any((self.loss_s, self.regrasp_s, self.brief_grip_s, self.duplicate_rate, self.burst_rate,
+                    self.jitter_s))
 
 
 @dataclass
@@ -222,15 +267,70 @@ def _trace_csv(rows, scene: Scene, noise: Noise, rng: np.random.Generator) -> st
     buf = io.StringIO()
     writer = csv.writer(buf, lineterminator="\n")
     writer.writerow(["time", "hand", "x", "y", "z", "grip", "in_hand", "act_on"])
-    for time, hand, pos, grip, in_hand, act_on, _ in sorted(rows, key=lambda r: (r[0], r[1])):
+    rows = sorted(rows, key=lambda r: (r[0], r[1]))
+    lost: set[int] = set()
+    events = np.random.default_rng([noise.seed, 1])  # the tracker's own stream (see Noise)
+    if noise.tracker:
+        rows, lost = _tracker_events(rows, noise, events)
+    period = float(np.median(np.diff(sorted({r[0] for r in rows})))) if len(rows) > 2 else 0.0
+    burst = {"right": 0, "left": 0}
+    for k, (time, hand, pos, grip, in_hand, act_on, _) in enumerate(rows):
         if rng.random() < noise.drop_rate:
             continue  # a dropped frame
         if rng.random() < noise.flicker_rate:
             grip = not grip  # a one-frame glove misreading
         x, y, z = np.asarray(pos) + rng.normal(0.0, noise.position_sd_m, 3)
-        writer.writerow([f"{time:.4f}", hand, f"{x:.4f}", f"{y:.4f}", f"{z:.4f}",
-                         "closed" if grip else "open", _name(scene, in_hand), _name(scene, act_on)])
+        copies = 1
+        if noise.tracker:
+            if noise.burst_rate and not burst[hand] and events.random() < noise.burst_rate:
+                burst[hand] = int(events.integers(3, 9))
+            if k in lost or burst[hand]:
+                burst[hand] = max(0, burst[hand] - 1)
+                continue
+            if noise.jitter_s:
+                time = max(0.0, time + float(np.clip(events.normal(0.0, noise.jitter_s), -period / 3, period / 3)))
+            copies = 2 if noise.duplicate_rate and events.random() < noise.duplicate_rate else 1
+        for _ in range(copies):
+            writer.writerow([f"{time:.4f}", hand, f"{x:.4f}", f"{y:.4f}", f"{z:.4f}",
+                             "closed" if grip else "open", _name(scene, in_hand), _name(scene, act_on)])
     return buf.getvalue()
+
+
+def _tracker_events(rows: list[tuple], noise: Noise, rng: np.random.Generator) -> tuple[list[tuple], set[int]]:
+    """One tracking loss, one re-grasp and one brief grip (as ``noise`` asks) applied to the sorted rows: (rows,
+    indices of the rows the tracker lost)."""
+    rows, lost = list(rows), set()
+
+    def window(labels: tuple[str, ...], length: float) -> list[int]:
+        """Row indices of one hand's window of ``length`` s inside a run of one of ``labels`` (0.1 s clear of
+        its ends), drawn among the runs long enough."""
+        runs: list[tuple[str, float, float]] = []
+        for hand in ("right", "left"):
+            own = [r for r in rows if r[1] == hand]
+            start = 0
+            for i in range(1, len(own) + 1):
+                if i == len(own) or own[i][6] != own[start][6] or own[i][4] != own[start][4]:
+                    t0, t1 = own[start][0], own[i - 1][0]
+                    if own[start][6] in labels and t1 - t0 >= length + 0.2:
+                        runs.append((hand, t0, t1))
+                    start = i
+        if not runs:
+            return []
+        hand, t0, t1 = runs[int(rng.integers(len(runs)))]
+        begin = float(rng.uniform(t0 + 0.1, max(t0 + 0.1, t1 - 0.1 - length)))
+        return [i for i, r in enumerate(rows) if r[1] == hand and begin <= r[0] < begin + length]
+
+    if noise.loss_s:
+        lost = set(window(("Take", "Put", "Stack", "Manipulate"), float(rng.uniform(0.5, 1.0)) * noise.loss_s))
+    if noise.regrasp_s:
+        for i in window(("Put", "Stack"), float(rng.uniform(0.5, 1.0)) * noise.regrasp_s):
+            time, hand, pos, _, in_hand, _, label = rows[i]
+            rows[i] = (time, hand, pos, False, "", in_hand, label)  # the grip opens on the object and closes
+    if noise.brief_grip_s:
+        for i in window(("Reach",), float(rng.uniform(0.5, 1.0)) * noise.brief_grip_s):
+            time, hand, pos, _, in_hand, act_on, label = rows[i]
+            rows[i] = (time, hand, pos, True, in_hand, act_on, label)  # a grip closing on nothing
+    return rows, lost
 
 
 def _fluent(atom: Atom, scene: Scene) -> str:

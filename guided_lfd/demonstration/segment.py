@@ -56,6 +56,8 @@ MAX_LOSS_S = 2.0
 #: between two runs of the same activity on the same object (holding it: a re-grasp during a carry; reaching
 #: for it: an accidental grip on the way) (s).
 REGRASP_S = 0.3
+#: The activities that carry an object (a re-grasp between two of them, on what they carry, is still the carry).
+CARRYING = frozenset({"Take", "Put", "Stack"})
 #: How late the object detector may name a reach's target (s): a reach whose first frames move
 #: without a target yet, after the hand was idle, is a reach from its start, not a Release.
 DETECTOR_LATENCY_S = 0.15
@@ -182,14 +184,18 @@ class _RunList:
         if self.prev[k] == -1 or self.nxt[k] == -1:
             return size < MIN_SEGMENT_S  # cut off by the trace's start or end
         same = self.label[self.prev[k]] == self.label[self.nxt[k]]
-        return size < MIN_SEGMENT_S and same or size < REGRASP_S and same and self.regrasp(k)
+        return size < MIN_SEGMENT_S and same or size < REGRASP_S and self.regrasp(k)
 
     def regrasp(self, k: int) -> bool:
-        """Whether run ``k`` interrupts one activity on one object (the runs beside it work on the same one)."""
+        """Whether run ``k`` interrupts one activity on one object (the runs beside it work on the same one), or
+        one carry of an object (the runs beside it carry it: a re-grasp as the transport starts or ends)."""
         if self.on is None:
             return False
         before, after = self.on[self.last[self.prev[k]]], self.on[self.first[self.nxt[k]]]
-        return bool(before) and before == after
+        if not before or before != after:
+            return False
+        labels = (self.label[self.prev[k]], self.label[self.nxt[k]])
+        return labels[0] == labels[1] or set(labels) <= CARRYING
 
     def remove(self, k: int) -> None:
         """Unlink run ``k``."""

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field, replace
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from guided_lfd.excuse.change import Change, describe_change
 from guided_lfd.io import write_text
@@ -12,6 +13,9 @@ from guided_lfd.pddl.fit import check_human_model
 from guided_lfd.pddl.model import Atom, Domain, Problem
 from guided_lfd.planning.validation import PlanStep
 from guided_lfd.teach.mistakes import Mistakes
+
+if TYPE_CHECKING:
+    from guided_lfd.demonstration.render import Noise
 from guided_lfd.teach.request import first_unreachable
 
 __all__ = ["MIN_RATE_HZ", "MAX_RATE_HZ", "SimulatedHuman", "GivenTraces", "check_human_model"]
@@ -36,6 +40,8 @@ class SimulatedHuman:
     mistakes: Mistakes | None = None
     #: The mistake of each demonstration given so far (None: the plan as it is), in order.
     made: list[str | None] = field(default_factory=list)
+    #: The rendered traces' sensor noise and tracker events (its seed is ``seed``); None: the default noise.
+    noise: "Noise | None" = None
 
     def __post_init__(self) -> None:
         from guided_lfd.errors import OptionError
@@ -76,7 +82,8 @@ class SimulatedHuman:
         script = script_for_plan([(s.action, s.args) for s in plan], self.human, set(state), vocabulary=vocabulary)
         scene = _scene(problem, self.human)
         _check_drawable(script, scene, plan, self.human)
-        rendering = render(script, scene, set(state), self.rate_hz, Noise(seed=self.seed), vocabulary=vocabulary)
+        noise = Noise(seed=self.seed) if self.noise is None else replace(self.noise, seed=self.seed)
+        rendering = render(script, scene, set(state), self.rate_hz, noise, vocabulary=vocabulary)
         trace, states = folder / "demonstration.csv", folder / "demonstration.state.csv"
         write_text(trace, rendering.trace_csv)
         write_text(states, rendering.state_csv)

@@ -111,10 +111,11 @@ def _check_start(demo, task: Problem, trace: Path) -> None:
 
 
 def _state_after(demo, task: Problem, robot: Domain, vocabulary: HandVocabulary = KITCHEN) -> frozenset[Atom]:
-    """The world as the demonstration left it: the trace's fluents at its end, the hand facts (in the robot's
-    ``vocabulary``) as the trace's last frames say, the rest as it was."""
-    end = float(demo.frames["time"].max())
-    observed = demo.state_at(end)
+    """The world as the demonstration left it: the state file's fluents after its last change, the hand facts
+    (in the robot's ``vocabulary``) as the trace's last frames say, the rest as it was."""
+    # Every change the state file records, those after the trace's last frame too (the tracker may lose the
+    # hand's last frames; the world still changed).
+    observed = demo.state_at(float("inf"))
     traced = _traced_predicates(demo)
     state = {a for a in task.init if a.predicate not in traced and a.predicate not in vocabulary.predicates}
     state |= set(observed)
