@@ -150,6 +150,25 @@ TimeLimitOption = Annotated[
     float | None, typer.Option("--time-limit", metavar="SECONDS",
                                help="Give up after SECONDS, start-up and reading included (exit 20).")
 ]
+SkillChangesOption = Annotated[
+    str, typer.Option("--skill-changes", metavar="[on|off]",
+                      help="'on' (default): an excuse may also drop a learned precondition no demonstration tested "
+                           "('-(ontable ?y) in unstack': show that skill once more where it is false); 'off': state "
+                           "changes alone.")
+]
+RelaxPriorOption = Annotated[
+    bool, typer.Option("--relax-prior", help="Skill changes may drop preconditions of the robot's given skills too "
+                                             "(those without learned evidence).")
+]
+
+
+def skill_changes_switch(skill_changes: str, relax_prior: bool) -> bool:
+    """``--skill-changes on|off`` as a flag; OptionError for another value, or ``--relax-prior`` with ``off``."""
+    if skill_changes.lower() not in ("on", "off"):
+        raise OptionError(f"--skill-changes {skill_changes}: expected 'on' or 'off'")
+    if relax_prior and skill_changes.lower() == "off":
+        raise OptionError("--relax-prior: needs skill changes (it contradicts --skill-changes off)")
+    return skill_changes.lower() == "on"
 
 MemoryLimitOption = Annotated[
     int | None, typer.Option("--memory-limit", metavar="MIB",

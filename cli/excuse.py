@@ -7,8 +7,8 @@ from typing import Annotated, Any
 import typer
 
 from cli.common import (
-    JsonOption, MemoryLimitOption, OutputOption, QuietOption, TimeLimitOption, apply_memory_limit, check_files,
-    check_time_limit, command, emit, help_footer, output_format,
+    JsonOption, MemoryLimitOption, OutputOption, QuietOption, RelaxPriorOption, SkillChangesOption, TimeLimitOption,
+    apply_memory_limit, check_files, check_time_limit, command, emit, help_footer, output_format, skill_changes_switch,
     plain_stderr, started_at, ui,
 )
 from guided_lfd import errors
@@ -106,16 +106,8 @@ def excuse(
                                 "((at bot hall), no robot action moving it) in at most one place (default), or let "
                                 "the excuse put it in several.")
     ] = True,
-    skill_changes: Annotated[
-        str, typer.Option("--skill-changes", metavar="[on|off]",
-                          help="'on' (default): the excuse may also drop a learned precondition no demonstration "
-                               "tested ('-(ontable ?y) in unstack': show that skill once more where it is false); "
-                               "'off': state changes alone.")
-    ] = "on",
-    relax_prior: Annotated[
-        bool, typer.Option("--relax-prior", help="Skill changes may drop preconditions of the robot's given skills "
-                                                 "too (those without learned evidence).")
-    ] = False,
+    skill_changes: SkillChangesOption = "on",
+    relax_prior: RelaxPriorOption = False,
     verify: Annotated[
         bool, typer.Option("--verify", help="Re-verify the minimum: enumerate every cheaper change set and refuse "
                                             "each with the checker's own invariants and another planner (up to "
@@ -150,7 +142,7 @@ def excuse(
             invariants_from=parse_domain(invariants_from) if invariants_from else None,
             fixed_from=parse_domain(fixed_from) if fixed_from else None, started=started,
             verify=verify, change_structure=change_structure, one_place=one_place,
-            skill_changes=skill_changes.lower() == "on", relax_prior=relax_prior,
+            skill_changes=skill_changes_switch(skill_changes, relax_prior), relax_prior=relax_prior,
         )
         human_domain = parse_domain(human) if human else None
         if human_domain is not None:
@@ -202,10 +194,7 @@ def _check_choices(prefer: str | None, human: str | None, slack: int | None, all
         raise errors.OptionError(f"--strategy {strategy}: unknown strategy (expected one of: {', '.join(STRATEGIES)})")
     if max_size is not None and max_size < 0:
         raise errors.OptionError(f"--max-size {max_size}: expected a number of changes >= 0")
-    if skill_changes.lower() not in ("on", "off"):
-        raise errors.OptionError(f"--skill-changes {skill_changes}: expected 'on' or 'off'")
-    if relax_prior and skill_changes.lower() == "off":
-        raise errors.OptionError("--relax-prior: needs skill changes (it contradicts --skill-changes off)")
+    skill_changes_switch(skill_changes, relax_prior)
 
 def _diagnostics(report: ExcuseReport, model: Domain | None) -> None:
     """On stderr: what the excuse held fixed and why, and the search's effort."""

@@ -8,8 +8,9 @@ from typing import Annotated
 
 import typer
 
-from cli.common import (JsonOption, path_name, QuietOption, TimeLimitOption, check_inputs, check_time_limit, command, help_footer,
-                        one_line, started_at, ui)
+from cli.common import (JsonOption, path_name, QuietOption, RelaxPriorOption, SkillChangesOption, TimeLimitOption,
+                        check_inputs, check_time_limit, command, help_footer, one_line, skill_changes_switch,
+                        started_at, ui)
 from guided_lfd.deadline import deadline_after, watchdog
 from guided_lfd.pddl.fit import check_model_fits
 from guided_lfd import errors
@@ -172,12 +173,8 @@ def teach(
                                                          "e.g. loss=2,regrasp=0.25,drops=0.05.")] = None,
     seed: Annotated[int, typer.Option("--seed", metavar="N", help="With --simulate: the seed of its mistakes and "
                                                                   "the rendered trace's noise.")] = 0,
-    skill_changes: Annotated[str, typer.Option("--skill-changes", metavar="[on|off]",
-                                               help="'on' (default): an excuse may ask for a learned skill once "
-                                                    "more, where a precondition no demonstration tested is false; "
-                                                    "'off': state changes alone.")] = "on",
-    relax_prior: Annotated[bool, typer.Option("--relax-prior", help="Skill changes may drop preconditions of the "
-                                                                    "robot's given skills too.")] = False,
+    skill_changes: SkillChangesOption = "on",
+    relax_prior: RelaxPriorOption = False,
     max_rounds: Annotated[int, typer.Option("--max-rounds", metavar="N", help="Stop after N rounds.")] = 5,
     json_out: JsonOption = False,
     time_limit: TimeLimitOption = None,
@@ -203,7 +200,7 @@ def teach(
     if prefer not in (None, "demonstration"):
         raise errors.OptionError(f"--prefer {prefer}: expected 'demonstration'")
     time_limit = check_time_limit(time_limit)
-    switch = _switch(skill_changes, relax_prior)
+    switch = skill_changes_switch(skill_changes, relax_prior)
     given = [name for name, value in (("--mistakes", mistakes), ("--trace-noise", trace_noise), ("--seed", seed))
              if value]
     if given and not simulate:
@@ -278,15 +275,6 @@ def _shower(prompt: bool):
             typer.echo(line, err=True) if prompt else ui.info_plain(line)
 
     return show
-
-
-def _switch(skill_changes: str, relax_prior: bool) -> bool:
-    """``--skill-changes on|off`` as a flag (``--relax-prior`` needs it on)."""
-    if skill_changes.lower() not in ("on", "off"):
-        raise errors.OptionError(f"--skill-changes {skill_changes}: expected 'on' or 'off'")
-    if relax_prior and skill_changes.lower() == "off":
-        raise errors.OptionError("--relax-prior: needs skill changes (it contradicts --skill-changes off)")
-    return skill_changes.lower() == "on"
 
 
 def _problem_files(arguments: list[str]) -> list[str]:
