@@ -205,6 +205,8 @@ def teach(
              if value]
     if given and not simulate:
         raise errors.OptionError(f"{given[0]}: needs the simulated teacher (--simulate HUMAN)")
+    if seed < 0:
+        raise errors.OptionError(f"--seed {seed}: expected a whole number >= 0")
     if mistakes:
         Mistakes.parse(mistakes)  # refused before anything is read
     noise = _trace_noise(trace_noise, seed)

@@ -237,3 +237,22 @@ def test_between_a_state_change_and_a_skill_change_of_equal_cost_the_state_chang
     domain, problem = parse_task(tmp_path / "d.pddl", tmp_path / "p.pddl")
     excuse = find_excuses(domain, problem, ExcuseOptions(semantics="literal")).excuse
     assert excuse.changes == [] and [str(c) for c in excuse.skill_changes] == ["-(p ?a) in fill"]
+
+
+def test_an_empty_literal_in_an_evidence_comment_is_ignored(tmp_path):
+    robot, tower = _taught_blocks(tmp_path)
+    robot.write_text(robot.read_text().replace("(clear ?x) 1/1,", "() 1/1, (not ()) 1/1, (clear ?x) 1/1,"))
+    domain, _ = parse_task(robot, tower)
+    assert [str(e) for e in domain.action("unstack").evidence][:1] == ["(clear ?x) 1/1"]
+
+
+def test_max_size_counts_the_skill_changes_with_costs_too(tmp_path):
+    learned = [("fill", ("?a",), [Atom("p", ("?a",)), Atom("q", ("?a",))], [Atom("r", ("?a", "?a"))], [], True,
+                set())]
+    domain_text, problem_text = _pddl(learned, [], [Atom("r", ("o1", "o1")), Atom("r", ("o2", "o2"))])
+    (tmp_path / "d.pddl").write_text(domain_text)
+    (tmp_path / "p.pddl").write_text(problem_text)
+    domain, problem = parse_task(tmp_path / "d.pddl", tmp_path / "p.pddl")
+    for cap in (1, 2, 3):
+        report = find_excuses(domain, problem, ExcuseOptions(semantics="literal", max_size=cap, costs=["q=5"]))
+        assert report.excuse is None or report.excuse.size <= cap, (cap, report.excuse)

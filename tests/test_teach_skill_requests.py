@@ -156,3 +156,41 @@ def test_teach_with_skill_changes_off_asks_for_state_changes_instead(runner, app
                         "-o", str(tmp_path / "second"), "-q", "--skill-changes", "off"])
     first = _session(tmp_path / "second")["rounds"][0]
     assert first["skill_request"] is None and "+(clear b)" in first["excuse"]
+
+
+def _sequence(runner, app, out, *tasks):
+    return runner.invoke(app, ["teach", str(BYO / "robot.pddl"), *map(str, tasks), "--simulate",
+                               str(BYO / "human.pddl"), "-o", str(out), "-q"])
+
+
+def test_a_sequence_never_writes_through_a_link_in_its_folder(runner, app, tmp_path):
+    (tmp_path / "mine.txt").write_text("mine")
+    (tmp_path / "seq").mkdir()
+    (tmp_path / "seq" / "robot.pddl").symlink_to(tmp_path / "mine.txt")
+    result = _sequence(runner, app, tmp_path / "seq", DATA / "table.pddl", DATA / "tower.pddl")
+    assert result.exit_code == 40 and "holds robot.pddl as a link" in result.stderr
+    assert (tmp_path / "mine.txt").read_text() == "mine" and sorted(p.name for p in (tmp_path / "seq").iterdir()) == \
+        ["robot.pddl"]
+
+
+def test_a_sequence_refuses_a_folder_with_other_files_or_of_other_tasks(runner, app, tmp_path):
+    (tmp_path / "busy").mkdir()
+    (tmp_path / "busy" / "notes.txt").write_text("notes")
+    result = _sequence(runner, app, tmp_path / "busy", DATA / "table.pddl", DATA / "tower.pddl")
+    assert result.exit_code == 40 and "holds notes.txt" in result.stderr
+    assert _sequence(runner, app, tmp_path / "seq", DATA / "table.pddl", DATA / "tower.pddl").exit_code == 0
+    result = _sequence(runner, app, tmp_path / "seq", DATA / "tower.pddl", DATA / "table.pddl")
+    assert result.exit_code == 40 and "holds a teaching of other tasks (bw-t1, bw-t2)" in result.stderr
+
+
+def test_a_sequence_of_the_same_tasks_replaces_the_previous_one_whole(runner, app, tmp_path):
+    assert _sequence(runner, app, tmp_path / "seq", DATA / "table.pddl", DATA / "tower.pddl").exit_code == 0
+    assert _sequence(runner, app, tmp_path / "seq", DATA / "table.pddl", DATA / "tower.pddl").exit_code == 0
+    assert sorted(p.name for p in (tmp_path / "seq").iterdir()) == ["library.json", "library.md", "robot.pddl",
+                                                                     "task-1", "task-2"]
+
+
+def test_a_negative_seed_is_refused_in_one_line(runner, app, tmp_path):
+    result = runner.invoke(app, ["teach", str(BYO / "robot.pddl"), str(DATA / "table.pddl"), "--simulate",
+                                 str(BYO / "human.pddl"), "--seed", "-1", "-o", str(tmp_path / "s")])
+    assert result.exit_code == 37 and "--seed -1: expected a whole number >= 0" in result.stderr

@@ -101,6 +101,8 @@ class Noise:
             if not match or match.group(1) not in cls.SPEC_KEYS:
                 raise ValueError(f"'{part}': expected KEY=VALUE with KEY one of {', '.join(cls.SPEC_KEYS)}")
             key, value = cls.SPEC_KEYS[match.group(1)], float(match.group(2))
+            if key.endswith("_rate") and value >= 1 and key in ("drop_rate", "burst_rate"):
+                raise ValueError(f"'{part}': a rate of dropped frames below 1 (a trace keeps some of its frames)")
             if key.endswith("_rate") and value > 1:
                 raise ValueError(f"'{part}': a rate is a fraction from 0 to 1")
             if key == "loss_s" and value > 5:

@@ -173,8 +173,10 @@ def _skill_report(domain: Domain, options: "ExcuseOptions", best: _Best, search:
     caller's options (optimal plans, every minimal state part), each excuse carrying the skill changes."""
     skills = list(best.skills)
     room = int(best.total) - len(skills) * SKILL_CHANGE_COST
-    final = replace(options, invariants_from=options.invariants_from or domain,
-                    max_size=None if options.costs else room)
+    size = None if options.costs else room  # with unit costs the state part's cost is its size
+    if options.max_size is not None:  # the user's cap counts the skill changes too
+        size = options.max_size - len(skills) if size is None else min(size, options.max_size - len(skills))
+    final = replace(options, invariants_from=options.invariants_from or domain, max_size=size)
     report = search(relaxed_domain(domain, skills), final)
     if report.status is ExcuseStatus.TIMEOUT:
         return _cut_short(base, best, options)

@@ -77,11 +77,12 @@ def _comment_evidence(text: str) -> dict[str, str]:
     return out
 
 
-def _literal(text: str) -> Literal:
+def _literal(text: str) -> Literal | None:
+    """The literal an evidence item names (None: an empty one, ``()`` or ``(not ())``)."""
     words = text.lower().replace("(", " ").replace(")", " ").split()
-    positive = words[0] != "not"
+    positive = not words or words[0] != "not"
     words = words if positive else words[1:]
-    return Literal(Atom(words[0], tuple(words[1:])), positive)
+    return Literal(Atom(words[0], tuple(words[1:])), positive) if words else None
 
 
 def _attached(action: ActionSchema, items: str) -> ActionSchema:
@@ -95,6 +96,8 @@ def _attached(action: ActionSchema, items: str) -> ActionSchema:
         if not 0 <= shown <= demonstrations or demonstrations == 0:
             continue
         lit = _literal(match.group(1))
+        if lit is None:
+            continue
         required = shown == demonstrations
         if (lit in pre) == required:  # a required one must be a precondition; a varied one must not
             evidence.append(Evidence(lit, shown, demonstrations, bool(match.group(4)) and required))

@@ -9,11 +9,53 @@ from typing import Iterator
 
 from guided_lfd.pddl.model import Problem
 
-__all__ = ["SESSION_FILES", "check_session_folder", "replacing_previous_session", "make_folder"]
+__all__ = ["SESSION_FILES", "LIBRARY_FILES", "check_session_folder", "check_library_folder",
+           "replacing_previous_session", "make_folder"]
 
 
 #: What a session writes into its folder (besides ``round-N/``).
 SESSION_FILES = ("robot.pddl", "session.json", "session.md")
+#: What a sequence of sessions writes into its folder (besides ``task-N/``).
+LIBRARY_FILES = ("robot.pddl", "library.json", "library.md")
+
+
+def check_library_folder(out: Path, problems: list[Problem]) -> None:
+    """Refuse (exit 40), before any work, a folder for a sequence of tasks that is neither new, nor empty, nor a
+    previous sequence of the same tasks (replaced whole, its ``task-N/`` folders included); a link where the
+    sequence writes, or another file, is refused, as for one session."""
+    import json
+
+    from guided_lfd.errors import Location, OutputError
+
+    def refuse(why: str) -> None:
+        raise OutputError(f"{why}; expected a new or empty folder, or a previous teaching of these tasks",
+                          Location(str(out)))
+
+    try:
+        if not out.exists():
+            return
+        if not out.is_dir():
+            raise OutputError("is a file, expected a folder for the tasks' sessions", Location(str(out)))
+        entries = sorted(out.iterdir())
+    except (OSError, RuntimeError) as exc:
+        raise OutputError(f"cannot use it as the sessions' folder ({getattr(exc, 'strerror', None) or exc})",
+                          Location(str(out))) from None
+    for entry in entries:
+        if entry.name not in LIBRARY_FILES and not (entry.name.startswith("task-") and entry.name[5:].isdigit()):
+            refuse(f"holds {entry.name}, which is no file of a teaching of tasks in sequence")
+        if entry.is_symlink():
+            refuse(f"holds {entry.name} as a link (the sessions would write through it)")
+        if entry.name.startswith("task-") and not entry.is_dir():
+            refuse(f"holds {entry.name} as a file, not a task's session folder")
+    record = out / "library.json"
+    if record.exists():
+        try:
+            earlier = [t.get("task") for t in json.loads(record.read_text(encoding="utf-8"))["tasks"]]
+        except (OSError, ValueError, KeyError, TypeError, AttributeError):
+            refuse("holds a library.json that is not a teaching of tasks in sequence")
+            return
+        if earlier != [p.name for p in problems]:
+            refuse(f"holds a teaching of other tasks ({', '.join(map(str, earlier))})")
 
 
 def check_session_folder(out: Path, problem: Problem) -> None:

@@ -52,8 +52,8 @@ class SimulatedHuman:
         if isinstance(rate, bool) or not isinstance(rate, (int, float)) or not MIN_RATE_HZ <= rate <= MAX_RATE_HZ:
             raise OptionError(f"SimulatedHuman: rate_hz {rate!r}: expected a frame rate from {MIN_RATE_HZ:g} to "
                               f"{MAX_RATE_HZ:g} Hz")
-        if isinstance(self.seed, bool) or not isinstance(self.seed, int):
-            raise OptionError(f"SimulatedHuman: seed {self.seed!r}: expected a whole number")
+        if isinstance(self.seed, bool) or not isinstance(self.seed, int) or self.seed < 0:
+            raise OptionError(f"SimulatedHuman: seed {self.seed!r}: expected a whole number >= 0")
         if self.mistakes is not None and not isinstance(self.mistakes, Mistakes):
             raise OptionError(f"SimulatedHuman: mistakes: expected Mistakes (Mistakes.parse(SPEC)) or None, got "
                               f"{type(self.mistakes).__name__}")

@@ -18,6 +18,7 @@ from typing import Any
 
 from guided_lfd.io import json_document, write_text
 from guided_lfd.pddl.model import Domain, Problem
+from guided_lfd.teach.folder import check_library_folder, make_folder, replacing_previous_session
 from guided_lfd.teach.loop import teach
 from guided_lfd.teach.session import Demonstrator, TeachSession
 
@@ -90,18 +91,27 @@ def teach_tasks(robot: Domain, problems: list[Problem], demonstrator: Demonstrat
     if not isinstance(problems, list) or not problems or not all(isinstance(p, Problem) for p in problems):
         raise OptionError("problems: expected a non-empty list of Problems")
     out = Path(out)
+    check_library_folder(out, problems)  # before any work: nothing the user had is written over
+    was_there = out.exists()
+    make_folder(out)
     library = TeachLibrary(robot.path)
-    current = robot
-    for k, problem in enumerate(problems, 1):
-        folder = out / f"task-{k}"
-        session = teach(current, problem, demonstrator, folder, **options)
-        write_text(folder / "session.json", session.to_json())
-        write_text(folder / "session.md", session.to_markdown())
-        library.sessions.append(session)
-        library.folders.append(str(folder))
-        current = parse_domain(session.robot_domain)  # as its file carries it: the evidence comments included
+    with replacing_previous_session(out, was_there):  # a previous teaching of these tasks is replaced whole
+        current = robot
+        for k, problem in enumerate(problems, 1):
+            folder = out / f"task-{k}"
+            session = teach(current, problem, demonstrator, folder, **options)
+            write_text(folder / "session.json", session.to_json())
+            write_text(folder / "session.md", session.to_markdown())
+            library.sessions.append(session)
+            library.folders.append(str(folder))
+            current = parse_domain(session.robot_domain)  # as its file carries it: the evidence comments included
+        _write_library(library, out)
+    return library
+
+
+def _write_library(library: TeachLibrary, out: Path) -> None:
+    """The library at the end (``robot.pddl``), ``library.json`` and ``library.md``."""
     library.robot_domain = str(out / "robot.pddl")
     write_text(out / "robot.pddl", Path(library.sessions[-1].robot_domain).read_text())
     write_text(out / "library.json", library.to_json())
     write_text(out / "library.md", library.to_markdown())
-    return library
