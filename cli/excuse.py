@@ -168,9 +168,13 @@ def excuse(
         for note in cut_short(report):
             ui.info_plain(f"warning: {note}")
     if excuse_problem and report.excuse is not None:
+        dropped = [str(c) for c in report.excuse.skill_changes]
         header = (f"Excuse state of {problem} for {domain} ({report.semantics.value} semantics):\n"
-                  + "\n".join(f"  {c}" for c in report.excuse.changes))
+                  + "\n".join(f"  {c}" for c in [*report.excuse.changes, *dropped]))
         write_text(excuse_problem, problem_to_pddl(prob, report.excuse.state, header=header))
+        if dropped:  # the problem alone is not what the robot plans: its skills need the preconditions dropped
+            ui.info_plain(f"warning: {excuse_problem} is the excuse state; the robot plans from it only with "
+                          f"{', '.join(dropped)} (the skill changes)")
     if svg:  # every outcome has a picture: without an excuse, the initial state and why
         write_text(svg, report.to_svg())
     if dot:

@@ -256,3 +256,12 @@ def test_max_size_counts_the_skill_changes_with_costs_too(tmp_path):
     for cap in (1, 2, 3):
         report = find_excuses(domain, problem, ExcuseOptions(semantics="literal", max_size=cap, costs=["q=5"]))
         assert report.excuse is None or report.excuse.size <= cap, (cap, report.excuse)
+
+
+def test_the_excuse_problem_of_a_skill_excuse_says_the_robot_needs_the_precondition_dropped(tmp_path):
+    robot, tower = _taught_blocks(tmp_path)
+    out = tmp_path / "excused.pddl"
+    result = CliRunner().invoke(app, ["excuse", str(robot), str(tower), "--excuse-problem", str(out)])
+    assert result.exit_code == 0
+    assert ";;   -(ontable ?y) in unstack" in out.read_text()
+    assert "the robot plans from it only with -(ontable ?y) in unstack (the skill changes)" in result.stderr

@@ -119,6 +119,7 @@ def minimal_over_skills(domain: Domain, options: "ExcuseOptions", search: StateS
     if floor is not None:
         searches += _enumerate(domain, candidates, floor, best, quick, search)
     base.statistics.skill_changes_relaxable, base.statistics.skill_searches = len(candidates), searches
+    base.statistics.time_s = round(time.monotonic() - options.started, 4)  # the whole run, the skill searches in
     if best.cut_short:
         return _cut_short(base, best, options)
     if not best.skills:
