@@ -31,15 +31,7 @@ def check_library_folder(out: Path, problems: list[Problem]) -> None:
         raise OutputError(f"{why}; expected a new or empty folder, or a previous teaching of these tasks",
                           Location(str(out)))
 
-    try:
-        if not out.exists():
-            return
-        if not out.is_dir():
-            raise OutputError("is a file, expected a folder for the tasks' sessions", Location(str(out)))
-        entries = sorted(out.iterdir())
-    except (OSError, RuntimeError) as exc:
-        raise OutputError(f"cannot use it as the sessions' folder ({getattr(exc, 'strerror', None) or exc})",
-                          Location(str(out))) from None
+    entries = _entries(out, "the tasks' sessions")
     for entry in entries:
         if entry.name not in LIBRARY_FILES and not (entry.name.startswith("task-") and entry.name[5:].isdigit()):
             refuse(f"holds {entry.name}, which is no file of a teaching of tasks in sequence")
@@ -58,6 +50,22 @@ def check_library_folder(out: Path, problems: list[Problem]) -> None:
             refuse(f"holds a teaching of other tasks ({', '.join(map(str, earlier))})")
 
 
+def _entries(out: Path, whose: str) -> list[Path]:
+    """What ``out`` holds (nothing when it does not exist yet); a file, a link loop or a folder the OS refuses is
+    the output error (exit 40)."""
+    from guided_lfd.errors import Location, OutputError
+
+    try:
+        if not out.exists():
+            return []
+        if not out.is_dir():
+            raise OutputError(f"is a file, expected a folder for {whose}", Location(str(out)))
+        return sorted(out.iterdir())
+    except (OSError, RuntimeError) as exc:  # a link loop, a folder the OS refuses
+        raise OutputError(f"cannot use it as the folder for {whose} ({getattr(exc, 'strerror', None) or exc})",
+                          Location(str(out))) from None
+
+
 def check_session_folder(out: Path, problem: Problem) -> None:
     """Refuse (exit 40), before any work, a session folder that is neither new, nor empty, nor a previous session
     of the same task (which :func:`replacing_previous_session` then replaces whole).
@@ -70,15 +78,7 @@ def check_session_folder(out: Path, problem: Problem) -> None:
         raise OutputError(f"{why}; expected a new or empty folder, or a previous session of this task",
                           Location(str(out)))
 
-    try:
-        if not out.exists():
-            return
-        if not out.is_dir():
-            raise OutputError("is a file, expected a folder for the session", Location(str(out)))
-        entries = sorted(out.iterdir())
-    except (OSError, RuntimeError) as exc:  # a link loop, a folder the OS refuses
-        raise OutputError(f"cannot use it as the session folder ({getattr(exc, 'strerror', None) or exc})",
-                          Location(str(out))) from None
+    entries = _entries(out, "the session")
     for entry in entries:
         ours = entry.name in SESSION_FILES or (entry.name.startswith("round-") and entry.name[6:].isdigit())
         if not ours:
