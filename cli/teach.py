@@ -64,10 +64,13 @@ class _Chain:
     def __init__(self, simulate, traces: list[Path], prompt: bool) -> None:
         self.simulate, self.traces, self.prompt = simulate, traces, prompt
         self.given = len(traces)
+        self.answered = False  # the last round asked for a demonstration and got --demo cannot instead
 
     def demonstrate(self, folder, state, request, problem):
         from guided_lfd.teach import GivenTraces
+        from guided_lfd.teach.human import CANNOT
 
+        self.answered = bool(self.traces) and str(self.traces[0]) == CANNOT
         if self.traces:
             return GivenTraces(self.traces).demonstrate(folder, state, request, problem)
         if self.simulate is not None:
@@ -86,6 +89,9 @@ class _Chain:
 
     def why_none(self, state, request, problem) -> str:
         """Why :meth:`demonstrate` gave None: the simulated human's reason, the prompt's, or no demonstrator."""
+        if self.answered:
+            return ("the round asked for a demonstration and the next --demo was 'cannot', which answers only a "
+                    "round that asks for a skill once more")
         if self.simulate is not None:
             return self.simulate.why_none(state, request, problem)
         if self.prompt:

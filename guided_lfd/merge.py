@@ -236,6 +236,13 @@ def _shown_again(kept: ActionSchema, action: ActionSchema) -> bool:
             and {a.substitute(binding) for a in action.delete} == set(kept.delete))
 
 
+def _same_evidence(kept: ActionSchema, action: ActionSchema) -> bool:
+    """Whether two learnings record the same evidence, literal for literal (up to the parameters' names)."""
+    binding = _positional(kept, action)
+    return binding is not None and sorted(str(e) for e in kept.evidence) == sorted(
+        str(e.substitute(binding)) for e in action.evidence)
+
+
 def generalise(kept: ActionSchema, action: ActionSchema) -> ActionSchema:
     """One learned skill from two of its learnings (:func:`_shown_again`): the preconditions both require, each
     condition's evidence summed (a positive condition one learning lacks was false there: the learners look at
@@ -325,6 +332,8 @@ def _merge_actions(domains: list[Domain], result: MergeResult) -> list[ActionSch
     for domain in domains:
         for action in domain.actions:
             shown = next((kept for kept in actions if kept.name == action.name and _shown_again(kept, action)), None)
+            if shown is not None and same_up_to_renaming(shown, action) and _same_evidence(shown, action):
+                shown = None  # the same learning twice (a domain merged with itself): a duplicate, not more evidence
             if shown is not None:
                 result.generalised.append(f"{action.name} ({domain.path}) is {shown.name} shown in another "
                                           "situation: kept once, requiring what both require")

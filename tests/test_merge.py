@@ -214,3 +214,11 @@ def test_given_skills_of_one_name_are_not_generalised_but_renamed(tmp_path):
     assert [a.name for a in merge_domains([given, parse_domain(tmp_path / "c.pddl")]).domain.actions] == \
         ["unstack", "unstack_2"]
     assert table.action("unstack").evidence
+
+
+def test_a_learned_domain_merged_with_itself_keeps_its_evidence_once(tmp_path):
+    table = _learned(tmp_path, "a.pddl", "(on ?x ?y) 1/1, (ontable ?y) 1/1", "(on ?x ?y) (ontable ?y)")
+    merged = merge_domains([table, parse_domain(tmp_path / "a.pddl")])
+    (unstack,) = merged.domain.actions
+    assert {str(e) for e in unstack.evidence} == {"(on ?x ?y) 1/1", "(ontable ?y) 1/1"}
+    assert merged.duplicates and not merged.generalised

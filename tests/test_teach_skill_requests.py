@@ -194,3 +194,10 @@ def test_a_negative_seed_is_refused_in_one_line(runner, app, tmp_path):
     result = runner.invoke(app, ["teach", str(BYO / "robot.pddl"), str(DATA / "table.pddl"), "--simulate",
                                  str(BYO / "human.pddl"), "--seed", "-1", "-o", str(tmp_path / "s")])
     assert result.exit_code == 37 and "--seed -1: expected a whole number >= 0" in result.stderr
+
+
+def test_cannot_where_a_demonstration_was_asked_for_says_so(runner, app, tmp_path):
+    result = runner.invoke(app, ["teach", str(BYO / "robot.pddl"), str(DATA / "table.pddl"), "--demo", "cannot",
+                                 "-o", str(tmp_path / "s")])
+    assert result.exit_code == 14
+    assert "the next --demo was 'cannot', which answers only a round that asks for a skill once more" in result.stderr
