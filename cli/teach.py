@@ -208,12 +208,12 @@ def teach(
     time_limit = check_time_limit(time_limit)
     switch = skill_changes_switch(skill_changes, relax_prior)
     given = [name for name, value in (("--mistakes", mistakes), ("--trace-noise", trace_noise), ("--seed", seed))
-             if value]
+             if value is not None and value != 0]
     if given and not simulate:
         raise errors.OptionError(f"{given[0]}: needs the simulated teacher (--simulate HUMAN)")
     if seed < 0:
         raise errors.OptionError(f"--seed {seed}: expected a whole number >= 0")
-    if mistakes:
+    if mistakes is not None:
         Mistakes.parse(mistakes)  # refused before anything is read
     noise = _trace_noise(trace_noise, seed)
     from guided_lfd.demonstration import default_state_path
@@ -225,8 +225,8 @@ def teach(
     with watchdog(deadline, "reading the input"):
         robot_domain, task = parse_task(robot, problems[0])
         tasks = [task, *(parse_task(robot, p)[1] for p in problems[1:])]
-        human = (SimulatedHuman(parse_domain(simulate), robot=robot_domain, seed=seed, noise=noise,
-                                mistakes=Mistakes.parse(mistakes) if mistakes else None) if simulate else None)
+        human = SimulatedHuman(parse_domain(simulate), robot=robot_domain, seed=seed, noise=noise,
+                               mistakes=None if mistakes is None else Mistakes.parse(mistakes)) if simulate else None
         model = parse_domain(human_model) if human_model else human.human if human else None
     ui.reading_warnings(robot_domain)
     if slack and not prefer:
@@ -259,7 +259,7 @@ def teach(
 
 def _trace_noise(spec: str | None, seed: int):
     """``--trace-noise SPEC`` as the renderer's Noise (None: the default noise)."""
-    if not spec:
+    if spec is None:
         return None
     from guided_lfd.demonstration.render import Noise
 

@@ -144,3 +144,18 @@ def test_the_tracker_events_draw_from_their_own_stream_so_a_clean_trace_is_uncha
 
     assert not Noise().tracker and Noise.parse("loss=2", seed=3).tracker
     assert Noise.parse("drops=0.1,jitter=0.002", seed=4) == Noise(seed=4, drop_rate=0.1, jitter_s=0.002)
+
+
+@pytest.mark.parametrize("option, spec, message", [
+    ("--mistakes", "", "--mistakes '': expected KIND=RATE[,KIND=RATE...] (nothing given)"),
+    ("--trace-noise", "", "--trace-noise: expected KEY=VALUE[,...]: nothing given"),
+    ("--trace-noise", "loss=-1", "--trace-noise: 'loss=-1': expected a number >= 0 for loss"),
+])
+def test_an_empty_or_negative_noise_or_mistake_spec_is_refused(runner, app, tmp_path, option, spec, message):
+    result = runner.invoke(app, ["teach", f"{BYO}/robot.pddl", f"{BYO}/problem.pddl", "--simulate",
+                                 f"{BYO}/human.pddl", option, spec, "-o", str(tmp_path / "s")])
+    assert result.exit_code == 37 and message in result.stderr, result.output
+
+
+def test_a_tiny_rate_in_scientific_notation_is_a_rate():
+    assert Mistakes.parse("partial=1e-3").rates == {"partial": 0.001}

@@ -96,11 +96,20 @@ class Noise:
         import re
 
         values: dict[str, float] = {}
-        for part in (p.strip() for p in str(spec).split(",") if p.strip()):
-            match = re.fullmatch(r"([a-z]+)\s*=\s*([0-9]*\.?[0-9]+)", part)
+        parts = [p.strip() for p in str(spec).split(",") if p.strip()]
+        if not parts:
+            raise ValueError("expected KEY=VALUE[,...]: nothing given")
+        for part in parts:
+            match = re.fullmatch(r"([a-z]+)\s*=\s*(\S+)", part)
             if not match or match.group(1) not in cls.SPEC_KEYS:
                 raise ValueError(f"'{part}': expected KEY=VALUE with KEY one of {', '.join(cls.SPEC_KEYS)}")
-            key, value = cls.SPEC_KEYS[match.group(1)], float(match.group(2))
+            try:
+                value = float(match.group(2))
+            except ValueError:
+                value = float("nan")
+            if not (0 <= value < float("inf")):  # also refuses nan
+                raise ValueError(f"'{part}': expected a number >= 0 for {match.group(1)}")
+            key = cls.SPEC_KEYS[match.group(1)]
             if key.endswith("_rate") and value >= 1 and key in ("drop_rate", "burst_rate"):
                 raise ValueError(f"'{part}': a rate of dropped frames below 1 (a trace keeps some of its frames)")
             if key.endswith("_rate") and value > 1:

@@ -46,8 +46,10 @@ class Mistakes:
         from guided_lfd.errors import OptionError
 
         rates: dict[str, float] = {}
+        if not str(spec).strip():
+            raise OptionError("--mistakes '': expected KIND=RATE[,KIND=RATE...] (nothing given)")
         for part in (p.strip() for p in str(spec).split(",")):
-            match = re.fullmatch(r"([a-z-]+)\s*=\s*([0-9.]+)(%?)", part)
+            match = re.fullmatch(r"([a-z-]+)\s*=\s*([0-9.]+(?:e-?[0-9]+)?)(%?)", part)
             if not match:
                 raise OptionError(f"--mistakes '{spec}': expected KIND=RATE[,KIND=RATE...] with KIND one of "
                                   f"{', '.join(MISTAKE_KINDS)} or any, and RATE a fraction or a percentage")
