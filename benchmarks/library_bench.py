@@ -22,8 +22,6 @@ a situation its first demonstration did not show), the installed command line, e
 from __future__ import annotations
 
 import argparse
-import csv
-import io
 import json
 import random
 import subprocess
@@ -36,6 +34,7 @@ ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
 from guided_lfd.benchmark import cli_command  # noqa: E402
+from guided_lfd.benchmark.results import write_csv  # noqa: E402
 
 BYO = ROOT / "tests" / "data" / "byo"
 OUT = ROOT / "benchmarks" / "library_results"
@@ -207,14 +206,6 @@ def summary(second: list[dict], course: list[dict], command: str) -> str:
     return "\n".join(lines) + "\n"
 
 
-def _write(rows: list[dict], fields: list[str], path: Path) -> None:
-    buf = io.StringIO()
-    writer = csv.DictWriter(buf, fields, extrasaction="ignore", lineterminator="\n")
-    writer.writeheader()
-    writer.writerows(rows)
-    path.write_text(buf.getvalue())
-
-
 def main(argv: list[str] | None = None) -> int:
     """Run every domain with a second task (or those named) and write the CSVs and the summary."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
@@ -229,8 +220,8 @@ def main(argv: list[str] | None = None) -> int:
     args.out.mkdir(parents=True, exist_ok=True)
     second = [second_task(folder, args.time_limit) for folder in folders]
     course = [curriculum(folder, args.time_limit, args.walks, args.out / "tasks") for folder in folders]
-    _write(second, SECOND, args.out / "second_task.csv")
-    _write(course, CURRICULUM, args.out / "curriculum.csv")
+    write_csv(args.out / "second_task.csv", SECOND, second, ignore_extra=True)
+    write_csv(args.out / "curriculum.csv", CURRICULUM, course, ignore_extra=True)
     (args.out / "summary.md").write_text(summary(second, course, "python benchmarks/library_bench.py"))
     print((args.out / "summary.md").read_text())
     ok = all(r.get("plans_both") is True and r.get("two_runs_plans_both") is True for r in second)

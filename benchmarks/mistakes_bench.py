@@ -18,8 +18,6 @@ robot plans the task from its initial state), rounds, demonstrations, mistakes m
 from __future__ import annotations
 
 import argparse
-import csv
-import io
 import sys
 import tempfile
 from concurrent.futures import ProcessPoolExecutor
@@ -27,6 +25,8 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
+
+from guided_lfd.benchmark.results import write_csv  # noqa: E402
 
 OUT = ROOT / "benchmarks" / "mistakes_results"
 RATES = (0.0, 0.10, 0.25, 0.50)
@@ -111,11 +111,7 @@ def main(argv: list[str] | None = None) -> int:
     with ProcessPoolExecutor(args.jobs) as pool:
         rows = list(pool.map(session, jobs, chunksize=4))
     args.out.mkdir(parents=True, exist_ok=True)
-    buf = io.StringIO()
-    writer = csv.DictWriter(buf, FIELDS, lineterminator="\n")
-    writer.writeheader()
-    writer.writerows(rows)
-    (args.out / "mistakes.csv").write_text(buf.getvalue())
+    write_csv(args.out / "mistakes.csv", FIELDS, rows)
     (args.out / "summary.md").write_text(summary(rows, "python benchmarks/mistakes_bench.py --jobs 2"))
     print((args.out / "summary.md").read_text())
     return 0

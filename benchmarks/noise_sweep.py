@@ -14,9 +14,7 @@ skills' precondition and effect precision and recall against the scenario's huma
 from __future__ import annotations
 
 import argparse
-import csv
 import importlib.util
-import io
 import shutil
 import sys
 import tempfile
@@ -24,6 +22,8 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
+
+from guided_lfd.benchmark.results import write_csv  # noqa: E402
 
 TRACES = ROOT / "tests" / "data" / "traces"
 OUT = ROOT / "benchmarks" / "noise_results"
@@ -98,11 +98,7 @@ def main(argv: list[str] | None = None) -> int:
     args = parser.parse_args(argv)
     rows = sweep(tuple(args.seed_bases))
     args.out.mkdir(parents=True, exist_ok=True)
-    buf = io.StringIO()
-    writer = csv.DictWriter(buf, FIELDS, lineterminator="\n")
-    writer.writeheader()
-    writer.writerows(rows)
-    (args.out / "sweep.csv").write_text(buf.getvalue())
+    write_csv(args.out / "sweep.csv", FIELDS, rows)
     (args.out / "summary.md").write_text(summary(rows, "python benchmarks/noise_sweep.py"))
     print((args.out / "summary.md").read_text())
     return 0

@@ -33,6 +33,7 @@ ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
 from guided_lfd.benchmark import cli_command  # noqa: E402
+from guided_lfd.benchmark.results import write_csv  # noqa: E402
 
 SOURCE = ROOT / "data" / "demos" / "kitchen-1" / "P1-complete.csv"
 OUT = ROOT / "benchmarks" / "segment_results"
@@ -135,11 +136,7 @@ def main(argv: list[str] | None = None) -> int:
             rows.append(run(copies, folder))
             print(rows[-1], flush=True)
     args.out.mkdir(parents=True, exist_ok=True)
-    buf = io.StringIO()
-    writer = csv.DictWriter(buf, FIELDS, lineterminator="\n")
-    writer.writeheader()
-    writer.writerows(rows)
-    (args.out / "scaling.csv").write_text(buf.getvalue())
+    write_csv(args.out / "scaling.csv", FIELDS, rows)
     (args.out / "summary.md").write_text(summary(rows, "python benchmarks/segment_scaling.py"))
     print((args.out / "summary.md").read_text())
     return 0

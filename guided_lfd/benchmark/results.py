@@ -143,14 +143,21 @@ def merge_rows(kept: list[ResultRow], new: list[ResultRow]) -> list[ResultRow]:
 
 def write_results(rows: list[ResultRow], path: Path) -> None:
     """Results as CSV (one row per task, strategy and semantics)."""
+    write_csv(path, RESULT_FIELDS, [row.to_csv() for row in rows])
+
+
+def write_csv(path: Path, fields: Sequence[str], rows: list[dict], ignore_extra: bool = False) -> None:
+    """``rows`` as a CSV with the columns ``fields``, written atomically (a benchmark's table of runs);
+    ``ignore_extra``: keys beyond ``fields`` are left out instead of refused."""
     import io
 
     from guided_lfd.io import write_text
 
     buf = io.StringIO()
-    writer = csv.DictWriter(buf, fieldnames=RESULT_FIELDS, lineterminator="\n")
+    writer = csv.DictWriter(buf, fieldnames=list(fields), lineterminator="\n",
+                            extrasaction="ignore" if ignore_extra else "raise")
     writer.writeheader()
-    writer.writerows(row.to_csv() for row in rows)
+    writer.writerows(rows)
     write_text(path, buf.getvalue())
 
 

@@ -283,7 +283,8 @@ def _trace_csv(rows, scene: Scene, noise: Noise, rng: np.random.Generator) -> st
     events = np.random.default_rng([noise.seed, 1])  # the tracker's own stream (see Noise)
     if noise.tracker:
         rows, lost = _tracker_events(rows, noise, events)
-    period = float(np.median(np.diff(sorted({r[0] for r in rows})))) if len(rows) > 2 else 0.0
+    # The frame period bounds the jitter (frames keep their order); only a trace with jitter needs it.
+    period = float(np.median(np.diff(sorted({r[0] for r in rows})))) if noise.jitter_s and len(rows) > 2 else 0.0
     burst = {"right": 0, "left": 0}
     for k, (time, hand, pos, grip, in_hand, act_on, _) in enumerate(rows):
         if rng.random() < noise.drop_rate:

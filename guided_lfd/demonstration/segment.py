@@ -139,11 +139,12 @@ def _runs(times: np.ndarray, labels: np.ndarray, held: np.ndarray | None = None,
     if len(labels) == 0:
         return []
     gap = np.diff(times)
-    same = np.zeros(len(gap), dtype=bool)  # without the hand's objects, no gap is known to be inside one activity
-    if held is not None and target is not None:
+    lost = gap > MAX_GAP_S
+    # Without the hand's objects no gap is known to be inside one activity; with them, only the long gaps ask.
+    if held is not None and target is not None and lost.any():
         same = (held[1:] == held[:-1]) & (target[1:] == target[:-1])
-    # The loss is the time without frames: the gap less the frame period, and a few dropped frames beside it.
-    lost = (gap > MAX_GAP_S) & ~(same & (gap - 3 * frame_period(times) <= MAX_LOSS_S))
+        # The loss is the time without frames: the gap less the frame period, and a few dropped frames beside it.
+        lost &= ~(same & (gap - 3 * frame_period(times) <= MAX_LOSS_S))
     cut = np.flatnonzero((labels[1:] != labels[:-1]) | lost) + 1
     starts = np.concatenate(([0], cut))
     ends = np.concatenate((cut - 1, [len(labels) - 1]))

@@ -31,7 +31,7 @@ from guided_lfd.excuse.space import (
     ChangeSpace, Semantics, check_cost_predicates, check_fixed, cost_predicates,
 )
 from guided_lfd.excuse.report import Excuse, ExcuseReport
-from guided_lfd.excuse.skills import minimal_over_skills, relaxable_preconditions
+from guided_lfd.excuse.skills import minimal_over_skills
 from guided_lfd.excuse.statistics import ExcuseStatistics
 from guided_lfd.excuse.status import ExcuseStatus
 from guided_lfd.excuse.strategies import DEFAULT_STRATEGY, STRATEGIES
@@ -261,7 +261,7 @@ def find_excuses(
         raise OptionError(f"unknown strategy '{options.strategy}' (expected one of: {', '.join(STRATEGIES)})")
     start = time.monotonic() if options.started is None else options.started
     check_option_names(domain, options)
-    if options.skill_changes and relaxable_preconditions(domain, options.relax_prior):
+    if options.skill_changes:  # without learned preconditions to drop, the state search's report as it is
         return minimal_over_skills(domain, replace(options, started=start),
                                    lambda relaxed, opts: _state_excuses(relaxed, problem, opts, on_progress))
     return _state_excuses(domain, problem, replace(options, started=start), on_progress)

@@ -121,22 +121,38 @@ def minimal_over_skills(domain: Domain, options: "ExcuseOptions", search: StateS
     base.statistics.skill_changes_relaxable, base.statistics.skill_searches = len(candidates), searches
     base.statistics.time_s = round(time.monotonic() - options.started, 4)  # the whole run, the skill searches in
     if best.cut_short:
-        return _cut_short(base, best, options)
+        return _cut_short(base, best)
     if not best.skills:
         return base
     return _skill_report(domain, options, best, search, base)
 
 
-def _cut_short(base: ExcuseReport, best: _Best, options: "ExcuseOptions") -> ExcuseReport:
+def _state_parts(report: ExcuseReport, base: ExcuseReport) -> list[Excuse]:
+    """A state search's excuses on a relaxed domain; one of no changes where the task was solvable as it is."""
+    if report.status is not ExcuseStatus.ALREADY_SOLVABLE:
+        return report.excuses
+    init = base.problem.init if base.problem else frozenset()
+    return [Excuse([], 0, init, report.robot_plan or [], False, report.robot_plan_cost)]
+
+
+def _state_size(room: float, costs: bool, cap: int | None, skills: int) -> int | None:
+    """The most state changes a search for the state part may return (None: no bound): with unit costs its cost
+    ``room`` is its size; the user's ``max_size`` (``cap``) counts the ``skills`` dropped too."""
+    size = None if costs or room == float("inf") else int(room)
+    if cap is not None:
+        size = cap - skills if size is None else min(size, cap - skills)
+    return size
+
+
+def _cut_short(base: ExcuseReport, best: _Best) -> ExcuseReport:
     """The time limit ended the search over skill changes: the best excuse so far, as a timed-out run's candidate
     (checked, not proven minimal)."""
     candidate = base.excuse
-    if best.skills and best.report is not None:
-        found = best.report
-        plan = (found.robot_plan or []) if found.excuse is None else found.excuse.plan
-        state = found.excuse.state if found.excuse is not None else (base.problem.init if base.problem else frozenset())
-        changes = found.excuse.changes if found.excuse is not None else []
-        candidate = Excuse(list(changes), int(best.total), state, plan, False, None, False, list(best.skills))
+    parts = _state_parts(best.report, base) if best.skills and best.report is not None else []
+    if parts:
+        found = parts[0]
+        candidate = Excuse(list(found.changes), int(best.total), found.state, found.plan, False, None, False,
+                           list(best.skills))
     if candidate is not None:
         candidate = replace(candidate, proven_minimal=False)
     base.statistics.phase = "skill changes"
@@ -154,9 +170,7 @@ def _enumerate(domain: Domain, candidates: list[SkillChange], floor: int, best: 
             room = best.total - k * SKILL_CHANGE_COST - 1  # the costliest state part that still beats the best
             if room < floor:
                 break
-            size = None if quick.costs or room == float("inf") else int(room)
-            if cap is not None:
-                size = cap - k if size is None else min(size, cap - k)
+            size = _state_size(room, bool(quick.costs), cap, k)
             report = search(relaxed_domain(domain, chosen), replace(quick, max_size=size))
             runs += 1
             if report.status is ExcuseStatus.TIMEOUT:
@@ -174,19 +188,12 @@ def _skill_report(domain: Domain, options: "ExcuseOptions", best: _Best, search:
     caller's options (optimal plans, every minimal state part), each excuse carrying the skill changes."""
     skills = list(best.skills)
     room = int(best.total) - len(skills) * SKILL_CHANGE_COST
-    size = None if options.costs else room  # with unit costs the state part's cost is its size
-    if options.max_size is not None:  # the user's cap counts the skill changes too
-        size = options.max_size - len(skills) if size is None else min(size, options.max_size - len(skills))
+    size = _state_size(room, bool(options.costs), options.max_size, len(skills))
     final = replace(options, invariants_from=options.invariants_from or domain, max_size=size)
     report = search(relaxed_domain(domain, skills), final)
     if report.status is ExcuseStatus.TIMEOUT:
-        return _cut_short(base, best, options)
-    if report.status is ExcuseStatus.ALREADY_SOLVABLE:
-        plan = report.robot_plan or []
-        excuses = [Excuse([], 0, base.problem.init if base.problem else frozenset(), plan, False,
-                          report.robot_plan_cost)]
-    else:
-        excuses = report.excuses
+        return _cut_short(base, best)
+    excuses = _state_parts(report, base)
     for excuse in excuses:
         excuse.skill_changes = skills
         excuse.cost += len(skills) * SKILL_CHANGE_COST

@@ -53,7 +53,7 @@ class TeachLibrary:
                 "rounds": len(rounds),
                 "demonstrations": sum(r.demonstration_length is not None for r in rounds),
                 "demonstrated_actions": sum(r.demonstration_length or 0 for r in rounds),
-                "skill_requests": [r.skill.to_dict()["step"] for r in rounds if r.skill is not None],
+                "skill_requests": [str(r.skill.step) for r in rounds if r.skill is not None],
                 "answers": [r.answer for r in rounds if r.answer],
                 "learned_actions": sorted({name for r in rounds for name in r.learned_actions}),
                 "reason": session.reason,

@@ -15,7 +15,7 @@ import itertools
 from dataclasses import dataclass, replace
 
 from guided_lfd.excuse.change import Change, SkillChange, describe_change, describe_skill_change
-from guided_lfd.pddl.model import ActionSchema, Atom, Domain, Evidence
+from guided_lfd.pddl.model import ActionSchema, Atom, Domain, Evidence, objects_by_type
 from guided_lfd.planning.validation import PlanStep
 from guided_lfd.teach.session import Round
 
@@ -45,9 +45,10 @@ def step_text(step: PlanStep) -> str:
     return " ".join((step.action, *step.args))
 
 
-def _ground(schema: ActionSchema, step: PlanStep):
+def _effects(schema: ActionSchema, step: PlanStep) -> tuple[set[Atom], set[Atom]]:
+    """The ground step's (adds, deletes)."""
     binding = {v: a for (v, _), a in zip(schema.params, step.args)}
-    return binding, {a.substitute(binding) for a in schema.add}, {a.substitute(binding) for a in schema.delete}
+    return {a.substitute(binding) for a in schema.add}, {a.substitute(binding) for a in schema.delete}
 
 
 def _needed(schema: ActionSchema, step: PlanStep, dropped: list[SkillChange], current: set[Atom],
@@ -55,8 +56,7 @@ def _needed(schema: ActionSchema, step: PlanStep, dropped: list[SkillChange], cu
     """The dropped preconditions ``step`` needs false in ``current``, and the step: rebound where a parameter
     only those preconditions name (the other room of a door) can be chosen so that none is needed."""
     def false_ones(binding: dict[str, str]) -> list[SkillChange]:
-        return [c for c in dropped if c.action == step.action
-                and (c.literal.atom.substitute(binding) in current) != c.literal.positive]
+        return [c for c in dropped if c.action == step.action and not c.literal.substitute(binding).holds(current)]
 
     binding = {v: a for (v, _), a in zip(schema.params, step.args)}
     needed = false_ones(binding)
@@ -67,30 +67,25 @@ def _needed(schema: ActionSchema, step: PlanStep, dropped: list[SkillChange], cu
     free = [(v, t) for v, t in schema.params if v not in named_elsewhere]
     for choice in itertools.product(*(objects.get(t, []) for _, t in free)):
         rebound = {**binding, **dict(zip((v for v, _ in free), choice))}
-        if not false_ones(rebound) and all((l.atom.substitute(rebound) in current) == l.positive
+        if not false_ones(rebound) and all(l.substitute(rebound).holds(current)
                                            for l in schema.precondition if l.atom.predicate != "="):
             return PlanStep(step.action, tuple(rebound[v] for v, _ in schema.params)), []
     return step, needed
 
 
 def skill_request(robot: Domain, state: frozenset[Atom], plan: list[PlanStep], dropped: list[SkillChange],
-                  objects: dict[str, str] | None = None) -> SkillRequest | None:
+                  by_type: dict[str, list[str]] | None = None) -> SkillRequest | None:
     """Where the robot's ``plan`` (from ``state``, with the ``dropped`` preconditions) first needs one dropped:
-    the steps before it, which the robot's own domain allows (a step rebound over the task's ``objects`` where
-    that makes it so), and that step; None if no step needs one."""
+    the steps before it, which the robot's own domain allows (a step rebound over the task's objects, ``by_type``
+    as :func:`~guided_lfd.pddl.model.objects_by_type` gives them, where that makes it so), and that step; None if
+    no step needs one."""
     schemas = {a.name: a for a in robot.actions}
-    by_type: dict[str, list[str]] = {}
-    subtypes = robot.subtypes()
-    for obj, kind in sorted((objects or {}).items()):
-        for t, below in subtypes.items():
-            if kind in below:
-                by_type.setdefault(t, []).append(obj)
     current = set(state)
     done: list[PlanStep] = []
     for step in plan:
         schema = schemas[step.action]
-        step, needed = _needed(schema, step, dropped, current, by_type)
-        _, adds, dels = _ground(schema, step)
+        step, needed = _needed(schema, step, dropped, current, by_type or {})
+        adds, dels = _effects(schema, step)
         if needed:
             effects = sorted([Change(a, True) for a in adds if a not in current]
                              + [Change(a, False) for a in dels - adds if a in current], key=lambda c: (c.atom, c.added))
@@ -132,9 +127,10 @@ def human_refusal(human: Domain, request: SkillRequest) -> str | None:
         return None  # the human model names the skill otherwise: its plan to the request shows what it does
     binding = {v: a for (v, _), a in zip(schema.params, request.step.args)}
     for lit in schema.precondition:
-        atom = lit.atom.substitute(binding)
-        if lit.atom.predicate != "=" and (atom in request.state) != lit.positive:
-            return f"{step_text(request.step)} cannot be done here: it needs {'' if lit.positive else 'not '}{atom}"
+        ground = lit.substitute(binding)
+        if lit.atom.predicate != "=" and not ground.holds(request.state):
+            return (f"{step_text(request.step)} cannot be done here: it needs "
+                    f"{'' if lit.positive else 'not '}{ground.atom}")
     return None
 
 
@@ -142,8 +138,7 @@ def skill_round(k: int, robot: Domain, state: frozenset[Atom], report) -> Round:
     """Round ``k`` for a skill excuse (``report``'s first excuse, skill changes alone): show the skill where its
     plan first needs a dropped precondition, after the robot's own steps before it."""
     excuse = report.excuse
-    objects = {**robot.constants, **report.problem.objects}
-    ask = skill_request(robot, state, excuse.plan, excuse.skill_changes, objects)
+    ask = skill_request(robot, state, excuse.plan, excuse.skill_changes, objects_by_type(robot, report.problem))
     if ask is None:  # the excuse would not be minimal: the robot could plan without dropping anything
         raise RuntimeError(f"internal check failed: no step of the plan needs {excuse.skill_changes}")
     spellings = report.spellings
