@@ -12,11 +12,11 @@ from guided_lfd.io import write_text
 from guided_lfd.pddl.fit import check_human_model
 from guided_lfd.pddl.model import Atom, Domain, Problem
 from guided_lfd.planning.validation import PlanStep
-from guided_lfd.teach.mistakes import Mistakes
-
-if TYPE_CHECKING:
-    from guided_lfd.demonstration.render import Noise
+from guided_lfd.teach.mistakes import Mistakes, make_mistake
 from guided_lfd.teach.request import first_unreachable
+
+if TYPE_CHECKING:  # the renderer (numpy) loads only when a demonstration is rendered
+    from guided_lfd.demonstration.render import Noise
 
 __all__ = ["MIN_RATE_HZ", "MAX_RATE_HZ", "SimulatedHuman", "GivenTraces", "check_human_model"]
 
@@ -94,8 +94,6 @@ class SimulatedHuman:
                   problem: Problem) -> list[PlanStep]:
         """The plan as this teacher carries it out: with a mistake at its rates (recorded in ``made``)."""
         import random
-
-        from guided_lfd.teach.mistakes import make_mistake
 
         kind = None
         if self.mistakes is not None:
