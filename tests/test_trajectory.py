@@ -1,7 +1,8 @@
 """Learning operators from PDDL trajectories (issue #31): the reader, the learner core, the CLI.
 
 Fixtures in ``tests/data/trajectories/``: ``lights`` (no hand, an operator without arguments, parameters in
-an unusual order), ``paint`` (what no step rules out; an object passed twice), ``quarry`` (a blast clears whatever is in the
+an unusual order), ``paint`` (what no step rules out; an object passed twice), ``levels`` (steps that
+pass one object twice and tell each other which parameter changed), ``quarry`` (a blast clears whatever is in the
 next cell, a relic too, which no step shows; a static grid), ``bad`` (one file per class of bad input) and
 ``blocksworld`` (AMLGym's own files, for a plan checked in the true domain).
 """
@@ -22,6 +23,7 @@ LIGHTS = TRAJ / "lights"
 PAINT = TRAJ / "paint"
 BLOCKS = TRAJ / "blocksworld"
 QUARRY = TRAJ / "quarry"
+LEVELS = TRAJ / "levels"
 
 
 def _learned(folder, prior="prior.pddl", model="safe", files=None):
@@ -84,12 +86,34 @@ def test_what_no_step_rules_out_stays_a_condition_in_the_safe_model_only():
     assert general.action("paint").precondition == () and ":negative-preconditions" not in general.requirements
 
 
-def test_the_safe_model_leaves_out_steps_that_pass_one_object_twice():
-    """``(carry b2 yard yard)``: which of ``?from`` and ``?to`` is b2 in the yard about?  SAM's rule: the step
-    is left out of the safe model, with a note; the general model learns from it."""
+def test_the_safe_model_learns_from_a_step_passing_one_object_twice_where_no_change_is_ambiguous():
+    """``(carry b2 yard yard)`` changes nothing, so no change can be about the wrong parameter: the safe model
+    learns from it too, and it shows that carrying needs no shop at ``?to`` (the yard is none)."""
     domain = _learned(PAINT)
-    assert domain.action("carry").origin == "learned from 1 observed step(s)"
-    assert any("1 step(s) passing one object twice (or a constant) left out" in w for w in domain.warnings)
+    carry = domain.action("carry")
+    assert carry.origin == "learned from 2 observed step(s)"
+    assert "(shop ?to)" not in _pre(carry) and "(at ?b ?from)" in _pre(carry)
+    assert not any("passing one object twice" in w for w in domain.warnings)
+
+
+def test_steps_passing_one_level_twice_tell_each_other_which_parameter_changed():
+    """TPP's load: every step passes one level twice, in two different ways; each step rules out the other's
+    wrong reading (the level that is not true after it), so the safe model learns the true action."""
+    domain = _learned(LEVELS)
+    lift, true = domain.action("lift"), parse_domain(str(LEVELS / "true.pddl")).action("lift")
+    assert set(lift.precondition) == set(true.precondition)
+    assert set(lift.add) == set(true.add) and set(lift.delete) == set(true.delete)
+    assert not any("passing one object twice" in w for w in domain.warnings)
+
+
+def test_a_step_whose_change_no_other_step_resolves_is_left_out_with_a_note():
+    """Alone, ``(lift g1 l0 l1 l0 l1)`` cannot tell whether the goods' new level is ``?high`` or ``?dhigh``:
+    SAM's rule, the step is left out (the general model learns from it)."""
+    domain = _learned(LEVELS, files=[LEVELS / "1-swap.traj"])
+    assert [a.name for a in domain.actions] == []
+    assert any("1 step(s) passing one object twice (or a constant) left out: the other steps do not tell"
+               in w for w in domain.warnings)
+    assert _learned(LEVELS, model="general", files=[LEVELS / "1-swap.traj"]).action("lift").add
 
 
 def test_moving_from_a_place_to_itself_does_not_hide_the_delete():
@@ -232,13 +256,14 @@ DOOR = TRAJ / "door"
 
 def test_atoms_about_the_priors_constants_are_learned_as_such():
     """``walk`` needs the main door open: ``(open main)``, a constant, not ``(open ?r)``; the step that walks
-    into ``main`` (a constant passed as an argument: which does ``(in main)`` mean?) is left out of the safe
-    model.  The plan for a problem whose door is shut is no plan (the true domain has none either)."""
+    into ``main`` (a constant passed as an argument: ``(in main)`` is ``(in ?r)`` or an atom of the constant)
+    is learned from, the other step telling which.  The plan for a problem whose door is shut is no plan (the
+    true domain has none either)."""
     domain = _learned(DOOR)
     walk = domain.action("walk")
     assert "(open main)" in _pre(walk) and "(open ?r)" not in _pre(walk)
+    assert walk.add == (Atom("in", ("?r",)),) and walk.origin == "learned from 2 observed step(s)"
     assert domain.action("close-main").delete == (Atom("open", ("main",)),)
-    assert any("1 step(s) passing one object twice (or a constant) left out" in w for w in domain.warnings)
 
 
 def test_an_action_with_only_a_cost_is_learned_and_keeps_its_cost(tmp_path):

@@ -44,9 +44,15 @@ when it changed in some step and held after every one.  Two models:
   (:mod:`guided_lfd.demonstration.mutex`; on distinct objects, a mover is
   at one place, so not at the other), or where it is a static fact no
   observed world has beside the action's static preconditions (no cell is
-  above itself).  As in SAM, a step that passes one object twice (which
-  parameter is an effect about?) is left out, and the guarantee is for
-  actions applied to distinct objects.
+  above itself).  A step that passes one object twice, or a constant, may
+  not tell which parameter a change is about; it is learned from only where
+  the other steps tell (of the ways the change lifts, one alone fits every
+  step: TPP's ``load`` moves goods up a level while the market's stock goes
+  down, in steps where the levels coincide one way or another), else left
+  out as SAM leaves it, with a note.  A delete that fits more than one way
+  keeps them all where no negative precondition is declared, the ways a
+  proven mutex rules out dropped (:func:`mutex.drop_idle_deletes`).  The
+  guarantee is for actions applied to distinct objects.
 * ``general``: what the steps show: preconditions that held before every
   step, effects seen to change.  The one guard it keeps is for actions seen
   clearing whatever is there: when a delete was seen where its fact was not
@@ -238,6 +244,69 @@ class _Evidence:
         return out
 
 
+def _consistent_ways(ways: set[Atom], steps: list[tuple[_Lifting, Observation]], added: bool) -> set[Atom]:
+    """The lifted ``ways`` of one change that every step allows: an add true after every step, a delete false
+    after every step but where its ground atom lifts more than one way (an add may have made it true again)."""
+    if added:
+        return {w for w in ways if all(lift.ground(w) in obs.after for lift, obs in steps)}
+    return {w for w in ways if all((g := lift.ground(w)) not in obs.after or len(lift.lifted([g])) > 1
+                                   for lift, obs in steps)}
+
+
+def _admit(ev: _Evidence, steps: list[Observation], negative: bool) -> int:
+    """Add to ``ev`` those of ``steps`` (each passing one object twice, or a constant) whose every change the
+    steps tell apart: of the ways an added atom lifts, exactly one is allowed by every step taken (see
+    :func:`_consistent_ways`); the true effect is among the allowed ways, so a single one is it.  A deleted
+    atom may lift to several allowed ways where no negative precondition is declared (``negative`` false):
+    every allowed way is learned as a delete, since a model that believes less than is true still finds only
+    plans the true domain runs (the true action then needs only positive facts).  Steps that leave a change
+    ambiguous are left out and the rest checked again (fewer steps allow more ways), until none is left out.
+    Returns how many were left out.
+
+    Preconditions gain nothing unsafe from such a step: a true precondition holds before it under one of
+    its ways, so the intersection over steps keeps it; a guard stays where the step could hide a delete
+    (see :func:`_unguarded_by`).
+    """
+    taken = [(_Lifting(ev.schema.params, obs.objects, ev.constants), obs) for obs in steps]
+    resolved: list[tuple[Observation, set[Atom], set[Atom]]] = []
+    while taken:
+        every = ev.steps + taken
+        resolved = []
+        for lift, obs in taken:
+            added, deleted = changes(obs.before, obs.after, lift.objects)
+            ways = [(_consistent_ways(lift.lifted([a]) & ev.typed, every, True), True) for a in added]
+            ways += [(_consistent_ways(lift.lifted([a]) & ev.typed, every, False), False) for a in deleted]
+            if all(len(w) == 1 or (w and not up and not negative) for w, up in ways):
+                resolved.append((obs, set().union(*(w for w, up in ways if up)),
+                                 set().union(*(w for w, up in ways if not up))))
+        if len(resolved) == len(taken):
+            break
+        kept = {id(obs) for obs, _, _ in resolved}
+        taken = [(lift, obs) for lift, obs in taken if id(obs) in kept]
+    guarded = set(ev.never_before) if ev.seen else set(ev.candidates)
+    for obs, adds, deletes in resolved:
+        ev.add(obs)
+        ev.made_true |= adds
+        ev.made_false |= deletes
+    if resolved:
+        ev.never_before = guarded.intersection(*(_unguarded_by(ev, obs) for obs, _, _ in resolved))
+    return len(steps) - len(resolved)
+
+
+def _unguarded_by(ev: _Evidence, obs: Observation) -> set[Atom]:
+    """The candidates step ``obs`` leaves a guard on: those false before it, and those true before and after it
+    whose atom lifts another way that may be an add (true after every step): the action may delete the atom
+    under one way and add it again under the other, so the step does not show it needs no guard."""
+    lift = _Lifting(ev.schema.params, obs.objects, ev.constants)
+    out = set()
+    for c in ev.candidates:
+        g = lift.ground(c)
+        if g not in obs.before or (g in obs.after and any(w != c and w in ev.after_always
+                                                          for w in lift.lifted([g]) & ev.typed)):
+            out.add(c)
+    return out
+
+
 def _guards(ev: _Evidence, model: str, negative: bool, adds: set[Atom], delete: set[Atom]) -> list[Atom]:
     """The atoms a learned action must find false (negative preconditions), by ``model``."""
     if model == "safe":
@@ -280,25 +349,29 @@ def learn_operators(prior: Domain, observations: Iterable[Observation], objects:
     to_learn = [a for a in prior.actions if not a.precondition and not a.add and not a.delete]
     constants = frozenset(prior.constants)
     evidence = {a.name: _Evidence(a, _candidates(a, prior), constants) for a in to_learn}
-    repeated = 0
+    held_back: dict[str, list[Observation]] = {name: [] for name in evidence}
     for obs in observations:
-        if model == "safe" and (len(set(obs.objects)) < len(obs.objects) or constants & set(obs.objects)):
-            # SAM's rule: a step that passes one object twice cannot tell which parameter an effect is about.
-            repeated += obs.operator in evidence
+        if obs.operator not in evidence:
             continue
-        if obs.operator in evidence:
+        if model == "safe" and (len(set(obs.objects)) < len(obs.objects) or constants & set(obs.objects)):
+            # A step that passes one object twice may not tell which parameter an effect is about (SAM leaves
+            # it out): the safe model takes it only where the other steps tell (see _admit).
+            held_back[obs.operator].append(obs)
+        else:
             evidence[obs.operator].add(obs)
-    notes = [f"{repeated} step(s) passing one object twice (or a constant) left out (the safe model learns from "
-             "steps with distinct objects; its guarantee is for actions on distinct objects)"] if repeated else []
+    negative = any(r in prior.requirements for r in (":negative-preconditions", ":adl"))
+    repeated = sum(_admit(evidence[name], steps, negative) for name, steps in held_back.items() if steps)
+    notes = [f"{repeated} step(s) passing one object twice (or a constant) left out: the other steps do not tell "
+             "which parameter a change in them is about (the safe model's guarantee is for actions on distinct "
+             "objects)"] if repeated else []
     if not to_learn:
         notes.append(f"every action of {prior.path} has a body: nothing to learn (the prior is written as it is)")
-    notes += [f"{a.name}: never observed, left out of the learned domain (nothing shows what it needs or does)"
-             for a in to_learn if evidence[a.name].seen == 0]
-    negative = any(r in prior.requirements for r in (":negative-preconditions", ":adl"))
+    notes += [f"{a.name}: never observed (or only in steps left out), left out of the learned domain (nothing "
+              "shows what it needs or does)" for a in to_learn if evidence[a.name].seen == 0]
     learned = {a.name: _learned(a, evidence[a.name], model, negative) for a in to_learn if evidence[a.name].seen}
     actions = [learned.get(a.name, a) for a in prior.actions if a.name in learned or a not in to_learn]
     domain = replace(prior, actions=actions, path="<learned>", source=None, warnings=())
-    if _guarded(domain, learned):
+    if _guarded(domain, learned) or (model == "safe" and _loose_deletes(domain, learned)):
         domain = _without_implied_negatives(domain, set(learned), objects, states)
         changed = (atom for obs in observations for atom in obs.before ^ obs.after)
         domain, assumed = drop_ruled_out_static_guards(domain, set(learned), states, changed)
@@ -317,11 +390,19 @@ def _guarded(domain: Domain, names: Iterable[str]) -> bool:
     return any(not l.positive for a in domain.actions if a.name in names for l in a.precondition)
 
 
+def _loose_deletes(domain: Domain, names: Iterable[str]) -> bool:
+    """Whether an action of ``names`` in ``domain`` deletes an atom it does not require."""
+    return any(d not in {l.atom for l in a.precondition if l.positive}
+               for a in domain.actions if a.name in names for d in a.delete)
+
+
 def _without_implied_negatives(domain: Domain, names: set[str], objects: dict[str, str],
                                states: Iterable[frozenset[Atom]]) -> Domain:
-    """Negative preconditions a positive one implies through a proven mutex, dropped."""
-    from guided_lfd.demonstration.mutex import drop_implied_negative_preconditions, proven_invariants
+    """Negative preconditions a positive one implies through a proven mutex, and deletes of atoms it rules out,
+    dropped (see :mod:`guided_lfd.demonstration.mutex`)."""
+    from guided_lfd.demonstration.mutex import drop_idle_deletes, drop_implied_negative_preconditions, proven_invariants
 
     reqs = tuple(dict.fromkeys([*domain.requirements, ":negative-preconditions"]))
     invariants = proven_invariants(replace(domain, requirements=reqs), objects, states, reverse=False)
+    domain = drop_idle_deletes(domain, names, invariants)
     return drop_implied_negative_preconditions(domain, names, invariants, distinct=True)

@@ -114,4 +114,30 @@ def drop_implied_negative_preconditions(domain: Domain, names: set[str], invaria
     return replace(domain, actions=actions)
 
 
-__all__ = ["proven_invariants", "mutex", "group_key_matches", "drop_implied_negative_preconditions"]
+def drop_idle_deletes(domain: Domain, names: set[str], invariants: list) -> Domain:
+    """``domain`` with each delete of the actions in ``names`` dropped when a positive precondition rules its atom
+    out (a mutex, on distinct objects): the atom is false whenever the action runs, so deleting it changes
+    nothing.  A step that passes one object twice may leave such deletes (see
+    :func:`guided_lfd.demonstration.action_model.learn_operators`): moving goods up from level 0 to 1 while
+    the market's stock goes from 1 to 0 cannot tell which level was deleted, so both are, and the one that is
+    not the goods' level before goes here.  A delete stays where it is the last change to its predicate:
+    without it the predicate would be static, and its invariants, which justify the drop, unprovable."""
+    def idle(d: Atom, positives: list[Atom]) -> bool:
+        return d not in positives and any(d != q and group_key_matches(d, q, invariants) for q in positives)
+
+    def positives(action: ActionSchema) -> list[Atom]:
+        return [l.atom for l in action.precondition if l.positive and l.atom.predicate != EQUALITY]
+
+    dropped = {a.name: [d for d in a.delete if idle(d, positives(a))] for a in domain.actions if a.name in names}
+    still = {x.predicate for a in domain.actions for x in (*a.add, *a.delete) if x not in dropped.get(a.name, ())}
+    actions: list[ActionSchema] = []
+    for action in domain.actions:
+        gone = [d for d in dropped.get(action.name, ()) if d.predicate in still]
+        if gone:
+            action = replace(action, delete=tuple(d for d in action.delete if d not in gone))
+        actions.append(action)
+    return replace(domain, actions=actions)
+
+
+__all__ = ["proven_invariants", "mutex", "group_key_matches", "drop_implied_negative_preconditions",
+           "drop_idle_deletes"]
