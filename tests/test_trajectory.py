@@ -110,7 +110,7 @@ def test_a_step_whose_change_no_other_step_resolves_is_left_out_with_a_note():
     """Alone, ``(lift g1 l0 l1 l0 l1)`` cannot tell whether the goods' new level is ``?high`` or ``?dhigh``:
     SAM's rule, the step is left out (the general model learns from it)."""
     domain = _learned(LEVELS, files=[LEVELS / "1-swap.traj"])
-    assert [a.name for a in domain.actions] == []
+    assert (domain.action("lift").add, domain.action("lift").delete) == ((), ())  # as if never observed
     assert any("1 step(s) passing one object twice (or a constant) left out: the other steps do not tell"
                in w for w in domain.warnings)
     assert _learned(LEVELS, model="general", files=[LEVELS / "1-swap.traj"]).action("lift").add
@@ -124,10 +124,15 @@ def test_moving_from_a_place_to_itself_does_not_hide_the_delete():
     assert _pre(action) == {"(at ?b ?from)"}
 
 
-def test_an_operator_never_observed_is_left_out_with_a_note():
+def test_an_operator_never_observed_requires_every_literal_so_it_never_applies():
+    """SAM's most specific model: every well-typed literal over its parameters, positive and negative, and no
+    effect; a note says so.  A plan naming it still reads, and no plan uses it."""
     domain = _learned(LIGHTS, files=[LIGHTS / "day-2.traj"])
-    assert "breaker-on" not in [a.name for a in domain.actions]
-    assert any("breaker-on: never observed" in w for w in domain.warnings)
+    action = domain.action("breaker-on")
+    assert (action.add, action.delete) == ((), ())
+    positives = {l.atom for l in action.precondition if l.positive}
+    assert positives and positives == {l.atom for l in action.precondition if not l.positive}
+    assert any("breaker-on: never observed" in w and "never applies" in w for w in domain.warnings)
 
 
 def test_changes_bind_atoms_without_arguments_and_only_the_actions_objects():
@@ -167,7 +172,8 @@ def test_observations_of_unknown_operators_are_ignored_by_the_core():
     prior = parse_domain(str(LIGHTS / "prior.pddl"))
     step = Observation("dance", (), frozenset(), frozenset({Atom("power")}))
     domain, notes = learn_operators(prior, [step], {}, "safe")
-    assert domain.actions == [] and len(notes) == 3
+    assert "dance" not in [a.name for a in domain.actions] and len(notes) == 3
+    assert all(not a.add and not a.delete for a in domain.actions)  # the prior's operators, none observed
 
 
 BAD = [

@@ -85,11 +85,12 @@ def _alike(learned: Domain, steps: list[Observation], states: list[frozenset[Ato
            rng: random.Random) -> list[frozenset[Atom]]:
     """Fresh initial states within the guarantee's assumptions: a training state's static facts, other facts at
     random, where they satisfy every invariant the learner proved and checked on the observed states."""
-    from guided_lfd.demonstration.mutex import _holds, proven_invariants
+    from guided_lfd.demonstration.mutex import _holds, pair_invariants, proven_invariants
     from guided_lfd.demonstration.static_facts import static_predicates
 
     static = static_predicates(learned, (a for s in steps for a in s.before ^ s.after))
     invariants = proven_invariants(learned, {o: "object" for o in OBJECTS}, states, reverse=False)
+    invariants += pair_invariants(learned, states)
     fluents = [Atom(n, args) for n, k in PREDICATES.items() if n not in static for args in product(OBJECTS, repeat=k)]
     out = []
     for init in inits:

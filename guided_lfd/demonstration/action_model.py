@@ -333,6 +333,17 @@ def _learned(schema: ActionSchema, ev: _Evidence, model: str, negative: bool) ->
                    origin=f"learned from {ev.seen} observed step(s)", evidence=evidence)
 
 
+def _unobserved(schema: ActionSchema, ev: _Evidence) -> ActionSchema:
+    """An operator no step shows, as SAM writes it: every well-typed literal over its parameters a precondition,
+    positive and negative, and no effect.  The most specific model there is: it never applies (an atom and its
+    negation are both required), so no plan relies on effects nobody has seen, and a plan or problem that names
+    the operator still reads."""
+    atoms = sorted(ev.candidates)
+    return replace(schema, precondition=tuple(Literal(a) for a in atoms) + tuple(Literal(a, False) for a in atoms),
+                   add=(), delete=(), origin="never observed: every literal required, so it never applies",
+                   evidence=())
+
+
 def learn_operators(prior: Domain, observations: Iterable[Observation], objects: dict[str, str],
                     model: str = "safe", states: Iterable[frozenset[Atom]] = ()) -> tuple[Domain, list[str]]:
     """``prior`` with the actions that have empty bodies learned from ``observations`` (see the module).
@@ -366,15 +377,17 @@ def learn_operators(prior: Domain, observations: Iterable[Observation], objects:
              "objects)"] if repeated else []
     if not to_learn:
         notes.append(f"every action of {prior.path} has a body: nothing to learn (the prior is written as it is)")
-    notes += [f"{a.name}: never observed (or only in steps left out), left out of the learned domain (nothing "
-              "shows what it needs or does)" for a in to_learn if evidence[a.name].seen == 0]
-    learned = {a.name: _learned(a, evidence[a.name], model, negative) for a in to_learn if evidence[a.name].seen}
+    notes += [f"{a.name}: never observed (or only in steps left out): written with every literal as a precondition, "
+              "so it never applies until a step shows what it needs and does" for a in to_learn if evidence[a.name].seen == 0]
+    learned = {a.name: _learned(a, evidence[a.name], model, negative) if evidence[a.name].seen
+               else _unobserved(a, evidence[a.name]) for a in to_learn}
     actions = [learned.get(a.name, a) for a in prior.actions if a.name in learned or a not in to_learn]
     domain = replace(prior, actions=actions, path="<learned>", source=None, warnings=())
-    if _guarded(domain, learned) or (model == "safe" and _loose_deletes(domain, learned)):
-        domain = _without_implied_negatives(domain, set(learned), objects, states)
+    seen = {name for name in learned if evidence[name].seen}  # an operator never observed keeps every literal
+    if _guarded(domain, seen) or (model == "safe" and _loose_deletes(domain, seen)):
+        domain = _without_implied_negatives(domain, seen, objects, states)
         changed = (atom for obs in observations for atom in obs.before ^ obs.after)
-        domain, assumed = drop_ruled_out_static_guards(domain, set(learned), states, changed)
+        domain, assumed = drop_ruled_out_static_guards(domain, seen, states, changed)
         if assumed:
             notes.append(f"{len(assumed)} guard(s) on static facts left out: no trajectory's world has them beside "
                          "the action's static preconditions (the problems' static facts are assumed alike)")
@@ -400,9 +413,12 @@ def _without_implied_negatives(domain: Domain, names: set[str], objects: dict[st
                                states: Iterable[frozenset[Atom]]) -> Domain:
     """Negative preconditions a positive one implies through a proven mutex, and deletes of atoms it rules out,
     dropped (see :mod:`guided_lfd.demonstration.mutex`)."""
-    from guided_lfd.demonstration.mutex import drop_idle_deletes, drop_implied_negative_preconditions, proven_invariants
+    from guided_lfd.demonstration.mutex import (drop_idle_deletes, drop_implied_negative_preconditions,
+                                                pair_invariants, proven_invariants)
 
+    states = list(states)
     reqs = tuple(dict.fromkeys([*domain.requirements, ":negative-preconditions"]))
     invariants = proven_invariants(replace(domain, requirements=reqs), objects, states, reverse=False)
+    invariants += pair_invariants(domain, states)
     domain = drop_idle_deletes(domain, names, invariants)
     return drop_implied_negative_preconditions(domain, names, invariants, distinct=True)

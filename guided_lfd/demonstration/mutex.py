@@ -42,6 +42,64 @@ def proven_invariants(domain: Domain, objects: dict[str, str], states: Iterable[
     return [inv for inv in found if all(_holds(inv, state) for state in observed)]
 
 
+def pair_invariants(domain: Domain, states: Iterable[frozenset[Atom]]) -> list:
+    """Invariants "never both ``p(x...)`` and ``q(x...)``" over two predicates of one arity, proven together by
+    induction over ``domain``'s actions on distinct objects, none a constant, where no state of ``states``
+    breaks them (as :func:`proven_invariants`' are).
+
+    Fast Downward's synthesis balances an add only by a delete of a precondition, so it misses a group an
+    action enters by deleting every other member (a laser makes a cell ``clear`` and deletes its soft and
+    hard rock, whichever was there).  Here an action that makes ``p(t)`` true keeps the pair when it does not
+    make ``q(t)`` true and makes it false (a delete) or needs a fact that rules it out: ``p(t)`` itself, or
+    ``r(t)`` of a pair ``(r, q)`` kept too (a bomb needs soft rock, which no hard rock is beside).  The
+    pairs are a greatest fixpoint: every candidate the states allow, less those some action breaks given the
+    rest, until none is.  Negative preconditions are not used: a learned one is a guard that later steps may
+    drop.  A domain with an ADL action proves none.
+    """
+    from fast_downward.translate.invariants import Invariant, InvariantPart
+
+    if any(a.is_adl for a in domain.actions):
+        return []
+    observed = list(states)
+    by_arity: dict[int, list[str]] = {}
+    for pred in sorted(domain.predicates.values(), key=lambda x: x.name):
+        if pred.name != EQUALITY:
+            by_arity.setdefault(len(pred.params), []).append(pred.name)
+    pairs = {frozenset((p, q)) for names in by_arity.values() for i, p in enumerate(names) for q in names[i + 1:]}
+    pairs = {pair for pair in pairs if not any(_both(s, *sorted(pair)) for s in observed)}
+    while True:
+        broken = {pair for pair in pairs if not _pair_kept(domain.actions, pair, pairs)}
+        if not broken:
+            break
+        pairs -= broken
+    arity = {p: len(domain.predicates[p].params) for pair in pairs for p in pair}
+    return [Invariant([InvariantPart(p, tuple(range(arity[p]))) for p in sorted(pair)]) for pair in sorted(pairs, key=sorted)]
+
+
+def _pair_kept(actions: Iterable[ActionSchema], pair: frozenset[str], pairs: set[frozenset[str]]) -> bool:
+    """Whether no action of ``actions`` makes both atoms of ``pair`` true over one tuple of arguments, given that
+    every pair of ``pairs`` holds before it (see :func:`pair_invariants`)."""
+    p, q = sorted(pair)
+    for action in actions:
+        positives = {l.atom for l in action.precondition if l.positive}
+        for added in action.add:
+            for other in ((q,) if added.predicate == p else (p,) if added.predicate == q else ()):
+                partner = Atom(other, added.args)
+                if partner in action.add:
+                    return False
+                if partner in action.delete or added in positives:
+                    continue
+                if not any(r.args == added.args and r.predicate != other and frozenset((r.predicate, other)) in pairs
+                           for r in positives):
+                    return False
+    return True
+
+
+def _both(state: frozenset[Atom], p: str, q: str) -> bool:
+    """Whether ``state`` has ``p(x...)`` and ``q(x...)`` for some arguments."""
+    return any(a.predicate == p and Atom(q, a.args) in state for a in state)
+
+
 def _key(part, atom: Atom) -> tuple[str, ...] | None:
     """The group instance ``atom`` belongs to under invariant part ``part`` (None: it does not)."""
     if part.predicate != atom.predicate or len(part.args) != len(atom.args):
@@ -139,5 +197,5 @@ def drop_idle_deletes(domain: Domain, names: set[str], invariants: list) -> Doma
     return replace(domain, actions=actions)
 
 
-__all__ = ["proven_invariants", "mutex", "group_key_matches", "drop_implied_negative_preconditions",
+__all__ = ["proven_invariants", "pair_invariants", "mutex", "group_key_matches", "drop_implied_negative_preconditions",
            "drop_idle_deletes"]

@@ -51,13 +51,13 @@ def relaxable_preconditions(domain: Domain, relax_prior: bool = False) -> list[S
     every demonstration and the teacher never refused the skill without it); with ``relax_prior``, every
     precondition of an action without evidence (the user's own skills) too.
 
-    Never a precondition the action itself consumes (a positive one it deletes, a negative one it adds): the
-    skill's effect on it was learned from its holding before (an effect needs its precondition, as in SAM's safe
-    models); nor an equality."""
+    Never a precondition of an action that changes nothing (an operator no trajectory showed); nor one the action
+    itself consumes (a positive one it deletes, a negative one it adds): the skill's effect on it was learned from
+    its holding before (an effect needs its precondition, as in SAM's safe models); nor an equality."""
     out = []
     for action in domain.actions:
-        if action.is_adl:
-            continue
+        if action.is_adl or not (action.add or action.delete):
+            continue  # an action that changes nothing helps no plan, whatever it needs
         if action.evidence:
             required, _ = action.learned_evidence()
             literals = [e.literal for e in required if e.untested]
