@@ -67,6 +67,7 @@ from __future__ import annotations
 from collections import Counter
 from collections.abc import Iterable
 from dataclasses import dataclass, field, replace
+from functools import cache
 from itertools import product
 
 from guided_lfd.demonstration.static_facts import drop_ruled_out_static_guards
@@ -236,27 +237,21 @@ class _Evidence:
         """Those of ``among`` false after every step, except a step where the atom lifts more than one way:
         there another of its ways may be an add that made it true again (PDDL applies deletes first: moving
         from a place to itself leaves the mover there)."""
-        out: set[Atom] = set()
-        for atom in among:
-            if all((ground := lift.ground(atom)) not in obs.after or len(lift.lifted([ground])) > 1
-                   for lift, obs in self.steps):
-                out.add(atom)
-        return out
+        return {atom for atom in among if _fits(atom, self.steps, added=False)}
 
 
-def _consistent_ways(ways: set[Atom], steps: list[tuple[_Lifting, Observation]], added: bool) -> set[Atom]:
-    """The lifted ``ways`` of one change that every step allows: an add true after every step, a delete false
+def _fits(way: Atom, steps: list[tuple[_Lifting, Observation]], added: bool) -> bool:
+    """Whether every step allows lifted atom ``way`` as an effect: an add true after every step, a delete false
     after every step but where its ground atom lifts more than one way (an add may have made it true again)."""
     if added:
-        return {w for w in ways if all(lift.ground(w) in obs.after for lift, obs in steps)}
-    return {w for w in ways if all((g := lift.ground(w)) not in obs.after or len(lift.lifted([g])) > 1
-                                   for lift, obs in steps)}
+        return all(lift.ground(way) in obs.after for lift, obs in steps)
+    return all((g := lift.ground(way)) not in obs.after or len(lift.lifted([g])) > 1 for lift, obs in steps)
 
 
 def _admit(ev: _Evidence, steps: list[Observation], negative: bool) -> int:
     """Add to ``ev`` those of ``steps`` (each passing one object twice, or a constant) whose every change the
     steps tell apart: of the ways an added atom lifts, exactly one is allowed by every step taken (see
-    :func:`_consistent_ways`); the true effect is among the allowed ways, so a single one is it.  A deleted
+    :func:`_fits`); the true effect is among the allowed ways, so a single one is it.  A deleted
     atom may lift to several allowed ways where no negative precondition is declared (``negative`` false):
     every allowed way is learned as a delete, since a model that believes less than is true still finds only
     plans the true domain runs (the true action then needs only positive facts).  Steps that leave a change
@@ -268,36 +263,40 @@ def _admit(ev: _Evidence, steps: list[Observation], negative: bool) -> int:
     (see :func:`_unguarded_by`).
     """
     taken = [(_Lifting(ev.schema.params, obs.objects, ev.constants), obs) for obs in steps]
-    resolved: list[tuple[Observation, set[Atom], set[Atom]]] = []
+    resolved: list[tuple[_Lifting, Observation, set[Atom], set[Atom]]] = []
     while taken:
         every = ev.steps + taken
+        fit = cache(lambda way, added: _fits(way, every, added))  # a way's verdict depends on the steps only
+
+        def allowed(lifted: set[Atom], added: bool) -> set[Atom]:
+            return {w for w in lifted & ev.typed if fit(w, added)}
+
         resolved = []
         for lift, obs in taken:
             added, deleted = changes(obs.before, obs.after, lift.objects)
-            ways = [(_consistent_ways(lift.lifted([a]) & ev.typed, every, True), True) for a in added]
-            ways += [(_consistent_ways(lift.lifted([a]) & ev.typed, every, False), False) for a in deleted]
+            ways = [(allowed(lift.lifted([a]), True), True) for a in added]
+            ways += [(allowed(lift.lifted([a]), False), False) for a in deleted]
             if all(len(w) == 1 or (w and not up and not negative) for w, up in ways):
-                resolved.append((obs, set().union(*(w for w, up in ways if up)),
+                resolved.append((lift, obs, set().union(*(w for w, up in ways if up)),
                                  set().union(*(w for w, up in ways if not up))))
         if len(resolved) == len(taken):
             break
-        kept = {id(obs) for obs, _, _ in resolved}
+        kept = {id(obs) for _, obs, _, _ in resolved}
         taken = [(lift, obs) for lift, obs in taken if id(obs) in kept]
     guarded = set(ev.never_before) if ev.seen else set(ev.candidates)
-    for obs, adds, deletes in resolved:
+    for _, obs, adds, deletes in resolved:
         ev.add(obs)
         ev.made_true |= adds
         ev.made_false |= deletes
     if resolved:
-        ev.never_before = guarded.intersection(*(_unguarded_by(ev, obs) for obs, _, _ in resolved))
+        ev.never_before = guarded.intersection(*(_unguarded_by(ev, lift, obs) for lift, obs, _, _ in resolved))
     return len(steps) - len(resolved)
 
 
-def _unguarded_by(ev: _Evidence, obs: Observation) -> set[Atom]:
-    """The candidates step ``obs`` leaves a guard on: those false before it, and those true before and after it
-    whose atom lifts another way that may be an add (true after every step): the action may delete the atom
-    under one way and add it again under the other, so the step does not show it needs no guard."""
-    lift = _Lifting(ev.schema.params, obs.objects, ev.constants)
+def _unguarded_by(ev: _Evidence, lift: _Lifting, obs: Observation) -> set[Atom]:
+    """The candidates step ``obs`` (lifted by ``lift``) leaves a guard on: those false before it, and those true
+    before and after it whose atom lifts another way that may be an add (true after every step): the action may
+    delete the atom under one way and add it again under the other, so the step does not show it needs no guard."""
     out = set()
     for c in ev.candidates:
         g = lift.ground(c)

@@ -15,12 +15,16 @@ each group is true" for states reachable from states where that already holds,
 so it is kept only when no observed state of the demonstrations violates it.
 Dropping ``(not p)`` is then sound: in every state the actions can reach from
 such states, ``q`` true means ``p`` false, and the action applies exactly
-when it did before.  When synthesis fails nothing is dropped.
+when it did before.  When synthesis fails nothing is dropped.  For trajectories
+(:mod:`guided_lfd.demonstration.action_model`), :func:`pair_invariants` adds
+the pairs the synthesis misses, and :func:`drop_idle_deletes` the deletes of
+atoms a precondition rules out.
 """
 
 from __future__ import annotations
 
 from collections.abc import Iterable
+from itertools import combinations
 from dataclasses import replace
 
 from guided_lfd.errors import MismatchError
@@ -60,13 +64,12 @@ def pair_invariants(domain: Domain, states: Iterable[frozenset[Atom]]) -> list:
 
     if any(a.is_adl for a in domain.actions):
         return []
-    observed = list(states)
     by_arity: dict[int, list[str]] = {}
     for pred in sorted(domain.predicates.values(), key=lambda x: x.name):
         if pred.name != EQUALITY:
             by_arity.setdefault(len(pred.params), []).append(pred.name)
     pairs = {frozenset((p, q)) for names in by_arity.values() for i, p in enumerate(names) for q in names[i + 1:]}
-    pairs = {pair for pair in pairs if not any(_both(s, *sorted(pair)) for s in observed)}
+    pairs -= _together(states)
     while True:
         broken = {pair for pair in pairs if not _pair_kept(domain.actions, pair, pairs)}
         if not broken:
@@ -95,9 +98,17 @@ def _pair_kept(actions: Iterable[ActionSchema], pair: frozenset[str], pairs: set
     return True
 
 
-def _both(state: frozenset[Atom], p: str, q: str) -> bool:
-    """Whether ``state`` has ``p(x...)`` and ``q(x...)`` for some arguments."""
-    return any(a.predicate == p and Atom(q, a.args) in state for a in state)
+def _together(states: Iterable[frozenset[Atom]]) -> set[frozenset[str]]:
+    """The pairs of predicates some state of ``states`` makes true over the same arguments (one pass per state)."""
+    out: set[frozenset[str]] = set()
+    for state in states:
+        by_args: dict[tuple[str, ...], set[str]] = {}
+        for atom in state:
+            by_args.setdefault(atom.args, set()).add(atom.predicate)
+        for names in by_args.values():
+            if len(names) > 1:
+                out.update(frozenset(pair) for pair in combinations(sorted(names), 2))
+    return out
 
 
 def _key(part, atom: Atom) -> tuple[str, ...] | None:
